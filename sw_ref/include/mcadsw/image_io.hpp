@@ -1,0 +1,32 @@
+// Image input/output around the reference: OpenCV reads the files and performs
+// the BGR -> YUV 4:4:4 conversion that, in a camera, the ISP would do before the
+// data reaches the engine's external memory (docs/algorithm.md, "Input").
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "mcadsw/ref.hpp"
+
+namespace mcadsw {
+
+// Reads an 8-bit colour image (3 channels, or 4 with alpha dropped). Throws
+// std::runtime_error with a one-line message for a missing or unreadable file,
+// a non-8-bit image or a grayscale image (the weight generator needs U and V).
+cv::Mat read_color_image(const std::string& path);
+
+// cv::cvtColor(bgr, COLOR_BGR2YUV), split into planes.
+YuvImage to_yuv(const cv::Mat& bgr);
+YuvImage load_yuv(const std::string& path);
+
+cv::Mat to_mat(const Plane& p);  // CV_8UC1 copy
+Plane from_mat(const cv::Mat& gray8);
+
+// Raw 8-bit map (pixel value = disparity) and a colour-mapped view scaled by
+// 255 / (D - 1), written to `path` and to `colormap_path`. Both or neither are
+// left behind: on failure, whatever was written is removed and it throws.
+void write_disparity(const Plane& disp, int disparities, const std::string& path,
+                     const std::string& colormap_path);
+std::string colormap_path_for(const std::string& path);  // out.png -> out_color.png
+
+}  // namespace mcadsw

@@ -1,0 +1,67 @@
+// Constants of the MCADSW algorithm and architecture (docs/algorithm.md).
+//
+// This header is the single source of truth for every number shared by the C++
+// reference and the RTL. The RTL parameter package is checked against it by a
+// test (or generated from it); nothing here is typed twice.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace mcadsw {
+
+// ---- Mini-census transform (paper Sec. III-B, Fig. 2) ---------------------
+// Six neighbours in a 5x5 window around the centre. Bit (kCensusBits-1-i) of
+// the code is neighbour i, so the code reads in raster order, MSB first.
+struct Offset {
+  int dx;
+  int dy;
+};
+inline constexpr int kCensusBits = 6;
+inline constexpr std::array<Offset, kCensusBits> kCensusTaps = {{
+    {0, -2},   // bit 5
+    {-2, -1},  // bit 4
+    {+2, -1},  // bit 3
+    {-2, +1},  // bit 2
+    {+2, +1},  // bit 1
+    {0, +2},   // bit 0
+}};
+inline constexpr int kCensusRadius = 2;  // 5x5 template
+
+// ---- Support window (paper Sec. III-D, 31x31) ------------------------------
+inline constexpr int kWindow = 31;
+inline constexpr int kRadius = kWindow / 2;  // 15: k, j in -15..15
+
+// ---- Weights (paper Sec. III-C, Fig. 5) ------------------------------------
+inline constexpr int kWeightShiftMax = 6;                  // w in {64,32,...,1,0}
+inline constexpr int kWeightMax = 1 << kWeightShiftMax;    // 64
+inline constexpr int kColorDistMax = 3 * 255;              // |dY|+|dU|+|dV|
+inline constexpr int kWeightTableSize = kColorDistMax + 1;  // 766 entries
+inline constexpr int kDefaultGamma = 22;  // chosen by the sweep of scripts/eval_pairs.sh, docs/algorithm.md
+
+// ---- Architecture (paper Sec. V) -------------------------------------------
+inline constexpr int kDmax = 64;      // largest disparity range D (d = 0..D-1)
+inline constexpr int kBlock = 18;     // output block is kBlock x kBlock
+inline constexpr int kLanes = 8;      // columns aggregated per cycle (Fig. 14)
+inline constexpr int kMaxWidth = 2048;
+inline constexpr int kMaxHeight = 2048;
+
+// ---- Exact integer widths ----------------------------------------------------
+// Each bound is the largest value the quantity can take; the bit widths follow.
+constexpr int bits_for(long long max_value) {
+  int b = 0;
+  while ((1LL << b) <= max_value) ++b;
+  return b;
+}
+inline constexpr long long kCostMax = kCensusBits;                          // 6
+inline constexpr long long kVertCostMax = kWindow * kCostMax * kWeightMax;  // 11904
+inline constexpr long long kFinalCostMax = kWindow * kVertCostMax * kWeightMax;  // 23617536
+inline constexpr int kCostBits = bits_for(kCostMax);            // 3
+inline constexpr int kWeightBits = bits_for(kWeightMax);        // 7
+inline constexpr int kVertCostBits = bits_for(kVertCostMax);    // 14
+inline constexpr int kFinalCostBits = bits_for(kFinalCostMax);  // 25
+inline constexpr int kDispBits = bits_for(kDmax - 1);           // 6
+static_assert(kVertCostBits <= 16, "vertical costs are held in uint16_t");
+static_assert(kFinalCostBits <= 32, "final costs are held in uint32_t");
+
+}  // namespace mcadsw

@@ -1,0 +1,111 @@
+// Bit-exact reference model of the MCADSW disparity estimator.
+//
+// Each function mirrors one block of the paper's architecture (Fig. 9) and is
+// specified in docs/algorithm.md. Everything here is integer-only; the RTL
+// unit tests compare against these functions bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mcadsw/params.hpp"
+
+namespace mcadsw {
+
+// An 8-bit image plane, row-major, no padding.
+struct Plane {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> px;
+
+  Plane() = default;
+  Plane(int w, int h, uint8_t fill = 0) : width(w), height(h), px(size_t(w) * h, fill) {}
+  uint8_t at(int x, int y) const { return px[size_t(y) * width + x]; }
+  uint8_t& at(int x, int y) { return px[size_t(y) * width + x]; }
+  // The border rule of docs/algorithm.md: coordinates outside the image are
+  // clamped to the nearest edge pixel.
+  uint8_t clamped(int x, int y) const;
+};
+
+// YUV 4:4:4 planes of one view, as the engine reads them from external memory.
+struct YuvImage {
+  Plane y, u, v;
+  int width() const { return y.width; }
+  int height() const { return y.height; }
+};
+
+int clamp_coord(int v, int size);
+
+// ---- Mini-census transformer (Fig. 10) ---------------------------------------
+uint8_t census_code(const Plane& luma, int x, int y);
+Plane census_transform(const Plane& luma);
+// Hamming distance of two 6-bit codes (Eq. 1).
+int census_cost(uint8_t left_code, uint8_t right_code);
+
+// ---- Weight generator (Fig. 11) ------------------------------------------------
+using WeightTable = std::vector<uint8_t>;  // kWeightTableSize entries, each 0 or 2^n <= 64
+// 64*exp(-dC/gamma) truncated to its most significant set bit (Fig. 5).
+WeightTable make_weight_table(double gamma);
+// Throws std::invalid_argument unless the table has kWeightTableSize one-hot-or-zero entries <= 64.
+void check_weight_table(const WeightTable& table);
+// Manhattan colour distance |dY|+|dU|+|dV| of two pixels of one view.
+int color_distance(const YuvImage& img, int x0, int y0, int x1, int y1);
+
+// Vertical and horizontal weights of every pixel, left (base) view only.
+//   vert[k][y][x] = table[dC((x, clamp(y+k-R)), (x, y))]   column centre (x, y)
+//   horz[j][y][x] = table[dC((clamp(x+j-R), y), (x, y))]   window centre (x, y)
+// for k, j in 0..kWindow-1 (offset = index - kRadius).
+struct Weights {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> vert;  // kWindow planes of width*height
+  std::vector<uint8_t> horz;  // kWindow planes of width*height
+  uint8_t v(int k, int x, int y) const { return vert[(size_t(k) * height + y) * width + x]; }
+  uint8_t h(int j, int x, int y) const { return horz[(size_t(j) * height + y) * width + x]; }
+};
+Weights generate_weights(const YuvImage& left, const WeightTable& table);
+
+// ---- Cost aggregator and WTA (Figs. 12-14) --------------------------------------
+// Census cost slice for one disparity: cost[y][x] = H(cl(x,y), cr(clamp(x-d), y)).
+void census_cost_slice(const Plane& census_left, const Plane& census_right, int d,
+                       std::vector<uint8_t>& cost);
+// Ev(x,y) = sum_k cost(x, clamp(y+k-R)) * vert[k][y][x]   (Eq. 3)
+void vertical_aggregate(const std::vector<uint8_t>& cost, const Weights& w,
+                        std::vector<uint16_t>& vert_cost);
+// E(x,y) = sum_j Ev(clamp(x+j-R), y) * horz[j][y][x]       (Eq. 4)
+void horizontal_aggregate(const std::vector<uint16_t>& vert_cost, const Weights& w,
+                          std::vector<uint32_t>& final_cost);
+
+// Winner-takes-all over disparities presented in increasing order; a strictly
+// smaller cost replaces the best, so ties keep the smallest d.
+struct Wta {
+  std::vector<uint32_t> best_cost;
+  std::vector<uint8_t> best_d;
+  explicit Wta(size_t pixels) : best_cost(pixels, UINT32_MAX), best_d(pixels, 0) {}
+  void update(const std::vector<uint32_t>& final_cost, int d);
+};
+
+// ---- Top level -------------------------------------------------------------------
+struct Config {
+  int disparities = 16;  // D: disparities 0..D-1 are searched, 1 <= D <= kDmax
+  WeightTable table = make_weight_table(kDefaultGamma);
+  int threads = 0;  // software only: worker threads, 0 = one per core; never changes the result
+};
+// Throws std::invalid_argument with a message naming the offending value.
+void check_config(const Config& cfg, int width, int height);
+
+// Optional intermediate results, for block-level tests and debugging.
+struct Intermediates {
+  Plane census_left, census_right;
+  Weights weights;
+  std::vector<std::vector<uint16_t>> vert_cost;   // [d][y*W+x]
+  std::vector<std::vector<uint32_t>> final_cost;  // [d][y*W+x]
+};
+
+// The whole engine: 8-bit disparity map of the left view. Only Y of the right
+// view is used. If `keep` is non-null it receives every intermediate result.
+Plane disparity_map(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                    Intermediates* keep = nullptr);
+
+}  // namespace mcadsw
