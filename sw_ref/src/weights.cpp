@@ -1,4 +1,5 @@
 // Weight generator (paper Sec. III-C, Fig. 5 and Fig. 11).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -44,19 +45,40 @@ Weights generate_weights(const YuvImage& left, const WeightTable& table) {
   Weights w;
   w.width = left.width();
   w.height = left.height();
-  const size_t plane = size_t(w.width) * w.height;
+  const int W = w.width, H = w.height;
+  const size_t plane = size_t(W) * H;
   w.vert.resize(kWindow * plane);
   w.horz.resize(kWindow * plane);
-  for (int i = 0; i < kWindow; ++i) {
-    const int off = i - kRadius;
-    for (int y = 0; y < w.height; ++y) {
-      for (int x = 0; x < w.width; ++x) {
-        const size_t at = i * plane + size_t(y) * w.width + x;
-        // Vertical: pixel (x, y+off) against its column centre (x, y).
-        w.vert[at] = table[color_distance(left, x, y + off, x, y)];
-        // Horizontal: column centre (x+off, y) against the window centre (x, y).
-        w.horz[at] = table[color_distance(left, x + off, y, x, y)];
+  const Plane* yuv[3] = {&left.y, &left.u, &left.v};
+  std::vector<int> dist(W);
+  std::vector<uint8_t> padded[3];  // one row with clamped borders, for the horizontal taps
+  for (auto& p : padded) p.resize(size_t(W) + 2 * kRadius);
+  for (int y = 0; y < H; ++y) {
+    // Vertical: pixel (x, y+off) against its column centre (x, y).
+    for (int k = 0; k < kWindow; ++k) {
+      const size_t yy = size_t(clamp_coord(y + k - kRadius, H));
+      std::fill(dist.begin(), dist.end(), 0);
+      for (const Plane* c : yuv) {
+        const uint8_t* a = &c->px[yy * W];
+        const uint8_t* b = &c->px[size_t(y) * W];
+        for (int x = 0; x < W; ++x) dist[x] += std::abs(int(a[x]) - int(b[x]));
       }
+      uint8_t* out = &w.vert[k * plane + size_t(y) * W];
+      for (int x = 0; x < W; ++x) out[x] = table[dist[x]];
+    }
+    // Horizontal: column centre (x+off, y) against the window centre (x, y).
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < W + 2 * kRadius; ++i)
+        padded[c][i] = yuv[c]->px[size_t(y) * W + clamp_coord(i - kRadius, W)];
+    for (int j = 0; j < kWindow; ++j) {
+      std::fill(dist.begin(), dist.end(), 0);
+      for (int c = 0; c < 3; ++c) {
+        const uint8_t* a = &padded[c][j];
+        const uint8_t* b = &yuv[c]->px[size_t(y) * W];
+        for (int x = 0; x < W; ++x) dist[x] += std::abs(int(a[x]) - int(b[x]));
+      }
+      uint8_t* out = &w.horz[j * plane + size_t(y) * W];
+      for (int x = 0; x < W; ++x) out[x] = table[dist[x]];
     }
   }
   return w;

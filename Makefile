@@ -1,0 +1,51 @@
+# User entry points. CMake (CMakeLists.txt) is the source of truth; this file
+# only wraps its targets. Every target installs missing Debian packages first.
+#
+#   make test    build everything and run the test suite (what CI runs)
+#   make sim     regression on the bundled pairs (reference only until the RTL engine exists)
+#   make lint    verilator --lint-only -Wall on the RTL
+#   make bench   Google Benchmark of the reference (MDE/s)
+#   make sweep   weight-table gamma sweep on the Middlebury pairs (docs/algorithm.md)
+
+BUILD_DIR ?= build
+JOBS      ?= $(shell nproc)
+RTL_FILES := $(sort $(wildcard rtl/*.sv rtl/*.v))
+
+.PHONY: all bootstrap configure build test sim lint bench sweep clean
+
+all: build
+
+bootstrap:
+	@scripts/bootstrap.sh
+
+configure: bootstrap
+	@cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	@cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
+
+sim: build
+	@echo "== make sim: reference model on the bundled pairs ('all' error %, threshold 1) =="
+	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/sim
+	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/sim
+	@echo "Disparity maps: $(BUILD_DIR)/sim/*.png"
+	@echo "NOTE: the RTL engine is not built yet (issue 4); this run exercised the C++ reference only."
+
+lint: bootstrap
+ifeq ($(RTL_FILES),)
+	@echo "make lint: no RTL files under rtl/ yet; nothing to lint"
+else
+	@verilator --lint-only -Wall $(RTL_FILES)
+endif
+
+bench: build
+	@$(BUILD_DIR)/bin/bench_ref
+
+sweep: build
+	@scripts/eval_pairs.sh -b $(BUILD_DIR) -g "6 8 10 12 14 16 18 20 21 22 23 24 28 32 40"
+
+clean:
+	rm -rf $(BUILD_DIR)
