@@ -3,15 +3,15 @@
 #
 #   make test    build everything and run the test suite (what CI runs)
 #   make sim     regression on the bundled pairs (reference only until the RTL engine exists)
-#   make lint    verilator --lint-only -Wall on the RTL
+#   make lint    verilator --lint-only -Wall on every RTL module
+#   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
 #   make bench   Google Benchmark of the reference (MDE/s)
 #   make sweep   weight-table gamma sweep on the Middlebury pairs (docs/algorithm.md)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
-RTL_FILES := $(sort $(wildcard rtl/*.sv rtl/*.v))
 
-.PHONY: all bootstrap configure build test sim lint bench sweep clean
+.PHONY: all bootstrap configure build test sim lint rtl-pkg bench sweep clean
 
 all: build
 
@@ -35,11 +35,12 @@ sim: build
 	@echo "NOTE: the RTL engine is not built yet (issue 4); this run exercised the C++ reference only."
 
 lint: bootstrap
-ifeq ($(RTL_FILES),)
-	@echo "make lint: no RTL files under rtl/ yet; nothing to lint"
-else
-	@verilator --lint-only -Wall $(RTL_FILES)
-endif
+	@scripts/rtl_check.sh lint
+
+rtl-pkg: configure
+	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
+	@$(BUILD_DIR)/bin/gen_rtl_pkg > rtl/mcadsw_pkg.sv
+	@echo "rtl/mcadsw_pkg.sv regenerated from sw_ref/include/mcadsw/params.hpp"
 
 bench: build
 	@$(BUILD_DIR)/bin/bench_ref

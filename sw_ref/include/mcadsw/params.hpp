@@ -37,12 +37,33 @@ inline constexpr int kWeightShiftMax = 6;                  // w in {64,32,...,1,
 inline constexpr int kWeightMax = 1 << kWeightShiftMax;    // 64
 inline constexpr int kColorDistMax = 3 * 255;              // |dY|+|dU|+|dV|
 inline constexpr int kWeightTableSize = kColorDistMax + 1;  // 766 entries
+// Weight buffers and the RTL hold a weight as a 3-bit code: 0 -> 0, e -> 2^(e-1),
+// so the multiply by a weight is a shift (paper Sec. III-C).
+inline constexpr int kWeightCodeBits = 3;
+constexpr int weight_code(int w) {
+  int e = 0;
+  while (w > 0) { w >>= 1; ++e; }
+  return e;
+}
+constexpr int weight_from_code(int e) { return e == 0 ? 0 : 1 << (e - 1); }
+static_assert(weight_code(kWeightMax) < (1 << kWeightCodeBits), "64 needs code 7");
+inline constexpr int kColorDistBits = 10;  // 0..765
+static_assert((1 << kColorDistBits) > kColorDistMax);
 inline constexpr int kDefaultGamma = 22;  // chosen by the sweep of scripts/eval_pairs.sh, docs/algorithm.md
 
 // ---- Architecture (paper Sec. V) -------------------------------------------
 inline constexpr int kDmax = 64;      // largest disparity range D (d = 0..D-1)
 inline constexpr int kBlock = 18;     // output block is kBlock x kBlock
 inline constexpr int kLanes = 8;      // columns aggregated per cycle (Fig. 14)
+inline constexpr int kHorzAggregators = 3;  // horizontal aggregators fed 33 Ev (Fig. 12)
+// Columns of vertical costs per block row: 18 outputs + 30 window columns = 48
+// (the paper's 31x48 window), processed 8 a cycle in 6 cycles.
+inline constexpr int kBlockCols = kBlock + 2 * kRadius;
+inline constexpr int kGroups = kBlockCols / kLanes;  // 6
+static_assert(kBlockCols % kLanes == 0, "48 columns split into 8-lane groups");
+static_assert(kBlock % kHorzAggregators == 0, "18 outputs split over 3 aggregators");
+static_assert(kBlock / kHorzAggregators == kGroups,
+              "horizontal side keeps pace with the vertical side: 6 cycles per disparity");
 inline constexpr int kMaxWidth = 2048;
 inline constexpr int kMaxHeight = 2048;
 

@@ -1,0 +1,280 @@
+// Cost aggregator and WTA (paper Sec. V-D, Figs. 12-14).
+//
+// One job is one 18-pixel row of the current block: for d = 0 .. D-1 the
+// vertical side reads 6 column groups of LANES x WINDOW census codes (left, and
+// right at x - d) with their vertical weights, one group a cycle, and writes the
+// 48 vertical costs of d into one bank of the ping-pong buffer. When a bank is
+// full, the horizontal side reads it for 6 cycles (33 costs a cycle, 3 final
+// costs) while the vertical side fills the other bank with d + 1 (Fig. 13).
+// The WTA keeps the best d of the 18 pixels and emits them, 3 a cycle, on the
+// last disparity. Jobs run back to back: 6*D cycles a row in steady state.
+//
+// Read ports are synchronous: data arrive the cycle after the address (the
+// census and weight buffers are RAMs). Pipeline, from the issue cycle c of a
+// column group: c+1 census/weight data and Hamming + vertical sum, c+2 ping-pong
+// write; after the 6th group, c+8 horizontal weight address, c+9 horizontal
+// sum, c+10 WTA, c+11 disparity out.
+`default_nettype none
+
+module mcadsw_cost_agg #(
+  parameter int DMAX   = mcadsw_pkg::DMAX,
+  parameter int BLOCK  = mcadsw_pkg::BLOCK,
+  parameter int WINDOW = mcadsw_pkg::WINDOW,
+  parameter int LANES  = mcadsw_pkg::LANES,
+  parameter int HAGG   = mcadsw_pkg::HAGG,
+  parameter int GROUPS = mcadsw_pkg::GROUPS,
+  parameter int CB     = mcadsw_pkg::CENSUS_BITS,
+  parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
+  parameter int VB     = mcadsw_pkg::VCOST_BITS,
+  parameter int FB     = mcadsw_pkg::FCOST_BITS,
+  parameter int DB     = mcadsw_pkg::DISP_BITS,
+  parameter int RB     = $clog2(BLOCK),    // block row index width
+  parameter int GB     = $clog2(GROUPS),   // group index width
+  parameter int NB     = $clog2(DMAX + 1), // width of D
+  parameter int CLB    = $clog2(GROUPS * LANES)  // Ev column index width
+) (
+  input  logic                          clk_i,
+  input  logic                          rst_ni,
+  // Row jobs
+  input  logic                          job_valid_i,
+  output logic                          job_ready_o,
+  input  logic [RB-1:0]                 job_row_i,    // block row 0 .. BLOCK-1
+  input  logic [NB-1:0]                 job_disp_i,   // D, 1 .. DMAX
+  input  logic [CLB-1:0]                job_last_col_i,  // last Ev column inside the image
+  // Census buffers and vertical weight buffer (data one cycle after address)
+  output logic                          vrd_en_o,
+  output logic [RB-1:0]                 vrd_row_o,
+  output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
+  output logic [DB-1:0]                 vrd_d_o,
+  input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
+  input  logic [LANES*WINDOW*CB-1:0]    cen_r_i,
+  input  logic [LANES*WINDOW*WB-1:0]    wv_i,
+  // Horizontal weight buffer (data one cycle after address)
+  output logic                          hrd_en_o,
+  output logic [RB-1:0]                 hrd_row_o,
+  output logic [GB-1:0]                 hrd_grp_o,    // pixels HAGG*grp ..
+  input  logic [HAGG*WINDOW*WB-1:0]     wh_i,
+  // Disparities, HAGG pixels a cycle; no back-pressure (the scheduler only
+  // starts a job when the depth FIFO has room for its row)
+  output logic                          disp_valid_o,
+  output logic [RB-1:0]                 disp_row_o,
+  output logic [GB-1:0]                 disp_grp_o,
+  output logic [HAGG*DB-1:0]            disp_o,
+  output logic                          busy_o,
+  // Monitor taps for verification: vertical and final costs with their tags
+  output logic                          mon_ev_valid_o,
+  output logic [RB-1:0]                 mon_ev_row_o,
+  output logic [DB-1:0]                 mon_ev_d_o,
+  output logic [GB-1:0]                 mon_ev_grp_o,
+  output logic [LANES*VB-1:0]           mon_ev_o,
+  output logic                          mon_fc_valid_o,
+  output logic [RB-1:0]                 mon_fc_row_o,
+  output logic [DB-1:0]                 mon_fc_d_o,
+  output logic [GB-1:0]                 mon_fc_grp_o,
+  output logic [HAGG*FB-1:0]            mon_fc_o
+);
+
+  if (GROUPS * LANES != BLOCK + WINDOW - 1 || GROUPS * HAGG != BLOCK ||
+      (1 << DB) < DMAX) begin : g_bad_param
+    mcadsw_error_cost_agg_geometry u_error ();
+  end
+
+  // A tag travels with each column group and output group: valid, first
+  // (d == 0), last (d == D - 1), block row, d, group. Stages: v1 data cycle,
+  // v2 ping-pong write, h0 horizontal weight address, h1 horizontal sum, h2 WTA.
+
+  // ---- Vertical side: issue column-group reads ----------------------------
+  logic          busy_q;
+  logic [RB-1:0] row_q;
+  logic [DB-1:0] d_q, dlast_q;
+  logic [CLB-1:0] last_col_q;
+  logic [GB-1:0] grp_q;
+  logic          issue_last;
+  logic          accept;
+
+  assign issue_last  = busy_q && d_q == dlast_q && grp_q == GB'(GROUPS - 1);
+  assign job_ready_o = !busy_q || issue_last;
+  assign accept      = job_valid_i && job_ready_o;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      busy_q  <= 1'b0;
+      row_q   <= '0;
+      d_q     <= '0;
+      dlast_q <= '0;
+      grp_q   <= '0;
+      last_col_q <= '0;
+    end else if (accept) begin
+      last_col_q <= job_last_col_i;
+      busy_q  <= 1'b1;
+      row_q   <= job_row_i;
+      d_q     <= '0;
+      dlast_q <= DB'(job_disp_i - NB'(1));
+      grp_q   <= '0;
+    end else if (busy_q) begin
+      if (issue_last) begin
+        busy_q <= 1'b0;
+      end else if (grp_q == GB'(GROUPS - 1)) begin
+        grp_q <= '0;
+        d_q   <= d_q + DB'(1);
+      end else begin
+        grp_q <= grp_q + GB'(1);
+      end
+    end
+  end
+
+  assign vrd_en_o  = busy_q;
+  assign vrd_row_o = row_q;
+  assign vrd_grp_o = grp_q;
+  assign vrd_d_o   = d_q;
+
+  logic          v1_valid_q, v1_first_q, v1_last_q, v2_valid_q, v2_first_q, v2_last_q;
+  logic [RB-1:0] v1_row_q, v2_row_q;
+  logic [DB-1:0] v1_d_q, v2_d_q;
+  logic [GB-1:0] v1_grp_q, v2_grp_q;
+  logic [CLB-1:0] v1_lcol_q, v2_lcol_q;  // last in-image Ev column of the block
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q} <= '0;
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q} <= '0;
+    end else begin
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q} <=
+          {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q};
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q} <=
+          {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q};
+    end
+  end
+
+  logic              ev_valid;
+  logic [LANES*VB-1:0] ev;
+
+  mcadsw_vert_agg #(
+    .LANES(LANES), .WINDOW(WINDOW), .CB(CB), .WB(WB), .VB(VB)
+  ) u_vert_agg (
+    .clk_i, .rst_ni,
+    .valid_i (v1_valid_q),
+    .cen_l_i, .cen_r_i, .wv_i,
+    .valid_o (ev_valid),
+    .ev_o    (ev)
+  );
+
+  // ---- Ping-pong buffer (Fig. 13) --------------------------------------------
+  logic wbank_q;       // bank the vertical side writes
+  logic bank_full;     // the last group of a disparity is written this cycle
+
+  assign bank_full = v2_valid_q && v2_grp_q == GB'(GROUPS - 1);
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) wbank_q <= 1'b0;
+    else if (bank_full) wbank_q <= !wbank_q;
+  end
+
+  logic          h0_valid_q, h0_first_q, h0_last_q, h0_bank_q;
+  logic          h1_valid_q, h1_first_q, h1_last_q, h1_bank_q;
+  logic          h2_valid_q, h2_first_q, h2_last_q;
+  logic [RB-1:0] h0_row_q, h1_row_q, h2_row_q;
+  logic [DB-1:0] h0_d_q, h1_d_q, h2_d_q;
+  logic [GB-1:0] h0_grp_q, h1_grp_q, h2_grp_q;
+  logic [CLB-1:0] h0_lcol_q, h1_lcol_q;
+  logic [(WINDOW+HAGG-1)*VB-1:0] pp_rd;
+
+  mcadsw_pingpong #(
+    .COLS(GROUPS*LANES), .LANES(LANES), .HAGG(HAGG), .WINDOW(WINDOW), .VB(VB)
+  ) u_pingpong (
+    .clk_i, .rst_ni,
+    .wr_en_i   (ev_valid && v2_valid_q),
+    .wr_bank_i (wbank_q),
+    .wr_grp_i  (v2_grp_q),
+    .wr_data_i (ev),
+    .rd_bank_i (h1_bank_q),
+    .rd_grp_i  (h1_grp_q),
+    .rd_last_i (h1_lcol_q),
+    .rd_data_o (pp_rd)
+  );
+
+  // ---- Horizontal side: 6 output groups per full bank --------------------------
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q} <= '0;
+    end else if (bank_full) begin
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q} <=
+          {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0), v2_lcol_q};
+    end else if (h0_valid_q) begin
+      h0_valid_q <= h0_grp_q != GB'(GROUPS - 1);
+      h0_grp_q   <= h0_grp_q + GB'(1);
+    end
+  end
+
+  assign hrd_en_o  = h0_valid_q;
+  assign hrd_row_o = h0_row_q;
+  assign hrd_grp_o = h0_grp_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <= '0;
+      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <= '0;
+    end else begin
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <=
+          {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q};
+      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <=
+          {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q};
+    end
+  end
+
+  logic                fc_valid;
+  logic [HAGG*FB-1:0]  fc;
+
+  mcadsw_horz_agg #(
+    .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB)
+  ) u_horz_agg (
+    .clk_i, .rst_ni,
+    .valid_i (h1_valid_q),
+    .ev_i    (pp_rd),
+    .wh_i,
+    .valid_o (fc_valid),
+    .fc_o    (fc)
+  );
+
+  // ---- WTA ------------------------------------------------------------------------
+  logic [RB-1:0] disp_row_q;
+
+  mcadsw_wta #(
+    .BLOCK(BLOCK), .HAGG(HAGG), .FB(FB), .DB(DB)
+  ) u_wta (
+    .clk_i, .rst_ni,
+    .valid_i (fc_valid && h2_valid_q),
+    .first_i (h2_first_q),
+    .last_i  (h2_last_q),
+    .d_i     (h2_d_q),
+    .grp_i   (h2_grp_q),
+    .fc_i    (fc),
+    .valid_o (disp_valid_o),
+    .grp_o   (disp_grp_o),
+    .disp_o  (disp_o)
+  );
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) disp_row_q <= '0;
+    else if (h2_valid_q) disp_row_q <= h2_row_q;
+  end
+  assign disp_row_o = disp_row_q;
+
+  assign busy_o = busy_q || v1_valid_q || v2_valid_q || h0_valid_q || h1_valid_q ||
+                  h2_valid_q || disp_valid_o;
+
+  // ---- Monitor taps ----------------------------------------------------------------
+  assign mon_ev_valid_o = ev_valid && v2_valid_q;
+  assign mon_ev_row_o   = v2_row_q;
+  assign mon_ev_d_o     = v2_d_q;
+  assign mon_ev_grp_o   = v2_grp_q;
+  assign mon_ev_o       = ev;
+  assign mon_fc_valid_o = fc_valid && h2_valid_q;
+  assign mon_fc_row_o   = h2_row_q;
+  assign mon_fc_d_o     = h2_d_q;
+  assign mon_fc_grp_o   = h2_grp_q;
+  assign mon_fc_o       = fc;
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,76 @@
+// Hamming units and vertical aggregation (paper Fig. 12, left of the ping-pong
+// buffer; Eq. 3). For each of LANES columns, the census costs of all WINDOW
+// pixels of the column are computed in parallel, each is shifted by its one-hot
+// vertical weight (weight code e: 0 -> 0, e -> 2^(e-1), docs/algorithm.md) and
+// the WINDOW products are summed. One column group per cycle, result registered.
+`default_nettype none
+
+module mcadsw_vert_agg #(
+  parameter int LANES  = mcadsw_pkg::LANES,             // columns per cycle
+  parameter int WINDOW = mcadsw_pkg::WINDOW,            // pixels per column
+  parameter int CB     = mcadsw_pkg::CENSUS_BITS,       // census code width
+  parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,  // weight code width
+  parameter int VB     = mcadsw_pkg::VCOST_BITS         // vertical cost width
+) (
+  input  logic                      clk_i,
+  input  logic                      rst_ni,
+  // One column group: lane l, tap k at index (l*WINDOW + k)
+  input  logic                      valid_i,
+  input  logic [LANES*WINDOW*CB-1:0] cen_l_i,  // left census codes
+  input  logic [LANES*WINDOW*CB-1:0] cen_r_i,  // right census codes at x - d
+  input  logic [LANES*WINDOW*WB-1:0] wv_i,     // vertical weight codes
+  // Vertical aggregated costs Ev of the group, one cycle later
+  output logic                      valid_o,
+  output logic [LANES*VB-1:0]       ev_o
+);
+
+  localparam int CNTB = $clog2(CB + 1);  // Hamming distance width
+
+  // Illegal parameters stop elaboration (an unknown module is the one check
+  // that Verilator, Yosys and Icarus all reject): the largest sum must fit VB.
+  if (WINDOW * CB * (1 << ((1 << WB) - 2)) >= (1 << VB)) begin : g_bad_param
+    mcadsw_error_vcost_width_too_narrow u_error ();
+  end
+
+  // Hamming distance of two census codes (Eq. 1).
+  function automatic logic [CNTB-1:0] hamming(input logic [CB-1:0] a, input logic [CB-1:0] b);
+    logic [CB-1:0] x;
+    x = a ^ b;
+    hamming = '0;
+    for (int i = 0; i < CB; i++) hamming = hamming + {{(CNTB - 1){1'b0}}, x[i]};
+  endfunction
+
+  // Multiplication by a one-hot weight is a shift.
+  function automatic logic [VB-1:0] weigh(input logic [CNTB-1:0] cost, input logic [WB-1:0] e);
+    if (e == '0) weigh = '0;
+    else weigh = VB'(cost) << (e - WB'(1));
+  endfunction
+
+  logic [LANES*VB-1:0] ev_d;
+
+  for (genvar l = 0; l < LANES; l++) begin : g_lane
+    logic [VB-1:0] sum;
+    always_comb begin
+      sum = '0;
+      for (int k = 0; k < WINDOW; k++) begin
+        sum = sum + weigh(hamming(cen_l_i[(l*WINDOW + k)*CB +: CB],
+                                  cen_r_i[(l*WINDOW + k)*CB +: CB]),
+                          wv_i[(l*WINDOW + k)*WB +: WB]);
+      end
+    end
+    assign ev_d[l*VB +: VB] = sum;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid_o <= 1'b0;
+      ev_o    <= '0;
+    end else begin
+      valid_o <= valid_i;
+      if (valid_i) ev_o <= ev_d;
+    end
+  end
+
+endmodule
+
+`default_nettype wire

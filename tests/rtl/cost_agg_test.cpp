@@ -1,0 +1,331 @@
+// mcadsw_cost_agg (Figs. 12-14) against the reference: every vertical cost
+// (vertical_aggregate), every final cost (horizontal_aggregate) and every
+// disparity (Wta) of a block, with the census and weight buffers modelled from
+// the reference's intermediates. The first mismatch is reported with its
+// coordinates, disparity and both values.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "Vmcadsw_cost_agg.h"
+#include "mcadsw/image_io.hpp"
+#include "mcadsw/ref.hpp"
+#include "test_util.hpp"
+#include "vbits.hpp"
+
+namespace mcadsw {
+namespace {
+
+using sim::get_bits;
+using sim::set_bits;
+
+struct Scenario {
+  std::string name;
+  YuvImage left, right;
+  Config cfg;
+  int bx = 0, by = 0;        // block origin (multiple of kBlock)
+  double job_gap_prob = 0;   // probability that no job is offered in a cycle
+};
+
+struct Result {
+  long cycles = 0;           // first job accepted .. last disparity out
+  long ev_checked = 0, fc_checked = 0, disp_checked = 0;
+  std::string first_error;
+};
+
+class CostAggBench {
+ public:
+  explicit CostAggBench(const Scenario& s) : s_(s), rng_(1234) {
+    Config cfg = s.cfg;
+    cfg.threads = 1;
+    disp_ = disparity_map(s.left, s.right, cfg, &ref_);
+    W_ = s.left.width();
+    H_ = s.left.height();
+  }
+
+  Result run() {
+    Result res;
+    auto& t = *top_;
+    t.rst_ni = 0;
+    t.clk_i = 0;
+    t.job_valid_i = 0;
+    t.eval();
+    for (int i = 0; i < 3; ++i) tick();
+    t.rst_ni = 1;
+
+    const int D = s_.cfg.disparities;
+    const int rows = std::min(kBlock, H_ - s_.by);
+    const int cols = std::min(kBlock, W_ - s_.bx);
+    std::vector<int> seen(kBlock * kBlock, 0);
+    int next_row = 0;
+    long first_accept = -1, last_out = -1;
+    const long limit = long(rows) * (6L * D + 64) + 1000;  // never hang
+    const int ev_cols = std::min(kBlockCols, W_ - (s_.bx - kRadius));
+    const long ev_expected = long(rows) * D * ev_cols;
+
+    for (long cycle = 0; cycle < limit; ++cycle) {
+      // Job offer: valid stays up until accepted and never depends on ready.
+      if (!t.job_valid_i && next_row < rows &&
+          std::bernoulli_distribution(1.0 - s_.job_gap_prob)(rng_)) {
+        t.job_valid_i = 1;
+        t.job_row_i = next_row;
+        t.job_disp_i = D;
+        // Last Ev column inside the image (block column of image x = W-1).
+        t.job_last_col_i = std::min(kBlockCols - 1, W_ - 1 - (s_.bx - kRadius));
+      }
+      t.clk_i = 0;
+      t.eval();
+
+      // Sample this cycle's outputs.
+      const bool vrd = t.vrd_en_o, hrd = t.hrd_en_o;
+      const int vrow = t.vrd_row_o, vgrp = t.vrd_grp_o, vd = t.vrd_d_o;
+      const int hrow = t.hrd_row_o, hgrp = t.hrd_grp_o;
+      const bool accepted = t.job_valid_i && t.job_ready_o;
+      if (accepted) {
+        if (first_accept < 0) first_accept = cycle;
+        ++next_row;
+      }
+      if (t.mon_ev_valid_o) check_ev(res);
+      if (t.mon_fc_valid_o) check_fc(res);
+      if (t.disp_valid_o) {
+        check_disp(res, seen, cols);
+        last_out = cycle;
+      }
+      if (!res.first_error.empty()) return res;
+
+      t.clk_i = 1;
+      t.eval();
+      if (accepted) t.job_valid_i = 0;
+      // Synchronous buffers: data for the sampled address, the next cycle.
+      drive_vertical(vrd, vrow, vgrp, vd);
+      drive_horizontal(hrd, hrow, hgrp);
+
+      if (next_row == rows && !t.busy_o && !t.job_valid_i) break;
+    }
+    res.cycles = last_out - first_accept + 1;
+    for (int r = 0; r < rows; ++r)
+      for (int x = 0; x < cols; ++x)
+        if (seen[r * kBlock + x] != 1 && res.first_error.empty())
+          res.first_error = "pixel (" + std::to_string(s_.bx + x) + "," + std::to_string(s_.by + r) +
+                            ") produced " + std::to_string(seen[r * kBlock + x]) + " times";
+    if (res.first_error.empty() && res.ev_checked != ev_expected)
+      res.first_error = "saw " + std::to_string(res.ev_checked) + " vertical costs, expected " +
+                        std::to_string(ev_expected);
+    return res;
+  }
+
+ private:
+  int cx(int x) const { return clamp_coord(x, W_); }
+  int cy(int y) const { return clamp_coord(y, H_); }
+  // Image column of Ev column `col` (0..47) of the block row.
+  int ev_col(int col) const { return cx(s_.bx - kRadius + col); }
+
+  void tick() {
+    top_->clk_i = 0;
+    top_->eval();
+    top_->clk_i = 1;
+    top_->eval();
+  }
+
+  void drive_vertical(bool en, int row, int grp, int d) {
+    auto& t = *top_;
+    for (int l = 0; l < kLanes; ++l) {
+      const int x = s_.bx - kRadius + grp * kLanes + l;
+      for (int k = 0; k < kWindow; ++k) {
+        const int i = l * kWindow + k;
+        if (!en) {  // garbage when not reading: it must not matter
+          set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, rng_() & 63);
+          continue;
+        }
+        const int y = s_.by + row - kRadius + k;
+        set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, ref_.census_left.at(cx(x), cy(y)));
+        set_bits(t.cen_r_i, i * kCensusBits, kCensusBits, ref_.census_right.at(cx(x - d), cy(y)));
+        set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
+                 weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))));
+      }
+    }
+  }
+
+  void drive_horizontal(bool en, int row, int grp) {
+    auto& t = *top_;
+    for (int m = 0; m < kHorzAggregators; ++m) {
+      const int x = cx(s_.bx + grp * kHorzAggregators + m);
+      for (int j = 0; j < kWindow; ++j) {
+        const int i = m * kWindow + j;
+        set_bits(t.wh_i, i * kWeightCodeBits, kWeightCodeBits,
+                 en ? weight_code(ref_.weights.h(j, x, cy(s_.by + row))) : (rng_() & 7));
+      }
+    }
+  }
+
+  void fail(Result& res, const std::string& what) {
+    if (res.first_error.empty()) res.first_error = what;
+  }
+
+  void check_ev(Result& res) {
+    auto& t = *top_;
+    const int row = t.mon_ev_row_o, d = t.mon_ev_d_o, grp = t.mon_ev_grp_o;
+    const int y = s_.by + row;
+    for (int l = 0; l < kLanes; ++l) {
+      const int col = grp * kLanes + l;
+      // Columns beyond the right border are not used: the ping-pong buffer
+      // replaces them by the border column (rtl/mcadsw_pingpong.sv).
+      if (s_.bx - kRadius + col >= W_) continue;
+      const int x = ev_col(col);
+      const uint64_t got = get_bits(t.mon_ev_o, l * kVertCostBits, kVertCostBits);
+      const uint64_t want = ref_.vert_cost[d][size_t(y) * W_ + x];
+      ++res.ev_checked;
+      if (got != want) {
+        std::ostringstream o;
+        o << "vertical cost Ev at column x=" << x << " (block col " << grp * kLanes + l
+          << "), y=" << y << ", d=" << d << ": RTL " << got << ", reference " << want;
+        fail(res, o.str());
+      }
+    }
+  }
+
+  void check_fc(Result& res) {
+    auto& t = *top_;
+    const int row = t.mon_fc_row_o, d = t.mon_fc_d_o, grp = t.mon_fc_grp_o;
+    const int y = s_.by + row;
+    for (int m = 0; m < kHorzAggregators; ++m) {
+      const int x = s_.bx + grp * kHorzAggregators + m;
+      if (x >= W_) continue;  // partial block: outside the image
+      const uint64_t got = get_bits(t.mon_fc_o, m * kFinalCostBits, kFinalCostBits);
+      const uint64_t want = ref_.final_cost[d][size_t(y) * W_ + x];
+      ++res.fc_checked;
+      if (got != want) {
+        std::ostringstream o;
+        o << "final cost at (" << x << "," << y << "), d=" << d << ": RTL " << got
+          << ", reference " << want;
+        fail(res, o.str());
+      }
+    }
+  }
+
+  void check_disp(Result& res, std::vector<int>& seen, int cols) {
+    auto& t = *top_;
+    const int row = t.disp_row_o, grp = t.disp_grp_o;
+    const int y = s_.by + row;
+    for (int m = 0; m < kHorzAggregators; ++m) {
+      const int xb = grp * kHorzAggregators + m;
+      if (xb >= cols) continue;
+      const int x = s_.bx + xb;
+      ++seen[row * kBlock + xb];
+      const int got = int(get_bits(t.disp_o, m * kDispBits, kDispBits));
+      const int want = disp_.at(x, y);
+      ++res.disp_checked;
+      if (got != want) {
+        std::ostringstream o;
+        o << "disparity at (" << x << "," << y << "): RTL " << got << " (cost "
+          << ref_.final_cost[got][size_t(y) * W_ + x] << "), reference " << want << " (cost "
+          << ref_.final_cost[want][size_t(y) * W_ + x] << ")";
+        fail(res, o.str());
+      }
+    }
+  }
+
+  const Scenario& s_;
+  std::mt19937 rng_;
+  std::unique_ptr<Vmcadsw_cost_agg> top_ = std::make_unique<Vmcadsw_cost_agg>();
+  Intermediates ref_;
+  Plane disp_;
+  int W_ = 0, H_ = 0;
+};
+
+Result run_scenario(const Scenario& s) {
+  CostAggBench bench(s);
+  Result r = bench.run();
+  std::printf("[%s] %dx%d block (%d,%d) D=%d: %ld cycles, %ld Ev / %ld final costs / %ld disparities "
+              "checked\n",
+              s.name.c_str(), s.left.width(), s.left.height(), s.bx, s.by, s.cfg.disparities,
+              r.cycles, r.ev_checked, r.fc_checked, r.disp_checked);
+  return r;
+}
+
+Scenario random_scenario(const std::string& name, int w, int h, int d, int bx, int by,
+                         uint32_t seed) {
+  std::mt19937 rng(seed);
+  Scenario s{name, test::random_yuv(w, h, rng), test::random_yuv(w, h, rng), Config{}, bx, by};
+  s.cfg.disparities = d;
+  s.cfg.table = make_weight_table(200.0);  // most weights non-zero, all shifts used
+  return s;
+}
+
+Scenario real_scenario(const std::string& name, int d, int bx, int by) {
+  const std::string dir = std::string(MCADSW_DATA_DIR) + "/cif/teddy/";
+  Scenario s{name, load_yuv(dir + "left.png"), load_yuv(dir + "right.png"), Config{}, bx, by};
+  s.cfg.disparities = d;
+  return s;
+}
+
+#define EXPECT_CLEAN(res) EXPECT_TRUE((res).first_error.empty()) << (res).first_error
+
+TEST(CostAgg, InteriorBlockRandomImage) {
+  const Result r = run_scenario(random_scenario("interior", 72, 60, 20, 36, 18, 1));
+  EXPECT_CLEAN(r);
+  EXPECT_EQ(r.disp_checked, 18 * 18);
+}
+
+TEST(CostAgg, TopLeftCornerClampsEverythingAtDmax) {
+  const Result r = run_scenario(random_scenario("corner", 40, 40, kDmax, 0, 0, 2));
+  EXPECT_CLEAN(r);
+}
+
+TEST(CostAgg, PartialBlockAtRightAndBottomEdges) {
+  const Result r = run_scenario(random_scenario("partial", 47, 41, 9, 36, 36, 3));
+  EXPECT_CLEAN(r);
+  EXPECT_EQ(r.disp_checked, 11 * 5);
+}
+
+TEST(CostAgg, SingleDisparity) {
+  const Result r = run_scenario(random_scenario("D=1", 40, 30, 1, 18, 0, 4));
+  EXPECT_CLEAN(r);
+}
+
+TEST(CostAgg, RealImageTeddyCifAtDmax) {
+  const Result r = run_scenario(real_scenario("teddy", kDmax, 180, 126));
+  EXPECT_CLEAN(r);
+  // Back-to-back jobs: 6 cycles per disparity per row plus the pipeline fill.
+  const long per_block = 18L * 6 * kDmax;
+  std::printf("cycles per 18-pixel row at D=%d: %.1f (paper: 7 + 6*64 = 391)\n", kDmax,
+              double(r.cycles) / 18);
+  EXPECT_LE(r.cycles, per_block + 16);
+}
+
+TEST(CostAgg, FlatImagesTieEverywhereToZero) {
+  Scenario s{"flat", test::flat_yuv(40, 40), test::flat_yuv(40, 40, 90), Config{}, 18, 18};
+  s.cfg.disparities = 12;
+  const Result r = run_scenario(s);
+  EXPECT_CLEAN(r);
+}
+
+TEST(CostAgg, MaximumContrastAllWeights64) {
+  YuvImage l = test::flat_yuv(50, 40), r = test::flat_yuv(50, 40);
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 50; ++x) {
+      l.y.at(x, y) = ((x / 3 + y / 2) & 1) ? 255 : 0;
+      r.y.at(x, y) = ((x / 2 + y / 3) & 1) ? 255 : 0;
+    }
+  Scenario s{"contrast", l, r, Config{}, 18, 18};
+  s.cfg.disparities = 24;
+  s.cfg.table = WeightTable(kWeightTableSize, 64);  // every weight 64: the widest sums
+  EXPECT_CLEAN(run_scenario(s));
+}
+
+TEST(CostAgg, AllWeightsZero) {
+  Scenario s = random_scenario("zero-weights", 40, 40, 10, 18, 18, 5);
+  s.cfg.table = WeightTable(kWeightTableSize, 0);
+  EXPECT_CLEAN(run_scenario(s));
+}
+
+TEST(CostAgg, JobBackPressureWithRandomGaps) {
+  Scenario s = random_scenario("gaps", 60, 50, 7, 18, 18, 6);
+  s.job_gap_prob = 0.7;
+  EXPECT_CLEAN(run_scenario(s));
+}
+
+}  // namespace
+}  // namespace mcadsw
