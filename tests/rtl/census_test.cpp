@@ -1,0 +1,207 @@
+// mcadsw_census (Fig. 10) against census_code(): every position of the census
+// buffer, read through the aggregator's read port, equals the reference code
+// of the clamped image coordinate. Left and right instances, random input
+// stalls, both banks, borders at all four sides, images smaller than the window.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "Vcensus_l.h"
+#include "Vcensus_r.h"
+#include "mcadsw/ref.hpp"
+#include "test_util.hpp"
+#include "vbits.hpp"
+
+namespace mcadsw {
+namespace {
+
+using sim::get_bits;
+using sim::set_bits;
+
+constexpr int kRows = kBlockCols;                     // 48 census rows
+constexpr int kColsLeft = kBlockCols;                 // 48
+constexpr int kColsRight = kBlockCols + kDmax - 1;    // 111
+
+// One block's window of one view: origin in image coordinates.
+struct Window {
+  int x0, y0;
+};
+
+template <typename V>
+class CensusBench {
+ public:
+  explicit CensusBench(int cols) : cols_(cols) {
+    top_->clk_i = 0;
+    top_->rst_ni = 0;
+    top_->cfg_valid_i = 0;
+    top_->pix_valid_i = 0;
+    top_->rd_en_i = 0;
+    top_->eval();
+    tick();
+    tick();
+    top_->rst_ni = 1;
+  }
+
+  // Fills `bank` from `luma` with random input stalls; returns the cycles used.
+  long fill(const Plane& luma, Window w, int bank, double stall_prob, std::mt19937& rng) {
+    auto& t = *top_;
+    const int W = luma.width, H = luma.height;
+    const int lo_x = std::max(0, -w.x0), hi_x = std::min(cols_ - 1, W - 1 - w.x0);
+    const int lo_y = std::max(0, -w.y0), hi_y = std::min(kRows - 1, H - 1 - w.y0);
+    t.cfg_valid_i = 1;
+    t.cfg_bank_i = bank;
+    t.cfg_lo_x_i = lo_x;
+    t.cfg_hi_x_i = hi_x;
+    t.cfg_lo_y_i = lo_y;
+    t.cfg_hi_y_i = hi_y;
+    t.eval();
+    EXPECT_TRUE(t.cfg_ready_o);
+    tick();
+    t.cfg_valid_i = 0;
+
+    // The luma window at clamped coordinates, as the memory controller reads it.
+    const int wpr = (cols_ + 4 + 3) / 4;
+    std::vector<uint32_t> words;
+    for (int u = 0; u < kRows + 4; ++u)
+      for (int wd = 0; wd < wpr; ++wd) {
+        uint32_t v = 0;
+        for (int b = 0; b < 4; ++b)
+          v |= uint32_t(luma.clamped(w.x0 - 2 + 4 * wd + b, w.y0 - 2 + u)) << (8 * b);
+        words.push_back(v);
+      }
+    size_t next = 0;
+    int done = 0;
+    long cycles = 0;
+    const long limit = 20L * kRows * cols_ + 10000;  // never hang
+    for (; cycles < limit; ++cycles) {
+      const bool offer = next < words.size() && !std::bernoulli_distribution(stall_prob)(rng);
+      t.pix_valid_i = offer;
+      if (offer) t.pix_data_i = words[next];
+      t.clk_i = 0;
+      t.eval();
+      if (offer && t.pix_ready_o) ++next;
+      done += t.done_o;
+      if (done && !t.busy_o) break;
+      t.clk_i = 1;
+      t.eval();
+    }
+    t.pix_valid_i = 0;
+    EXPECT_EQ(next, words.size()) << "not every luma word was consumed";
+    EXPECT_EQ(done, 1) << "done must pulse exactly once";
+    return cycles;
+  }
+
+  // Reads every position of `bank` and compares it with the reference.
+  std::string check(const Plane& luma, Window w, int bank, long* compared) {
+    auto& t = *top_;
+    for (int row = 0; row + kWindow <= kRows; ++row) {
+      for (int col = 0; col + kLanes <= cols_; ++col) {
+        t.rd_en_i = 1;
+        t.rd_bank_i = bank;
+        t.rd_row_i = row;
+        t.rd_col_i = col;
+        tick();
+        t.rd_en_i = 0;
+        for (int l = 0; l < kLanes; ++l)
+          for (int k = 0; k < kWindow; ++k) {
+            const int x = clamp_coord(w.x0 + col + l, luma.width);
+            const int y = clamp_coord(w.y0 + row + k, luma.height);
+            const int want = census_code(luma, x, y);
+            const int got = int(get_bits(t.rd_data_o, (l * kWindow + k) * kCensusBits, kCensusBits));
+            ++*compared;
+            if (got != want) {
+              std::ostringstream o;
+              o << "bank " << bank << " census at window (" << col + l << "," << row + k
+                << ") = image (" << x << "," << y << "): RTL " << got << ", reference " << want;
+              return o.str();
+            }
+          }
+      }
+    }
+    return "";
+  }
+
+ private:
+  void tick() {
+    top_->clk_i = 0;
+    top_->eval();
+    top_->clk_i = 1;
+    top_->eval();
+  }
+  int cols_;
+  std::unique_ptr<V> top_ = std::make_unique<V>();
+};
+
+template <typename V>
+void run_case(int cols, const Plane& luma, Window w, int bank, double stall, uint32_t seed) {
+  std::mt19937 rng(seed);
+  CensusBench<V> bench(cols);
+  const long cycles = bench.fill(luma, w, bank, stall, rng);
+  long compared = 0;
+  const std::string err = bench.check(luma, w, bank, &compared);
+  EXPECT_TRUE(err.empty()) << err;
+  std::printf("census %d cols, %dx%d image, window (%d,%d), bank %d: filled in %ld cycles, "
+              "%ld codes compared\n",
+              cols, luma.width, luma.height, w.x0, w.y0, bank, cycles, compared);
+}
+
+// Window origins of a block at (bx, by): left x0 = bx - 15, right x0 = bx - 15 - 63.
+Window left_window(int bx, int by) { return {bx - kRadius, by - kRadius}; }
+Window right_window(int bx, int by) { return {bx - kRadius - (kDmax - 1), by - kRadius}; }
+
+TEST(Census, LeftInteriorBlock) {
+  std::mt19937 rng(1);
+  const Plane p = test::random_plane(100, 90, rng);
+  run_case<Vcensus_l>(kColsLeft, p, left_window(36, 36), 0, 0.0, 1);
+}
+
+TEST(Census, LeftTopLeftCornerWithStalls) {
+  std::mt19937 rng(2);
+  const Plane p = test::random_plane(60, 50, rng);
+  run_case<Vcensus_l>(kColsLeft, p, left_window(0, 0), 1, 0.5, 2);
+}
+
+TEST(Census, LeftBottomRightPartialBlock) {
+  std::mt19937 rng(3);
+  const Plane p = test::random_plane(47, 41, rng);
+  run_case<Vcensus_l>(kColsLeft, p, left_window(36, 36), 0, 0.2, 3);
+}
+
+TEST(Census, LeftImageSmallerThanTheWindow) {
+  std::mt19937 rng(4);
+  const Plane p = test::random_plane(7, 5, rng);
+  run_case<Vcensus_l>(kColsLeft, p, left_window(0, 0), 1, 0.1, 4);
+}
+
+TEST(Census, LeftFlatAndMaximumContrast) {
+  run_case<Vcensus_l>(kColsLeft, Plane(50, 50, 77), left_window(18, 18), 0, 0.0, 5);
+  Plane c(50, 50);
+  for (int y = 0; y < 50; ++y)
+    for (int x = 0; x < 50; ++x) c.at(x, y) = ((x + y) & 1) ? 255 : 0;
+  run_case<Vcensus_l>(kColsLeft, c, left_window(18, 18), 1, 0.0, 6);
+}
+
+TEST(Census, RightWindowReachesPastTheLeftBorder) {
+  std::mt19937 rng(7);
+  const Plane p = test::random_plane(130, 70, rng);
+  run_case<Vcensus_r>(kColsRight, p, right_window(18, 18), 0, 0.3, 7);
+  run_case<Vcensus_r>(kColsRight, p, right_window(108, 36), 1, 0.0, 8);
+}
+
+TEST(Census, BanksHoldIndependentBlocks) {
+  std::mt19937 rng(9);
+  const Plane a = test::random_plane(80, 60, rng), b = test::random_plane(80, 60, rng);
+  CensusBench<Vcensus_l> bench(kColsLeft);
+  bench.fill(a, left_window(18, 0), 0, 0.0, rng);
+  bench.fill(b, left_window(36, 18), 1, 0.0, rng);
+  long compared = 0;
+  std::string err = bench.check(a, left_window(18, 0), 0, &compared);
+  EXPECT_TRUE(err.empty()) << err;
+  err = bench.check(b, left_window(36, 18), 1, &compared);
+  EXPECT_TRUE(err.empty()) << err;
+}
+
+}  // namespace
+}  // namespace mcadsw
