@@ -7,6 +7,7 @@ package mcadsw_pkg;
   localparam int WEIGHT_MAX       = 64;  // largest weight
   localparam int WEIGHT_CODE_BITS = 3;  // weight code: 0 -> 0, e -> 2^(e-1)
   localparam int COLOR_DIST_BITS  = 10;  // |dY|+|dU|+|dV| <= 765
+  localparam int WTHRESHOLDS      = 7;  // weight table as thresholds of the code
   localparam int WTABLE_SIZE      = 766;  // weight table entries
   localparam int COST_BITS        = 3;  // census cost 0..6
   localparam int VCOST_BITS       = 14;  // vertical cost <= 31*6*64

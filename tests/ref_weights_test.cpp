@@ -50,8 +50,37 @@ TEST(WeightTable, RejectsBadTablesAndGamma) {
   t[7] = 128;
   EXPECT_THROW(check_weight_table(t), std::invalid_argument);
   EXPECT_THROW(check_weight_table(WeightTable(10, 1)), std::invalid_argument);
+  t = make_weight_table(kDefaultGamma);
+  t[200] = 64;  // rises again: not representable as thresholds
+  EXPECT_THROW(check_weight_table(t), std::invalid_argument);
   EXPECT_THROW(make_weight_table(0.0), std::invalid_argument);
   EXPECT_THROW(make_weight_table(-3.0), std::invalid_argument);
+}
+
+TEST(WeightTable, ThresholdsHandChecked) {
+  // gamma 22: codes drop at dC = 1, 16, 31, 46, 61, 77, 92 (one every 15.25).
+  const WeightThresholds t = weight_thresholds(make_weight_table(kDefaultGamma));
+  EXPECT_EQ(t, (WeightThresholds{1, 16, 31, 46, 61, 77, 92}));
+  EXPECT_EQ(weight_thresholds(WeightTable(kWeightTableSize, 64)),
+            (WeightThresholds{766, 766, 766, 766, 766, 766, 766}));
+  EXPECT_EQ(weight_thresholds(WeightTable(kWeightTableSize, 0)),
+            (WeightThresholds{0, 0, 0, 0, 0, 0, 0}));
+}
+
+TEST(WeightTable, ThresholdsRoundTripForRandomLegalTables) {
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 200; ++trial) {
+    WeightTable t(kWeightTableSize);
+    int code = int(rng() % 8);
+    for (auto& w : t) {
+      if (code > 0 && rng() % 60 == 0) code -= 1 + int(rng() % code);  // may skip levels
+      w = uint8_t(weight_from_code(code));
+    }
+    ASSERT_EQ(weight_table_from_thresholds(weight_thresholds(t)), t) << "trial " << trial;
+  }
+  for (double g : {1.0, 7.5, 22.0, 100.0, 1000.0})
+    EXPECT_EQ(weight_table_from_thresholds(weight_thresholds(make_weight_table(g))),
+              make_weight_table(g));
 }
 
 TEST(ColorDistance, ManhattanOverYuvWithClamping) {

@@ -19,6 +19,7 @@ int main() {
   p("WEIGHT_MAX", kWeightMax, "largest weight");
   p("WEIGHT_CODE_BITS", kWeightCodeBits, "weight code: 0 -> 0, e -> 2^(e-1)");
   p("COLOR_DIST_BITS", kColorDistBits, "|dY|+|dU|+|dV| <= 765");
+  p("WTHRESHOLDS", kWeightThresholds, "weight table as thresholds of the code");
   p("WTABLE_SIZE", kWeightTableSize, "weight table entries");
   p("COST_BITS", kCostBits, "census cost 0..6");
   p("VCOST_BITS", kVertCostBits, "vertical cost <= 31*6*64");

@@ -32,7 +32,33 @@ void check_weight_table(const WeightTable& table) {
     if (w > unsigned(kWeightMax) || (w & (w - 1)) != 0)
       throw std::invalid_argument("weight table entry " + std::to_string(i) + " = " +
                                   std::to_string(w) + " is not 0 or a power of two <= 64");
+    if (i > 0 && w > table[i - 1])
+      throw std::invalid_argument("weight table entry " + std::to_string(i) + " = " +
+                                  std::to_string(w) + " is larger than entry " +
+                                  std::to_string(i - 1) + "; the table must be non-increasing");
   }
+}
+
+WeightThresholds weight_thresholds(const WeightTable& table) {
+  check_weight_table(table);
+  WeightThresholds t;
+  for (int i = 0; i < kWeightThresholds; ++i) {
+    const int code = kWeightThresholds - 1 - i;  // 6 .. 0
+    int dc = 0;
+    while (dc < kWeightTableSize && weight_code(table[dc]) > code) ++dc;
+    t[i] = uint16_t(dc);
+  }
+  return t;
+}
+
+WeightTable weight_table_from_thresholds(const WeightThresholds& thresholds) {
+  WeightTable table(kWeightTableSize);
+  for (int dc = 0; dc < kWeightTableSize; ++dc) {
+    int code = kWeightThresholds;
+    for (uint16_t t : thresholds) code -= dc >= t;
+    table[dc] = uint8_t(weight_from_code(code));
+  }
+  return table;
 }
 
 int color_distance(const YuvImage& img, int x0, int y0, int x1, int y1) {

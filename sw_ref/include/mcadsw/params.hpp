@@ -48,6 +48,9 @@ constexpr int weight_code(int w) {
 constexpr int weight_from_code(int e) { return e == 0 ? 0 : 1 << (e - 1); }
 static_assert(weight_code(kWeightMax) < (1 << kWeightCodeBits), "64 needs code 7");
 inline constexpr int kColorDistBits = 10;  // 0..765
+// The engine holds a (non-increasing) table as the colour distances at which
+// the weight code drops: code(dC) = 7 - #{i : dC >= threshold[i]}.
+inline constexpr int kWeightThresholds = (1 << kWeightCodeBits) - 1;  // 7
 static_assert((1 << kColorDistBits) > kColorDistMax);
 inline constexpr int kDefaultGamma = 22;  // chosen by the sweep of scripts/eval_pairs.sh, docs/algorithm.md
 

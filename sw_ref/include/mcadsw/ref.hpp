@@ -5,6 +5,7 @@
 // unit tests compare against these functions bit for bit.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,8 +48,15 @@ int census_cost(uint8_t left_code, uint8_t right_code);
 using WeightTable = std::vector<uint8_t>;  // kWeightTableSize entries, each 0 or 2^n <= 64
 // 64*exp(-dC/gamma) truncated to its most significant set bit (Fig. 5).
 WeightTable make_weight_table(double gamma);
-// Throws std::invalid_argument unless the table has kWeightTableSize one-hot-or-zero entries <= 64.
+// Throws std::invalid_argument unless the table has kWeightTableSize entries,
+// each 0 or a power of two <= 64, non-increasing in dC (as every table from
+// make_weight_table is), so the engine can hold it as thresholds.
 void check_weight_table(const WeightTable& table);
+// The table as the engine holds it: threshold[i] is the smallest dC whose weight
+// code is <= 6 - i (kWeightTableSize when there is none). Lossless for legal tables.
+using WeightThresholds = std::array<uint16_t, kWeightThresholds>;
+WeightThresholds weight_thresholds(const WeightTable& table);
+WeightTable weight_table_from_thresholds(const WeightThresholds& thresholds);
 // Manhattan colour distance |dY|+|dU|+|dV| of two pixels of one view.
 int color_distance(const YuvImage& img, int x0, int y0, int x1, int y1);
 

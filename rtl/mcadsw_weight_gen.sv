@@ -1,0 +1,264 @@
+// Weight generator (paper Sec. V-C, Fig. 11): three input buffers (Y, U, V of
+// the left view), a kernel of WINDOW Manhattan colour-distance units and
+// weight-table lookups, and the vertical and horizontal weight buffers.
+//
+// Input: the colour of the ROWS x COLS read window (48 x 48), plane by plane
+// (Y, then U, then V), in strips of 4 columns: for strip s, rows 0 .. ROWS-1 of
+// columns 4s .. 4s+3, one 32-bit word a row, byte 0 the leftmost column.
+// The memory side reads at clamped coordinates, so the weights of positions
+// outside the image are those of the nearest edge pixel (docs/algorithm.md).
+//
+// Kernel, after the window is loaded, one step a cycle:
+//   vertical:   column c (0..COLS-1), centre row r (0..BLOCK-1): the WINDOW
+//               weights of pixels (c, r+k) against the column centre (c, r+R);
+//   horizontal: centre row r, output pixel x (0..BLOCK-1): the WINDOW weights
+//               of column centres (x+j, r+R) against the window centre (x+R, r+R).
+// BLOCK*COLS + BLOCK*BLOCK = 1188 cycles a block (paper: 1536).
+//
+// Weight table: the 7 colour distances at which the 3-bit weight code drops
+// (code = 7 - number of thresholds <= dC), loaded at run time and converted
+// from the reference's table by weight_thresholds(), so both sides use the
+// same values. Weight buffers: BANKS banks, so the next block is generated
+// while the cost aggregator reads the current one.
+`default_nettype none
+
+module mcadsw_weight_gen #(
+  parameter int COLS   = mcadsw_pkg::BLOCK_COLS,
+  parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,
+  parameter int BLOCK  = mcadsw_pkg::BLOCK,
+  parameter int WINDOW = mcadsw_pkg::WINDOW,
+  parameter int LANES  = mcadsw_pkg::LANES,
+  parameter int HAGG   = mcadsw_pkg::HAGG,
+  parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
+  parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
+  parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
+  parameter int BANKS  = 2,
+  parameter int XB     = $clog2(COLS),
+  parameter int RB     = $clog2(BLOCK),
+  parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
+) (
+  input  logic                       clk_i,
+  input  logic                       rst_ni,
+  input  logic [NTHR*DCB-1:0]        thr_i,        // stable while busy_o
+  input  logic                       cfg_valid_i,
+  output logic                       cfg_ready_o,
+  input  logic [BB-1:0]              cfg_bank_i,
+  input  logic                       pix_valid_i,
+  output logic                       pix_ready_o,
+  input  logic [31:0]                pix_data_i,
+  output logic                       done_o,
+  output logic                       busy_o,
+  // Vertical weight buffer read: LANES columns from vrd_col_i, centre row vrd_row_i
+  input  logic                       vrd_en_i,
+  input  logic [BB-1:0]              vrd_bank_i,
+  input  logic [RB-1:0]              vrd_row_i,
+  input  logic [XB-1:0]              vrd_col_i,
+  output logic [LANES*WINDOW*WB-1:0] wv_o,          // lane l, tap k at (l*WINDOW + k)*WB
+  // Horizontal weight buffer read: HAGG output pixels from hrd_col_i
+  input  logic                       hrd_en_i,
+  input  logic [BB-1:0]              hrd_bank_i,
+  input  logic [RB-1:0]              hrd_row_i,
+  input  logic [RB-1:0]              hrd_col_i,
+  output logic [HAGG*WINDOW*WB-1:0]  wh_o           // pixel m, tap j at (m*WINDOW + j)*WB
+);
+
+  localparam int RADIUS = WINDOW / 2;
+  localparam int WPR    = COLS / 4;                 // words per row
+  localparam int NWORDS = 3 * ROWS * WPR;
+  localparam int NB     = $clog2(NWORDS + 1);
+  localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
+
+  if (COLS % 4 != 0 || ROWS != BLOCK + WINDOW - 1 || COLS != BLOCK + WINDOW - 1 ||
+      NTHR != (1 << WB) - 1) begin : g_bad_param
+    mcadsw_error_weight_gen_geometry u_error ();
+  end
+
+  // ---- Control ------------------------------------------------------------------
+  typedef enum logic [1:0] {IDLE, LOAD, VERT, HORZ} state_e;
+  state_e        state_q;
+  logic [BB-1:0] bank_q;
+  logic [NB-1:0] nword_q;
+  logic [RB-1:0] r_q;
+  logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
+  logic          pix_fire;
+
+  assign cfg_ready_o = state_q == IDLE;
+  assign busy_o      = state_q != IDLE;
+  assign pix_ready_o = state_q == LOAD;
+  assign pix_fire    = pix_valid_i && pix_ready_o;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= IDLE;
+      bank_q  <= '0;
+      nword_q <= '0;
+      r_q     <= '0;
+      c_q     <= '0;
+      done_o  <= 1'b0;
+    end else begin
+      done_o <= 1'b0;
+      case (state_q)
+        IDLE: if (cfg_valid_i) begin
+          state_q <= LOAD;
+          bank_q  <= cfg_bank_i;
+          nword_q <= '0;
+        end
+        LOAD: if (pix_fire) begin
+          nword_q <= nword_q + NB'(1);
+          if (nword_q == NB'(NWORDS - 1)) begin
+            state_q <= VERT;
+            r_q     <= '0;
+            c_q     <= '0;
+          end
+        end
+        VERT: begin  // column by column: the BLOCK centre rows of column c
+          if (r_q == RB'(BLOCK - 1)) begin
+            r_q <= '0;
+            if (c_q == XB'(COLS - 1)) begin
+              c_q     <= '0;
+              state_q <= HORZ;
+            end else begin
+              c_q <= c_q + XB'(1);
+            end
+          end else begin
+            r_q <= r_q + RB'(1);
+          end
+        end
+        HORZ: begin
+          if (c_q == XB'(BLOCK - 1)) begin
+            c_q <= '0;
+            if (r_q == RB'(BLOCK - 1)) begin
+              state_q <= IDLE;
+              done_o  <= 1'b1;
+            end else begin
+              r_q <= r_q + RB'(1);
+            end
+          end else begin
+            c_q <= c_q + XB'(1);
+          end
+        end
+        default: state_q <= IDLE;
+      endcase
+    end
+  end
+
+  // ---- Input buffers: Y, U, V, each 4 banks of column words ----------------------
+  // Column c is word c/4 of bank c%4 and holds the ROWS pixels of the column, so
+  // an input word (4 pixels of a row) writes one byte into each bank, and the
+  // kernel reads a whole column at once ("column by column", Fig. 11).
+  localparam int CW = ROWS * 8;             // column word
+  localparam int SB = $clog2(COLS / 4);
+  logic [1:0]    in_plane;
+  logic [SB-1:0] in_strip;                  // columns 4s .. 4s+3
+  logic          strip_end;                 // last row of a strip arrives
+  int            in_row;
+  assign in_plane  = 2'(32'(nword_q) / (ROWS * WPR));
+  assign in_strip  = SB'((32'(nword_q) / ROWS) % WPR);
+  assign in_row    = 32'(nword_q) % ROWS;
+  assign strip_end = pix_fire && in_row == ROWS - 1;
+
+  // Staging register: the first ROWS - 1 words of a strip.
+  logic [(ROWS-1)*32-1:0] stage_q;
+  always_ff @(posedge clk_i) begin
+    if (pix_fire && in_row < ROWS - 1) stage_q[in_row*32 +: 32] <= pix_data_i;
+  end
+
+  logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
+  logic [4*3*CW-1:0] bank_rd;
+
+  for (genvar b = 0; b < 4; b++) begin : g_ibank
+    // The column word of column 4s + b: byte b of every row of the strip.
+    logic [CW-1:0] wr_col;
+    for (genvar y = 0; y < ROWS - 1; y++) begin : g_row
+      assign wr_col[y*8 +: 8] = stage_q[y*32 + b*8 +: 8];
+    end
+    assign wr_col[(ROWS-1)*8 +: 8] = pix_data_i[b*8 +: 8];
+
+    logic [CW-1:0] y_q [COLS/4];
+    logic [CW-1:0] u_q [COLS/4];
+    logic [CW-1:0] v_q [COLS/4];
+    always_ff @(posedge clk_i) begin
+      if (strip_end && in_plane == 2'd0) y_q[in_strip] <= wr_col;
+      if (strip_end && in_plane == 2'd1) u_q[in_strip] <= wr_col;
+      if (strip_end && in_plane == 2'd2) v_q[in_strip] <= wr_col;
+    end
+    assign bank_rd[b*3*CW +: 3*CW] = {v_q[c_q[XB-1:2]], u_q[c_q[XB-1:2]], y_q[c_q[XB-1:2]]};
+  end
+  assign column = bank_rd[32'(c_q[1:0])*3*CW +: 3*CW];
+
+  // ---- Horizontal row buffer (Fig. 11): the centre rows of every column -----------
+  // Written during the vertical pass (row r + RADIUS of column c at position
+  // (r, c)), read during the horizontal pass: no second read of the input buffer.
+  localparam int PW = 24;                   // Y, U, V of one pixel
+  logic [COLS*PW-1:0] hrow_q [BLOCK];
+  logic [COLS*PW-1:0] hrow;
+  assign hrow = hrow_q[r_q];
+
+  function automatic logic [PW-1:0] col_pixel(input logic [3*CW-1:0] col, input int y);
+    col_pixel = {col[2*CW + y*8 +: 8], col[CW + y*8 +: 8], col[y*8 +: 8]};
+  endfunction
+
+  function automatic logic [DCB-1:0] absdiff(input logic [7:0] a, input logic [7:0] b);
+    logic [7:0] d;
+    d = (a > b) ? a - b : b - a;
+    absdiff = {{(DCB - 8){1'b0}}, d};
+  endfunction
+
+  function automatic logic [DCB-1:0] cdist(input logic [PW-1:0] a, input logic [PW-1:0] b);
+    cdist = absdiff(a[7:0], b[7:0]) + absdiff(a[15:8], b[15:8]) + absdiff(a[23:16], b[23:16]);
+  endfunction
+
+  // ---- Kernel: WINDOW colour distances and table lookups ----------------------------
+  logic             horz;
+  logic [PW-1:0]    centre;
+  logic [ENTRY-1:0] codes;
+  assign horz   = state_q == HORZ;
+  assign centre = horz ? hrow[(32'(c_q) + RADIUS)*PW +: PW] : col_pixel(column, 32'(r_q) + RADIUS);
+
+  for (genvar k = 0; k < WINDOW; k++) begin : g_tap
+    logic [PW-1:0]  p;
+    logic [DCB-1:0] d;
+    logic [WB-1:0]  passed;   // thresholds passed
+    assign p = horz ? hrow[(32'(c_q) + k)*PW +: PW] : col_pixel(column, 32'(r_q) + k);
+    assign d = cdist(p, centre);
+    always_comb begin
+      passed = '0;
+      for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr_i[i*DCB +: DCB]);
+    end
+    assign codes[k*WB +: WB] = WB'(NTHR) - passed;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= centre;
+  end
+
+  // ---- Weight buffers: one word per aggregator read ----------------------------------
+  // Vertical: word (bank, r, group of LANES columns); horizontal: word (bank, r,
+  // group of HAGG pixels). The kernel writes one entry of a word a cycle.
+  localparam int VGRP = COLS / LANES;
+  localparam int HGRP = BLOCK / HAGG;
+  logic [LANES*ENTRY-1:0] vbuf_q [BANKS*BLOCK*VGRP];
+  logic [HAGG*ENTRY-1:0]  hbuf_q [BANKS*BLOCK*HGRP];
+
+  always_ff @(posedge clk_i) begin
+    if (state_q == VERT)
+      vbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*VGRP + 32'(c_q) / LANES]
+            [(32'(c_q) % LANES)*ENTRY +: ENTRY] <= codes;
+    if (state_q == HORZ)
+      hbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*HGRP + 32'(c_q) / HAGG]
+            [(32'(c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wv_o <= '0;
+      wh_o <= '0;
+    end else begin
+      if (vrd_en_i) wv_o <= vbuf_q[(32'(vrd_bank_i)*BLOCK + 32'(vrd_row_i))*VGRP + 32'(vrd_col_i) / LANES];
+      if (hrd_en_i) wh_o <= hbuf_q[(32'(hrd_bank_i)*BLOCK + 32'(hrd_row_i))*HGRP + 32'(hrd_col_i) / HAGG];
+    end
+  end
+
+endmodule
+
+`default_nettype wire
