@@ -2,21 +2,24 @@
 // kernel, census buffer. Instantiated for the left view (COLS = 48) and the
 // right view (COLS = 48 + DMAX - 1, the columns x - d can reach).
 //
-// Input: the luma of the read window, (COLS + 4) x (ROWS + 4) pixels (2 extra
-// on each side for the 5x5 template), row by row, 4 pixels per 32-bit word,
-// byte 0 the leftmost pixel, each row padded to whole words. The memory side
-// reads at clamped coordinates, so every pixel of the window has a value.
+// Input: the luma of the read window, LCOLS = COLS + 4 columns by ROWS + 4 rows
+// (2 extra on each side for the 5x5 template), in strips of 4 columns: for
+// strip s, rows 0 .. ROWS+3 of columns 4s .. 4s+3, one 32-bit word a row, byte 0
+// the leftmost column (the weight generator takes the same format). The memory
+// side reads at clamped coordinates, so every pixel of the window has a value.
 //
-// Input buffer: a 6-row line buffer; row u + 5 loads while the kernel works on
-// the code row that needs luma rows u .. u + 4.
+// Input buffer: 8 banks of luma column words (column p in bank p % 8), filled
+// through a staging register that collects a strip and writes 4 whole columns.
 //
-// Kernel: one code a cycle, only for window positions inside the image
-// (cfg lo/hi bounds). Census buffer: BANKS banks of ROWS x COLS codes, so the
-// next block is prepared while the cost aggregator reads the current one.
-// Its read port delivers LANES columns x WINDOW rows a cycle (Fig. 12) and
-// clamps every row and column index to the in-image bounds of the bank: this
-// is the border rule of docs/algorithm.md (a position outside the image reads
-// the code of the nearest edge pixel).
+// Kernel: one column of ROWS codes a cycle, COLS cycles a block. Position
+// (i, j) of the census buffer receives the code of the nearest in-image
+// position (clamp(i, lo_x, hi_x), clamp(j, lo_y, hi_y)): the border rule of
+// docs/algorithm.md, applied once, when the buffer is written.
+//
+// Census buffer: BANKS banks (the next block is prepared while the cost
+// aggregator reads the current one), each 8 sub-banks of column words (column
+// i in sub-bank i % 8), so the read port's LANES consecutive columns come from
+// distinct sub-banks; it delivers LANES columns x WINDOW rows a cycle (Fig. 12).
 `default_nettype none
 
 module mcadsw_census #(
@@ -54,168 +57,189 @@ module mcadsw_census #(
   output logic [LANES*WINDOW*CB-1:0] rd_data_o    // lane l, row k at (l*WINDOW + k)*CB
 );
 
-  localparam int LCOLS = COLS + 4;             // luma columns of the window
-  localparam int LROWS = ROWS + 4;
-  localparam int WPR   = (LCOLS + 3) / 4;      // words per luma row
-  localparam int LW    = WPR * 4;              // bytes per line-buffer row
-  localparam int SLOTS = 6;
-  localparam int UB    = $clog2(LROWS + 1);    // luma row counter width
-  localparam int WB    = $clog2(WPR + 1);
+  localparam int SUB    = 8;                       // sub-banks (columns)
+  localparam int LCOLS  = COLS + 4;                // luma columns of the window
+  localparam int LROWS  = ROWS + 4;
+  localparam int STRIPS = (LCOLS + 3) / 4;
+  localparam int NWORDS = STRIPS * LROWS;
+  localparam int LDEPTH = (STRIPS * 4 + SUB - 1) / SUB;  // luma words per sub-bank
+  localparam int CDEPTH = (COLS + SUB - 1) / SUB;        // census words per sub-bank
+  localparam int LW     = LROWS * 8;               // luma column word
+  localparam int CWB    = ROWS * CB;               // census column word
+  localparam int NB     = $clog2(NWORDS + 1);
+  localparam int SB     = $clog2(STRIPS);
 
-  if (ROWS < WINDOW || COLS < LANES || CB != 6) begin : g_bad_param
+  if (ROWS < WINDOW || LANES != SUB || CB != 6) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
-  // ---- Configuration ---------------------------------------------------------
-  logic          busy_q;
+  // ---- Control ----------------------------------------------------------------------
+  typedef enum logic [1:0] {IDLE, LOAD, KERNEL} state_e;
+  state_e        state_q;
   logic [BB-1:0] bank_q;
   logic [XB-1:0] lo_x_q, hi_x_q;
-  logic [YB-1:0] hi_y_q;
-  logic [BANKS*XB-1:0] blo_x_q, bhi_x_q;  // bounds of each bank, for the read port
-  logic [BANKS*YB-1:0] blo_y_q, bhi_y_q;
+  logic [YB-1:0] lo_y_q, hi_y_q;
+  logic [NB-1:0] nword_q;
+  logic [XB-1:0] ki_q;           // census column the kernel writes
+  logic          pix_fire;
 
-  assign cfg_ready_o = !busy_q;
-  assign busy_o      = busy_q;
-
-  // ---- Input buffer ------------------------------------------------------------
-  logic [SLOTS*LW*8-1:0] lbuf_q;
-  logic [UB-1:0]         in_row_q;    // luma row being loaded
-  logic [WB-1:0]         in_word_q;
-  logic [YB:0]           kc_q;        // code row the kernel works on
-  logic [XB-1:0]         ki_q;        // code column
-  logic                  k_done_q;    // every code row written
-  logic                  in_done;
-  logic                  pix_fire;
-
-  assign in_done     = in_row_q == UB'(LROWS);
-  // Row u may load once the kernel no longer needs row u - 6 (slot reuse).
-  assign pix_ready_o = busy_q && !in_done &&
-                       (k_done_q || 32'(in_row_q) <= 32'(kc_q) + 5);
+  assign cfg_ready_o = state_q == IDLE;
+  assign busy_o      = state_q != IDLE;
+  assign pix_ready_o = state_q == LOAD;
   assign pix_fire    = pix_valid_i && pix_ready_o;
-
-  // ---- Kernel (Fig. 2 template, bit order of docs/algorithm.md) ---------------
-  logic k_go;
-  assign k_go = busy_q && !k_done_q && 32'(in_row_q) > 32'(kc_q) + 4;
-
-  function automatic logic [7:0] luma(input logic [SLOTS*LW*8-1:0] buf_v,
-                                      input int row, input int col);
-    luma = buf_v[((row % SLOTS)*LW + col)*8 +: 8];
-  endfunction
-
-  logic [CB-1:0] code;
-  always_comb begin
-    logic [7:0] centre;
-    int r, c;
-    r = 32'(kc_q) + 2;
-    c = 32'(ki_q) + 2;
-    centre = luma(lbuf_q, r, c);
-    code[5] = luma(lbuf_q, r + mcadsw_pkg::TAP0_DY, c + mcadsw_pkg::TAP0_DX) <= centre;
-    code[4] = luma(lbuf_q, r + mcadsw_pkg::TAP1_DY, c + mcadsw_pkg::TAP1_DX) <= centre;
-    code[3] = luma(lbuf_q, r + mcadsw_pkg::TAP2_DY, c + mcadsw_pkg::TAP2_DX) <= centre;
-    code[2] = luma(lbuf_q, r + mcadsw_pkg::TAP3_DY, c + mcadsw_pkg::TAP3_DX) <= centre;
-    code[1] = luma(lbuf_q, r + mcadsw_pkg::TAP4_DY, c + mcadsw_pkg::TAP4_DX) <= centre;
-    code[0] = luma(lbuf_q, r + mcadsw_pkg::TAP5_DY, c + mcadsw_pkg::TAP5_DX) <= centre;
-  end
-
-  // ---- Census buffer ------------------------------------------------------------
-  logic [BANKS*ROWS*COLS*CB-1:0] cbuf_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      busy_q    <= 1'b0;
-      bank_q    <= '0;
-      lo_x_q    <= '0;
-      hi_x_q    <= '0;
-      hi_y_q    <= '0;
-      blo_x_q   <= '0;
-      bhi_x_q   <= '0;
-      blo_y_q   <= '0;
-      bhi_y_q   <= '0;
-      in_row_q  <= '0;
-      in_word_q <= '0;
-      kc_q      <= '0;
-      ki_q      <= '0;
-      k_done_q  <= 1'b0;
-      done_o    <= 1'b0;
+      state_q <= IDLE;
+      bank_q  <= '0;
+      lo_x_q  <= '0;
+      hi_x_q  <= '0;
+      lo_y_q  <= '0;
+      hi_y_q  <= '0;
+      nword_q <= '0;
+      ki_q    <= '0;
+      done_o  <= 1'b0;
     end else begin
       done_o <= 1'b0;
-      if (cfg_valid_i && cfg_ready_o) begin
-        busy_q    <= 1'b1;
-        bank_q    <= cfg_bank_i;
-        lo_x_q    <= cfg_lo_x_i;
-        hi_x_q    <= cfg_hi_x_i;
-        hi_y_q    <= cfg_hi_y_i;
-        blo_x_q[32'(cfg_bank_i)*XB +: XB] <= cfg_lo_x_i;
-        bhi_x_q[32'(cfg_bank_i)*XB +: XB] <= cfg_hi_x_i;
-        blo_y_q[32'(cfg_bank_i)*YB +: YB] <= cfg_lo_y_i;
-        bhi_y_q[32'(cfg_bank_i)*YB +: YB] <= cfg_hi_y_i;
-        in_row_q  <= '0;
-        in_word_q <= '0;
-        kc_q      <= {1'b0, cfg_lo_y_i};
-        ki_q      <= cfg_lo_x_i;
-        k_done_q  <= 1'b0;
-      end else if (busy_q) begin
-        if (pix_fire) begin
-          if (in_word_q == WB'(WPR - 1)) begin
-            in_word_q <= '0;
-            in_row_q  <= in_row_q + UB'(1);
-          end else begin
-            in_word_q <= in_word_q + WB'(1);
+      case (state_q)
+        IDLE: if (cfg_valid_i) begin
+          state_q <= LOAD;
+          bank_q  <= cfg_bank_i;
+          lo_x_q  <= cfg_lo_x_i;
+          hi_x_q  <= cfg_hi_x_i;
+          lo_y_q  <= cfg_lo_y_i;
+          hi_y_q  <= cfg_hi_y_i;
+          nword_q <= '0;
+        end
+        LOAD: if (pix_fire) begin
+          nword_q <= nword_q + NB'(1);
+          if (nword_q == NB'(NWORDS - 1)) begin
+            state_q <= KERNEL;
+            ki_q    <= '0;
           end
         end
-        if (k_go) begin
-          if (ki_q == hi_x_q) begin
-            ki_q <= lo_x_q;
-            kc_q <= kc_q + (YB + 1)'(1);
-            if (kc_q == {1'b0, hi_y_q}) k_done_q <= 1'b1;
+        KERNEL: begin
+          if (ki_q == XB'(COLS - 1)) begin
+            state_q <= IDLE;
+            done_o  <= 1'b1;
           end else begin
             ki_q <= ki_q + XB'(1);
           end
         end
-        if (k_done_q && in_done) begin
-          busy_q <= 1'b0;
-          done_o <= 1'b1;
-        end
-      end
+        default: state_q <= IDLE;
+      endcase
     end
   end
 
-  // Line buffer and census buffer are RAMs: written, never reset (a read of a
-  // position before it is written is prevented by the bank handshake).
+  // ---- Input buffer -------------------------------------------------------------------
+  logic [SB-1:0] in_strip;
+  int            in_row;
+  logic          strip_end;
+  assign in_strip  = SB'(32'(nword_q) / LROWS);
+  assign in_row    = 32'(nword_q) % LROWS;
+  assign strip_end = pix_fire && in_row == LROWS - 1;
+
+  logic [(LROWS-1)*32-1:0] stage_q;   // first LROWS - 1 words of a strip
   always_ff @(posedge clk_i) begin
-    if (pix_fire) lbuf_q[((32'(in_row_q) % SLOTS)*LW + 32'(in_word_q)*4)*8 +: 32] <= pix_data_i;
-    if (k_go) cbuf_q[((32'(bank_q)*ROWS + 32'(kc_q))*COLS + 32'(ki_q))*CB +: CB] <= code;
+    if (pix_fire && in_row < LROWS - 1) stage_q[in_row*32 +: 32] <= pix_data_i;
   end
 
-  // ---- Read port: LANES x WINDOW codes, indices clamped to the bank's bounds ---
-  logic [LANES*WINDOW*CB-1:0] rd_d;
-  logic [XB-1:0] rlo_x, rhi_x;
-  logic [YB-1:0] rlo_y, rhi_y;
-  assign rlo_x = blo_x_q[32'(rd_bank_i)*XB +: XB];
-  assign rhi_x = bhi_x_q[32'(rd_bank_i)*XB +: XB];
-  assign rlo_y = blo_y_q[32'(rd_bank_i)*YB +: YB];
-  assign rhi_y = bhi_y_q[32'(rd_bank_i)*YB +: YB];
+  // Luma columns the kernel reads: ic .. ic + 4, ic = clamp(ki, lo_x, hi_x).
+  logic [XB-1:0]      ic;
+  logic [SUB*LW-1:0]  lsub_rd;        // the word each sub-bank presents
+  assign ic = (ki_q < lo_x_q) ? lo_x_q : (ki_q > hi_x_q) ? hi_x_q : ki_q;
+
+  for (genvar b = 0; b < SUB; b++) begin : g_lsub
+    // Strip s writes columns 4s .. 4s+3: sub-bank b receives column 4s + (b % 4)
+    // when s has the parity of b / 4.
+    logic [LW-1:0] wr_col;
+    for (genvar y = 0; y < LROWS - 1; y++) begin : g_row
+      assign wr_col[y*8 +: 8] = stage_q[y*32 + (b % 4)*8 +: 8];
+    end
+    assign wr_col[(LROWS-1)*8 +: 8] = pix_data_i[(b % 4)*8 +: 8];
+
+    logic [LW-1:0] mem_q [LDEPTH];
+    always_ff @(posedge clk_i) begin
+      if (strip_end && 32'(in_strip) % 2 == b / 4) mem_q[32'(in_strip) / 2] <= wr_col;
+    end
+    // Read: the one of columns ic .. ic+4 that lives in this sub-bank, if any.
+    int p;
+    assign p = 32'(ic) + ((b - 32'(ic) % SUB + SUB) % SUB);
+    assign lsub_rd[b*LW +: LW] = mem_q[(p / SUB) % LDEPTH];
+  end
+
+  function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input int p);
+    luma_col = rd[(p % SUB)*LW +: LW];
+  endfunction
+
+  // ---- Kernel: a column of codes (Fig. 2 template, docs/algorithm.md bit order) ---
+  logic [5*LW-1:0] lcols;             // luma columns ic .. ic + 4
+  for (genvar dx = 0; dx < 5; dx++) begin : g_lcol
+    assign lcols[dx*LW +: LW] = luma_col(lsub_rd, 32'(ic) + dx);
+  end
+
+  function automatic logic [7:0] lpix(input logic [5*LW-1:0] c, input int dx, input int y);
+    lpix = c[dx*LW + y*8 +: 8];
+  endfunction
+
+  logic [CWB-1:0] raw;                // codes of rows 0 .. ROWS-1, unclamped
+  for (genvar j = 0; j < ROWS; j++) begin : g_code
+    localparam int R = j + 2;         // luma row of the centre
+    logic [7:0] c;
+    assign c = lpix(lcols, 2, R);
+    assign raw[j*CB + 5] = lpix(lcols, 2 + mcadsw_pkg::TAP0_DX, R + mcadsw_pkg::TAP0_DY) <= c;
+    assign raw[j*CB + 4] = lpix(lcols, 2 + mcadsw_pkg::TAP1_DX, R + mcadsw_pkg::TAP1_DY) <= c;
+    assign raw[j*CB + 3] = lpix(lcols, 2 + mcadsw_pkg::TAP2_DX, R + mcadsw_pkg::TAP2_DY) <= c;
+    assign raw[j*CB + 2] = lpix(lcols, 2 + mcadsw_pkg::TAP3_DX, R + mcadsw_pkg::TAP3_DY) <= c;
+    assign raw[j*CB + 1] = lpix(lcols, 2 + mcadsw_pkg::TAP4_DX, R + mcadsw_pkg::TAP4_DY) <= c;
+    assign raw[j*CB + 0] = lpix(lcols, 2 + mcadsw_pkg::TAP5_DX, R + mcadsw_pkg::TAP5_DY) <= c;
+  end
+
+  // Rows outside the image take the code of the edge row.
+  logic [CB-1:0]  top_code, bottom_code;
+  logic [CWB-1:0] column;
+  assign top_code    = raw[32'(lo_y_q)*CB +: CB];
+  assign bottom_code = raw[32'(hi_y_q)*CB +: CB];
+  assign column[0 +: CB] = (lo_y_q != '0) ? top_code : raw[0 +: CB];  // row 0 is never below
+  for (genvar j = 1; j < ROWS; j++) begin : g_clamp
+    assign column[j*CB +: CB] = (YB'(j) < lo_y_q) ? top_code :
+                                (YB'(j) > hi_y_q) ? bottom_code : raw[j*CB +: CB];
+  end
+
+  // ---- Census buffer and read port ----------------------------------------------------
+  logic [SUB*CWB-1:0] csub_rd;
+  for (genvar b = 0; b < SUB; b++) begin : g_csub
+    logic [CWB-1:0] mem_q [BANKS*CDEPTH];
+    always_ff @(posedge clk_i) begin
+      if (state_q == KERNEL && 32'(ki_q) % SUB == b)
+        mem_q[32'(bank_q)*CDEPTH + 32'(ki_q) / SUB] <= column;
+    end
+    // The lane of rd_col_i .. rd_col_i + 7 that lives in this sub-bank.
+    int p;
+    assign p = 32'(rd_col_i) + ((b - 32'(rd_col_i) % SUB + SUB) % SUB);
+    always_ff @(posedge clk_i) begin
+      if (rd_en_i) csub_rd[b*CWB +: CWB] <= mem_q[(32'(rd_bank_i)*CDEPTH + p / SUB) % (BANKS*CDEPTH)];
+    end
+  end
+
+  logic [YB-1:0] rd_row_q;
+  logic [2:0]    rd_rot_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rd_row_q <= '0;
+      rd_rot_q <= '0;
+    end else if (rd_en_i) begin
+      rd_row_q <= rd_row_i;
+      rd_rot_q <= rd_col_i[2:0];
+    end
+  end
 
   for (genvar l = 0; l < LANES; l++) begin : g_lane
-    logic [XB:0] col_raw;
-    logic [XB-1:0] col;
-    assign col_raw = {1'b0, rd_col_i} + (XB + 1)'(l);
-    assign col = (col_raw < {1'b0, rlo_x}) ? rlo_x :
-                 (col_raw > {1'b0, rhi_x}) ? rhi_x : col_raw[XB-1:0];
+    logic [CWB-1:0] col;
+    assign col = csub_rd[((32'(rd_rot_q) + l) % SUB)*CWB +: CWB];
     for (genvar k = 0; k < WINDOW; k++) begin : g_row
-      logic [YB:0] row_raw;
-      logic [YB-1:0] row;
-      assign row_raw = {1'b0, rd_row_i} + (YB + 1)'(k);
-      assign row = (row_raw < {1'b0, rlo_y}) ? rlo_y :
-                   (row_raw > {1'b0, rhi_y}) ? rhi_y : row_raw[YB-1:0];
-      assign rd_d[(l*WINDOW + k)*CB +: CB] =
-          cbuf_q[((32'(rd_bank_i)*ROWS + 32'(row))*COLS + 32'(col))*CB +: CB];
+      assign rd_data_o[(l*WINDOW + k)*CB +: CB] = col[(32'(rd_row_q) + k)*CB +: CB];
     end
-  end
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) rd_data_o <= '0;
-    else if (rd_en_i) rd_data_o <= rd_d;
   end
 
 endmodule

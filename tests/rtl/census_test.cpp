@@ -1,6 +1,6 @@
 // mcadsw_census (Fig. 10) against census_code(): every position of the census
-// buffer, read through the aggregator's read port, equals the reference code
-// of the clamped image coordinate. Left and right instances, random input
+// buffer, read through the aggregator's read port at every row and column
+// offset, equals the reference code of the clamped image coordinate. Left and right instances, random input
 // stalls, both banks, borders at all four sides, images smaller than the window.
 #include <gtest/gtest.h>
 
@@ -61,14 +61,15 @@ class CensusBench {
     tick();
     t.cfg_valid_i = 0;
 
-    // The luma window at clamped coordinates, as the memory controller reads it.
-    const int wpr = (cols_ + 4 + 3) / 4;
+    // The luma window at clamped coordinates, as the memory controller reads
+    // it: strips of 4 columns, rows 0 .. ROWS+3 each.
+    const int strips = (cols_ + 4 + 3) / 4;
     std::vector<uint32_t> words;
-    for (int u = 0; u < kRows + 4; ++u)
-      for (int wd = 0; wd < wpr; ++wd) {
+    for (int s = 0; s < strips; ++s)
+      for (int u = 0; u < kRows + 4; ++u) {
         uint32_t v = 0;
         for (int b = 0; b < 4; ++b)
-          v |= uint32_t(luma.clamped(w.x0 - 2 + 4 * wd + b, w.y0 - 2 + u)) << (8 * b);
+          v |= uint32_t(luma.clamped(w.x0 - 2 + 4 * s + b, w.y0 - 2 + u)) << (8 * b);
         words.push_back(v);
       }
     size_t next = 0;
