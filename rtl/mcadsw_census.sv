@@ -132,17 +132,22 @@ module mcadsw_census #(
   end
 
   // ---- Input buffer -------------------------------------------------------------------
-  logic [SB-1:0] in_strip;
-  int            in_row;
-  logic          strip_end;
-  assign in_strip  = SB'(32'(nword_q) / LROWS);
-  assign in_row    = 32'(nword_q) % LROWS;
-  assign strip_end = pix_fire && in_row == LROWS - 1;
+  localparam int LRB = $clog2(LROWS);
+  logic [SB-1:0]     in_strip;
+  logic [LRB-1:0]    in_row;
+  logic              strip_end;
+  logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
+  assign in_strip = SB'(32'(nword_q) / LROWS);
+  assign in_row   = LRB'(32'(nword_q) % LROWS);
 
-  logic [(LROWS-1)*32-1:0] stage_q;   // first LROWS - 1 words of a strip
-  always_ff @(posedge clk_i) begin
-    if (pix_fire && in_row < LROWS - 1) stage_q[in_row*32 +: 32] <= pix_data_i;
-  end
+  mcadsw_strip_stage #(.ROWS(LROWS)) u_stage (
+    .clk_i,
+    .wr_i   (pix_fire),
+    .row_i  (in_row),
+    .data_i (pix_data_i),
+    .last_o (strip_end),
+    .cols_o (strip_cols)
+  );
 
   // Luma columns the kernel reads: ic .. ic + 4, ic = clamp(ki, lo_x, hi_x).
   logic [XB-1:0]      ic;
@@ -153,10 +158,7 @@ module mcadsw_census #(
     // Strip s writes columns 4s .. 4s+3: sub-bank b receives column 4s + (b % 4)
     // when s has the parity of b / 4.
     logic [LW-1:0] wr_col;
-    for (genvar y = 0; y < LROWS - 1; y++) begin : g_row
-      assign wr_col[y*8 +: 8] = stage_q[y*32 + (b % 4)*8 +: 8];
-    end
-    assign wr_col[(LROWS-1)*8 +: 8] = pix_data_i[(b % 4)*8 +: 8];
+    assign wr_col = strip_cols[(b % 4)*LW +: LW];
 
     logic [LW-1:0] mem_q [LDEPTH];
     always_ff @(posedge clk_i) begin

@@ -148,31 +148,31 @@ module mcadsw_weight_gen #(
   // kernel reads a whole column at once ("column by column", Fig. 11).
   localparam int CW = ROWS * 8;             // column word
   localparam int SB = $clog2(COLS / 4);
-  logic [1:0]    in_plane;
-  logic [SB-1:0] in_strip;                  // columns 4s .. 4s+3
-  logic          strip_end;                 // last row of a strip arrives
-  int            in_row;
-  assign in_plane  = 2'(32'(nword_q) / (ROWS * WPR));
-  assign in_strip  = SB'((32'(nword_q) / ROWS) % WPR);
-  assign in_row    = 32'(nword_q) % ROWS;
-  assign strip_end = pix_fire && in_row == ROWS - 1;
+  localparam int IRB = $clog2(ROWS);
+  logic [1:0]       in_plane;
+  logic [SB-1:0]    in_strip;               // columns 4s .. 4s+3
+  logic [IRB-1:0]   in_row;
+  logic             strip_end;              // last row of a strip arrives
+  logic [4*CW-1:0]  strip_cols;             // the 4 column words of that strip
+  assign in_plane = 2'(32'(nword_q) / (ROWS * WPR));
+  assign in_strip = SB'((32'(nword_q) / ROWS) % WPR);
+  assign in_row   = IRB'(32'(nword_q) % ROWS);
 
-  // Staging register: the first ROWS - 1 words of a strip.
-  logic [(ROWS-1)*32-1:0] stage_q;
-  always_ff @(posedge clk_i) begin
-    if (pix_fire && in_row < ROWS - 1) stage_q[in_row*32 +: 32] <= pix_data_i;
-  end
+  mcadsw_strip_stage #(.ROWS(ROWS)) u_stage (
+    .clk_i,
+    .wr_i   (pix_fire),
+    .row_i  (in_row),
+    .data_i (pix_data_i),
+    .last_o (strip_end),
+    .cols_o (strip_cols)
+  );
 
   logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
   logic [4*3*CW-1:0] bank_rd;
 
   for (genvar b = 0; b < 4; b++) begin : g_ibank
-    // The column word of column 4s + b: byte b of every row of the strip.
-    logic [CW-1:0] wr_col;
-    for (genvar y = 0; y < ROWS - 1; y++) begin : g_row
-      assign wr_col[y*8 +: 8] = stage_q[y*32 + b*8 +: 8];
-    end
-    assign wr_col[(ROWS-1)*8 +: 8] = pix_data_i[b*8 +: 8];
+    logic [CW-1:0] wr_col;                  // column 4s + b
+    assign wr_col = strip_cols[b*CW +: CW];
 
     logic [CW-1:0] y_q [COLS/4];
     logic [CW-1:0] u_q [COLS/4];

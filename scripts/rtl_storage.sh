@@ -21,9 +21,10 @@ measure() {  # name top chparams files...
   rows+=("$name|$mem|$ff")
   echo "measured $name" >&2
 }
-measure "census (left, 48 cols)" mcadsw_census "" mcadsw_census.sv
-measure "census (right, $((48 + dmax - 1)) cols)" mcadsw_census "-set COLS $((48 + dmax - 1))" mcadsw_census.sv
-measure "weight generator" mcadsw_weight_gen "" mcadsw_weight_gen.sv
+measure "census (left, 48 cols)" mcadsw_census "" mcadsw_strip_stage.sv mcadsw_census.sv
+measure "census (right, $((48 + dmax - 1)) cols)" mcadsw_census "-set COLS $((48 + dmax - 1))" \
+  mcadsw_strip_stage.sv mcadsw_census.sv
+measure "weight generator" mcadsw_weight_gen "" mcadsw_strip_stage.sv mcadsw_weight_gen.sv
 measure "cost aggregator + ping-pong + WTA" mcadsw_cost_agg "" \
   mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv mcadsw_cost_agg.sv
 printf "| block | memory bits | flip-flop bits | total bits | kB |\n|---|---|---|---|---|\n"

@@ -12,6 +12,7 @@
 #include "Vcensus_r.h"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
+#include "rtl_bench.hpp"
 #include "vbits.hpp"
 
 namespace mcadsw {
@@ -72,26 +73,11 @@ class CensusBench {
           v |= uint32_t(luma.clamped(w.x0 - 2 + 4 * s + b, w.y0 - 2 + u)) << (8 * b);
         words.push_back(v);
       }
-    size_t next = 0;
-    int done = 0;
-    long cycles = 0;
     const long limit = 20L * kRows * cols_ + 10000;  // never hang
-    for (; cycles < limit; ++cycles) {
-      const bool offer = next < words.size() && !std::bernoulli_distribution(stall_prob)(rng);
-      t.pix_valid_i = offer;
-      if (offer) t.pix_data_i = words[next];
-      t.clk_i = 0;
-      t.eval();
-      if (offer && t.pix_ready_o) ++next;
-      done += t.done_o;
-      if (done && !t.busy_o) break;
-      t.clk_i = 1;
-      t.eval();
-    }
-    t.pix_valid_i = 0;
-    EXPECT_EQ(next, words.size()) << "not every luma word was consumed";
-    EXPECT_EQ(done, 1) << "done must pulse exactly once";
-    return cycles;
+    const sim::StreamResult r = sim::stream_words(t, words, stall_prob, rng, limit);
+    EXPECT_EQ(r.consumed, words.size()) << "not every input word was consumed";
+    EXPECT_EQ(r.done_pulses, 1) << "done must pulse exactly once";
+    return r.cycles;
   }
 
   // Reads every position of `bank` and compares it with the reference.
@@ -125,12 +111,7 @@ class CensusBench {
   }
 
  private:
-  void tick() {
-    top_->clk_i = 0;
-    top_->eval();
-    top_->clk_i = 1;
-    top_->eval();
-  }
+  void tick() { sim::tick(*top_); }
   int cols_;
   std::unique_ptr<V> top_ = std::make_unique<V>();
 };

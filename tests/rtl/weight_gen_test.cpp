@@ -12,6 +12,7 @@
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
+#include "rtl_bench.hpp"
 #include "vbits.hpp"
 
 namespace mcadsw {
@@ -65,25 +66,10 @@ class WeightGenBench {
           for (int b = 0; b < 4; ++b) v |= uint32_t(p->clamped(x0 + 4 * s + b, y0 + y)) << (8 * b);
           words.push_back(v);
         }
-    size_t next = 0;
-    int done = 0;
-    long cycles = 0;
-    for (; cycles < 100000; ++cycles) {  // never hang
-      const bool offer = next < words.size() && !std::bernoulli_distribution(c.stall)(rng);
-      t.pix_valid_i = offer;
-      if (offer) t.pix_data_i = words[next];
-      t.clk_i = 0;
-      t.eval();
-      if (offer && t.pix_ready_o) ++next;
-      done += t.done_o;
-      if (done && !t.busy_o) break;
-      t.clk_i = 1;
-      t.eval();
-    }
-    t.pix_valid_i = 0;
-    EXPECT_EQ(next, words.size());
-    EXPECT_EQ(done, 1);
-    return cycles;
+    const sim::StreamResult r = sim::stream_words(t, words, c.stall, rng, 100000);  // limit: never hang
+    EXPECT_EQ(r.consumed, words.size()) << "not every input word was consumed";
+    EXPECT_EQ(r.done_pulses, 1) << "done must pulse exactly once";
+    return r.cycles;
   }
 
   std::string check(const Case& c, long* compared) {
@@ -140,12 +126,7 @@ class WeightGenBench {
   }
 
  private:
-  void tick() {
-    top_->clk_i = 0;
-    top_->eval();
-    top_->clk_i = 1;
-    top_->eval();
-  }
+  void tick() { sim::tick(*top_); }
   std::unique_ptr<Vmcadsw_weight_gen> top_ = std::make_unique<Vmcadsw_weight_gen>();
 };
 

@@ -1,0 +1,47 @@
+// Helpers shared by the RTL block benches.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace mcadsw::sim {
+
+template <typename V>
+void tick(V& t) {
+  t.clk_i = 0;
+  t.eval();
+  t.clk_i = 1;
+  t.eval();
+}
+
+struct StreamResult {
+  size_t consumed = 0;   // words accepted
+  int done_pulses = 0;
+  long cycles = 0;       // until done and not busy
+};
+
+// Streams `words` into a block's pix_valid_i/pix_ready_o/pix_data_i input,
+// withholding valid with probability `stall` each cycle (valid never depends
+// on ready), until the block pulses done_o and drops busy_o, or `limit` cycles.
+template <typename V>
+StreamResult stream_words(V& t, const std::vector<uint32_t>& words, double stall,
+                          std::mt19937& rng, long limit) {
+  StreamResult r;
+  for (; r.cycles < limit; ++r.cycles) {
+    const bool offer = r.consumed < words.size() && !std::bernoulli_distribution(stall)(rng);
+    t.pix_valid_i = offer;
+    if (offer) t.pix_data_i = words[r.consumed];
+    t.clk_i = 0;
+    t.eval();
+    if (offer && t.pix_ready_o) ++r.consumed;
+    r.done_pulses += t.done_o;
+    if (r.done_pulses && !t.busy_o) break;
+    t.clk_i = 1;
+    t.eval();
+  }
+  t.pix_valid_i = 0;
+  return r;
+}
+
+}  // namespace mcadsw::sim
