@@ -1,0 +1,117 @@
+// Depth FIFO (paper Fig. 9): collects the disparities the cost aggregator
+// emits (HAGG a cycle, a block row of BLOCK pixels at a time), and writes each
+// finished row to the output plane through the memory controller, as aligned
+// 32-bit words with byte enables (pixels outside the image are dropped).
+//
+// The scheduler pushes a descriptor (output row address, first column, pixel
+// count) for every row job it starts, in job order; rows leave the aggregator
+// in that order. It starts a job only while space_o is high, so the
+// aggregator, which has no back-pressure, never finds the FIFO full.
+`default_nettype none
+
+module mcadsw_depth_fifo #(
+  parameter int BLOCK = mcadsw_pkg::BLOCK,
+  parameter int HAGG  = mcadsw_pkg::HAGG,
+  parameter int DB    = mcadsw_pkg::DISP_BITS,
+  parameter int ROWSQ = 4,                    // rows queued or in flight
+  parameter int AW    = 32,
+  parameter int CW    = 12,
+  parameter int GB    = $clog2(BLOCK / HAGG)
+) (
+  input  logic               clk_i,
+  input  logic               rst_ni,
+  // Descriptors from the scheduler, one per row job
+  input  logic               desc_push_i,
+  input  logic [AW-1:0]      desc_addr_i,    // byte address of output pixel (x, y) with x = 0
+  input  logic [CW-1:0]      desc_x_i,       // first column of the block
+  input  logic [4:0]         desc_n_i,       // pixels of the row inside the image, 1..BLOCK
+  output logic               space_o,        // another row job may start
+  output logic               empty_o,        // nothing queued, nothing to write
+  // Disparities from the cost aggregator
+  input  logic               disp_valid_i,
+  input  logic [GB-1:0]      disp_grp_i,
+  input  logic [HAGG*DB-1:0] disp_i,
+  // Writes to the memory controller
+  output logic               wr_req_o,
+  output logic [AW-1:0]      wr_addr_o,
+  output logic [3:0]         wr_be_o,
+  output logic [31:0]        wr_wdata_o,
+  input  logic               wr_gnt_i
+);
+
+  localparam int QB = $clog2(ROWSQ + 1);
+  localparam int PB = (ROWSQ > 1) ? $clog2(ROWSQ) : 1;
+  localparam int DESC = AW + CW + 5;
+
+  // Row slots: descriptor and the BLOCK disparities of each queued row.
+  logic [ROWSQ*DESC-1:0]      desc_q;
+  logic [ROWSQ*BLOCK*8-1:0]   pix_q;
+  logic [PB-1:0]              head_q, tail_q, fill_q;  // oldest row, next free, row being filled
+  logic [QB-1:0]              count_q;                  // rows with a descriptor
+  logic [QB-1:0]              ready_q;                  // rows complete, not yet written
+  logic [4:0]                 wofs_q;                   // next word, bytes after the first
+
+  assign space_o = count_q != QB'(ROWSQ);
+  assign empty_o = count_q == '0;
+
+  // ---- The row at the head, written word by word -----------------------------------
+  logic [AW-1:0] h_addr;
+  logic [CW-1:0] h_x;
+  logic [4:0]    h_n;
+  logic [CW:0]   h_end;                // one past the last column
+  assign {h_addr, h_x, h_n} = desc_q[32'(head_q)*DESC +: DESC];
+  assign h_end = {1'b0, h_x} + (CW + 1)'(h_n);
+
+  logic [CW:0] word_x;                 // first column of the word being written
+  assign word_x = {1'b0, h_x[CW-1:2], 2'b00} + (CW + 1)'(wofs_q);
+
+  for (genvar b = 0; b < 4; b++) begin : g_byte
+    logic [CW:0] x;
+    assign x = word_x + (CW + 1)'(b);
+    assign wr_be_o[b] = x >= {1'b0, h_x} && x < h_end;
+    assign wr_wdata_o[b*8 +: 8] =
+        wr_be_o[b] ? pix_q[(32'(head_q)*BLOCK + 32'(x) - 32'(h_x))*8 +: 8] : 8'h00;
+  end
+  assign wr_req_o  = ready_q != '0;
+  assign wr_addr_o = h_addr + AW'(word_x);
+
+  logic row_written;
+  assign row_written = wr_req_o && wr_gnt_i && word_x + (CW + 1)'(4) >= h_end;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      desc_q  <= '0;
+      pix_q   <= '0;
+      head_q  <= '0;
+      tail_q  <= '0;
+      fill_q  <= '0;
+      count_q <= '0;
+      ready_q <= '0;
+      wofs_q  <= '0;
+    end else begin
+      if (desc_push_i) begin
+        desc_q[32'(tail_q)*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
+        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
+      end
+      if (disp_valid_i) begin
+        for (int m = 0; m < HAGG; m++)
+          pix_q[(32'(fill_q)*BLOCK + 32'(disp_grp_i)*HAGG + m)*8 +: 8] <=
+              {{(8 - DB){1'b0}}, disp_i[m*DB +: DB]};
+        if (disp_grp_i == GB'(BLOCK / HAGG - 1)) fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
+      end
+      if (wr_req_o && wr_gnt_i) begin
+        wofs_q <= wofs_q + 5'd4;
+        if (row_written) begin
+          head_q <= PB'((32'(head_q) + 1) % ROWSQ);
+          wofs_q <= '0;
+        end
+      end
+      count_q <= count_q + QB'(desc_push_i) - QB'(row_written);
+      ready_q <= ready_q + QB'(disp_valid_i && disp_grp_i == GB'(BLOCK / HAGG - 1))
+                         - QB'(row_written);
+    end
+  end
+
+endmodule
+
+`default_nettype wire

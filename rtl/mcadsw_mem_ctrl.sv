@@ -1,0 +1,109 @@
+// Memory controller (paper Sec. V-E): one 32-bit external memory port shared
+// by NR read requestors (census left, census right, weight generator) and the
+// depth FIFO's writes. The depth FIFO has fixed highest priority (suspending
+// the cost aggregator is expensive); the readers share by round robin.
+//
+// External port (like ibex's data port): req_o/gnt_i handshake with we_o,
+// be_o, addr_o, wdata_o; each granted read returns rdata_i with rvalid_i, in
+// order, one or more cycles later; writes return nothing. The requestor of
+// each read in flight is kept in order, so responses are routed back.
+`default_nettype none
+
+module mcadsw_mem_ctrl #(
+  parameter int NR   = 3,      // read requestors
+  parameter int OUTS = 16,     // reads in flight on the external port
+  parameter int AW   = 32
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  // Readers
+  input  logic [NR-1:0]    rd_req_i,
+  input  logic [NR*AW-1:0] rd_addr_i,
+  output logic [NR-1:0]    rd_gnt_o,
+  output logic [NR-1:0]    rd_rvalid_o,
+  output logic [31:0]      rd_rdata_o,   // shared: valid for the reader with rd_rvalid_o
+  // Depth FIFO writes
+  input  logic             wr_req_i,
+  input  logic [AW-1:0]    wr_addr_i,
+  input  logic [3:0]       wr_be_i,
+  input  logic [31:0]      wr_wdata_i,
+  output logic             wr_gnt_o,
+  // External memory
+  output logic             mem_req_o,
+  input  logic             mem_gnt_i,
+  output logic             mem_we_o,
+  output logic [3:0]       mem_be_o,
+  output logic [AW-1:0]    mem_addr_o,
+  output logic [31:0]      mem_wdata_o,
+  input  logic             mem_rvalid_i,
+  input  logic [31:0]      mem_rdata_i
+);
+
+  localparam int IB = (NR > 1) ? $clog2(NR) : 1;
+  localparam int OB = $clog2(OUTS + 1);
+
+  // ---- Round-robin choice among readers, after the last one served ------------
+  logic [IB-1:0] last_q, pick;
+  logic          any_rd;
+  always_comb begin
+    pick   = last_q;
+    any_rd = 1'b0;
+    for (int i = 1; i <= NR; i++) begin
+      logic [IB-1:0] r;
+      r = IB'((32'(last_q) + i) % NR);
+      if (!any_rd && rd_req_i[r]) begin
+        pick   = IB'(r);
+        any_rd = 1'b1;
+      end
+    end
+  end
+
+  // ---- Reads in flight: requestor ids in order ------------------------------------
+  logic [OUTS*IB-1:0] ids_q;
+  logic [OB-1:0]      nids_q;
+  logic               rd_ok;          // room to track another read
+  assign rd_ok = nids_q != OB'(OUTS);
+
+  logic write_sel, read_sel;
+  assign write_sel = wr_req_i;                       // fixed highest priority
+  assign read_sel  = !wr_req_i && any_rd && rd_ok;
+
+  assign mem_req_o   = write_sel || read_sel;
+  assign mem_we_o    = write_sel;
+  assign mem_be_o    = write_sel ? wr_be_i : 4'hf;
+  assign mem_addr_o  = write_sel ? wr_addr_i : rd_addr_i[32'(pick)*AW +: AW];
+  assign mem_wdata_o = wr_wdata_i;
+  assign wr_gnt_o    = write_sel && mem_gnt_i;
+  for (genvar r = 0; r < NR; r++) begin : g_gnt
+    assign rd_gnt_o[r]    = read_sel && mem_gnt_i && pick == IB'(r);
+    assign rd_rvalid_o[r] = mem_rvalid_i && ids_q[IB-1:0] == IB'(r);
+  end
+  assign rd_rdata_o = mem_rdata_i;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      last_q <= '0;
+      ids_q  <= '0;
+      nids_q <= '0;
+    end else begin
+      logic [OUTS*IB-1:0] ids;
+      logic [OB-1:0]      n;
+      ids = ids_q;
+      n   = nids_q;
+      if (mem_rvalid_i) begin
+        ids = ids >> IB;
+        n   = n - OB'(1);
+      end
+      if (read_sel && mem_gnt_i) begin
+        ids[32'(n)*IB +: IB] = pick;
+        n = n + OB'(1);
+        last_q <= pick;
+      end
+      ids_q  <= ids;
+      nids_q <= n;
+    end
+  end
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,363 @@
+// MCADSW disparity engine, top level (paper Fig. 9): memory controller with a
+// 32-bit external memory port, block scheduler, three window readers, the
+// left and right mini-census transformers, the weight generator, the cost
+// aggregator with WTA, and the depth FIFO. docs/architecture.md describes the
+// blocks; docs/memory_map.md the configuration, status and memory layout.
+`default_nettype none
+
+module mcadsw_top #(
+  parameter int AW   = 32,
+  parameter int CW   = 12,                          // width / height / coordinate bits
+  parameter int DMAX = mcadsw_pkg::DMAX,
+  parameter int NB   = $clog2(DMAX + 1),
+  parameter int NTHR = mcadsw_pkg::WTHRESHOLDS,
+  parameter int DCB  = mcadsw_pkg::COLOR_DIST_BITS
+) (
+  input  logic                clk_i,
+  input  logic                rst_ni,
+  // Configuration, sampled when start_i is accepted
+  input  logic [AW-1:0]       cfg_base_ly_i,   // left Y plane
+  input  logic [AW-1:0]       cfg_base_lu_i,   // left U plane
+  input  logic [AW-1:0]       cfg_base_lv_i,   // left V plane
+  input  logic [AW-1:0]       cfg_base_ry_i,   // right Y plane
+  input  logic [AW-1:0]       cfg_base_out_i,  // disparity plane
+  input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of every plane
+  input  logic [CW-1:0]       cfg_width_i,
+  input  logic [CW-1:0]       cfg_height_i,
+  input  logic [NB-1:0]       cfg_disp_i,      // D
+  input  logic [NTHR*DCB-1:0] cfg_thr_i,       // weight table thresholds
+  input  logic                start_i,         // ignored while busy_o
+  // Status
+  output logic                busy_o,
+  output logic                done_o,          // frame finished (or rejected) since start
+  output logic                error_o,         // configuration rejected; nothing was written
+  output logic [2:0]          error_code_o,    // docs/memory_map.md
+  output logic [31:0]         cnt_cycles_o,
+  output logic [31:0]         cnt_words_read_o,
+  output logic [31:0]         cnt_words_written_o,
+  output logic [31:0]         cnt_stall_o,     // cycles with a request and no grant
+  // External memory
+  output logic                mem_req_o,
+  input  logic                mem_gnt_i,
+  output logic                mem_we_o,
+  output logic [3:0]          mem_be_o,
+  output logic [AW-1:0]       mem_addr_o,
+  output logic [31:0]         mem_wdata_o,
+  input  logic                mem_rvalid_i,
+  input  logic [31:0]         mem_rdata_i
+);
+
+  localparam int COLS   = mcadsw_pkg::BLOCK_COLS;      // 48
+  localparam int RCOLS  = COLS + DMAX - 1;            // 111
+  localparam int LANES  = mcadsw_pkg::LANES;
+  localparam int HAGG   = mcadsw_pkg::HAGG;
+  localparam int WINDOW = mcadsw_pkg::WINDOW;
+  localparam int CB     = mcadsw_pkg::CENSUS_BITS;
+  localparam int WB     = mcadsw_pkg::WEIGHT_CODE_BITS;
+  localparam int DB     = mcadsw_pkg::DISP_BITS;
+
+  // ---- Configuration registers and checks ------------------------------------------
+  logic [AW-1:0]       base_ly_q, base_lu_q, base_lv_q, base_ry_q, base_out_q, stride_q;
+  logic [CW-1:0]       width_q, height_q;
+  logic [NB-1:0]       disp_q;
+  logic [NTHR*DCB-1:0] thr_q;
+  logic                sched_busy, sched_done, accept;
+  logic [2:0]          check;
+
+  // Error codes: 1 width, 2 height, 3 D, 4 stride, 5 base alignment, 6 output overlaps an input.
+  function automatic logic overlaps(input logic [AW-1:0] a, input logic [AW-1:0] b,
+                                    input logic [AW:0] size);
+    overlaps = ({1'b0, a} < {1'b0, b} + size) && ({1'b0, b} < {1'b0, a} + size);
+  endfunction
+
+  always_comb begin
+    logic [AW:0] size;
+    size  = (AW + 1)'(cfg_stride_i) * (AW + 1)'(cfg_height_i);
+    check = 3'd0;
+    if (cfg_width_i == '0 || 32'(cfg_width_i) > mcadsw_pkg::MAX_WIDTH) check = 3'd1;
+    else if (cfg_height_i == '0 || 32'(cfg_height_i) > mcadsw_pkg::MAX_HEIGHT) check = 3'd2;
+    else if (cfg_disp_i == '0 || 32'(cfg_disp_i) > DMAX) check = 3'd3;
+    else if (cfg_stride_i < AW'(cfg_width_i) || cfg_stride_i[1:0] != 2'b00) check = 3'd4;
+    else if (((cfg_base_ly_i | cfg_base_lu_i | cfg_base_lv_i | cfg_base_ry_i |
+               cfg_base_out_i) & AW'(3)) != '0) check = 3'd5;
+    else if (overlaps(cfg_base_out_i, cfg_base_ly_i, size) ||
+             overlaps(cfg_base_out_i, cfg_base_lu_i, size) ||
+             overlaps(cfg_base_out_i, cfg_base_lv_i, size) ||
+             overlaps(cfg_base_out_i, cfg_base_ry_i, size)) check = 3'd6;
+  end
+
+  assign accept = start_i && !sched_busy;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      {base_ly_q, base_lu_q, base_lv_q, base_ry_q, base_out_q, stride_q} <= '0;
+      {width_q, height_q, disp_q, thr_q} <= '0;
+      done_o       <= 1'b0;
+      error_o      <= 1'b0;
+      error_code_o <= '0;
+    end else begin
+      if (accept) begin
+        base_ly_q  <= cfg_base_ly_i;
+        base_lu_q  <= cfg_base_lu_i;
+        base_lv_q  <= cfg_base_lv_i;
+        base_ry_q  <= cfg_base_ry_i;
+        base_out_q <= cfg_base_out_i;
+        stride_q   <= cfg_stride_i;
+        width_q    <= cfg_width_i;
+        height_q   <= cfg_height_i;
+        disp_q     <= cfg_disp_i;
+        thr_q      <= cfg_thr_i;
+        error_o      <= check != 3'd0;
+        error_code_o <= check;
+        done_o       <= check != 3'd0;
+      end
+      if (sched_done) done_o <= 1'b1;
+    end
+  end
+
+  // The scheduler starts the cycle after a valid configuration is registered.
+  logic go_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) go_q <= 1'b0;
+    else go_q <= accept && check == 3'd0;
+  end
+
+  // ---- Counters --------------------------------------------------------------------------
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      cnt_cycles_o        <= '0;
+      cnt_words_read_o    <= '0;
+      cnt_words_written_o <= '0;
+      cnt_stall_o         <= '0;
+    end else if (accept) begin
+      cnt_cycles_o        <= '0;
+      cnt_words_read_o    <= '0;
+      cnt_words_written_o <= '0;
+      cnt_stall_o         <= '0;
+    end else if (sched_busy) begin
+      cnt_cycles_o        <= cnt_cycles_o + 32'd1;
+      cnt_words_read_o    <= cnt_words_read_o + 32'(mem_req_o && mem_gnt_i && !mem_we_o);
+      cnt_words_written_o <= cnt_words_written_o + 32'(mem_req_o && mem_gnt_i && mem_we_o);
+      cnt_stall_o         <= cnt_stall_o + 32'(mem_req_o && !mem_gnt_i);
+    end
+  end
+  assign busy_o = sched_busy || go_q;
+
+  // ---- Block scheduler -----------------------------------------------------------------
+  logic               prep_start, prep_bank, agg_bank;
+  logic signed [CW:0] prep_x0, prep_y0;
+  logic               prep_done;
+  logic               job_valid, job_ready, agg_busy;
+  logic [4:0]         job_row;
+  logic [5:0]         job_last_col;
+  logic               desc_push, fifo_space, fifo_empty;
+  logic [AW-1:0]      desc_addr;
+  logic [CW-1:0]      desc_x;
+  logic [4:0]         desc_n;
+
+  mcadsw_scheduler #(.CW(CW), .AW(AW)) u_scheduler (
+    .clk_i, .rst_ni,
+    .start_i        (go_q),
+    .width_i        (width_q),
+    .height_i       (height_q),
+    .out_base_i     (base_out_q),
+    .stride_i       (stride_q),
+    .busy_o         (sched_busy),
+    .done_o         (sched_done),
+    .prep_start_o   (prep_start),
+    .prep_bank_o    (prep_bank),
+    .prep_x0_o      (prep_x0),
+    .prep_y0_o      (prep_y0),
+    .prep_done_i    (prep_done),
+    .agg_bank_o     (agg_bank),
+    .job_valid_o    (job_valid),
+    .job_ready_i    (job_ready),
+    .job_row_o      (job_row),
+    .job_last_col_o (job_last_col),
+    .agg_busy_i     (agg_busy),
+    .desc_push_o    (desc_push),
+    .desc_addr_o    (desc_addr),
+    .desc_x_o       (desc_x),
+    .desc_n_o       (desc_n),
+    .fifo_space_i   (fifo_space),
+    .fifo_empty_i   (fifo_empty)
+  );
+
+  // In-image bounds of a window starting at x0 (size n) in an image of size w.
+  function automatic logic [6:0] lo_bound(input logic signed [CW:0] x0);
+    lo_bound = (x0 < 0) ? 7'(-x0) : 7'd0;
+  endfunction
+  function automatic logic [6:0] hi_bound(input logic signed [CW:0] x0, input logic [CW-1:0] w,
+                                          input int n);
+    logic signed [CW+1:0] h;
+    h = $signed({2'b00, w}) - 1 - x0;
+    hi_bound = (32'(h) > n - 1) ? 7'(n - 1) : 7'(h);
+  endfunction
+
+  logic signed [CW:0] rx0;     // right census window origin
+  assign rx0 = prep_x0 - (CW + 1)'(DMAX - 1);
+
+  // ---- Memory controller and window readers ----------------------------------------------
+  localparam int NR = 3;
+  logic [NR-1:0]    rd_req, rd_gnt, rd_rvalid;
+  logic [NR*AW-1:0] rd_addr;
+  logic [31:0]      rd_rdata;
+  logic             wr_req, wr_gnt;
+  logic [AW-1:0]    wr_addr;
+  logic [3:0]       wr_be;
+  logic [31:0]      wr_wdata;
+
+  mcadsw_mem_ctrl #(.NR(NR), .AW(AW)) u_mem_ctrl (
+    .clk_i, .rst_ni,
+    .rd_req_i (rd_req), .rd_addr_i (rd_addr), .rd_gnt_o (rd_gnt),
+    .rd_rvalid_o (rd_rvalid), .rd_rdata_o (rd_rdata),
+    .wr_req_i (wr_req), .wr_addr_i (wr_addr), .wr_be_i (wr_be), .wr_wdata_i (wr_wdata),
+    .wr_gnt_o (wr_gnt),
+    .mem_req_o, .mem_gnt_i, .mem_we_o, .mem_be_o, .mem_addr_o, .mem_wdata_o,
+    .mem_rvalid_i, .mem_rdata_i
+  );
+
+  logic        lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
+  logic [31:0] lpix, rpix, wpix;
+  logic        lrd_busy_unused, rrd_busy_unused, wrd_busy_unused;
+
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((COLS + 4 + 3) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  u_rd_census_l (
+    .clk_i, .rst_ni,
+    .start_i (prep_start), .base_i (base_ly_q), .stride_i (stride_q),
+    .width_i (width_q), .height_i (height_q),
+    .x0_i (prep_x0 - (CW + 1)'(2)), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .busy_o (lrd_busy_unused),
+    .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .gnt_i (rd_gnt[0]),
+    .rvalid_i (rd_rvalid[0]), .rdata_i (rd_rdata),
+    .pix_valid_o (lpix_valid), .pix_ready_i (lpix_ready), .pix_data_o (lpix)
+  );
+
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((RCOLS + 4 + 3) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  u_rd_census_r (
+    .clk_i, .rst_ni,
+    .start_i (prep_start), .base_i (base_ry_q), .stride_i (stride_q),
+    .width_i (width_q), .height_i (height_q),
+    .x0_i (rx0 - (CW + 1)'(2)), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .busy_o (rrd_busy_unused),
+    .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .gnt_i (rd_gnt[1]),
+    .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
+    .pix_valid_o (rpix_valid), .pix_ready_i (rpix_ready), .pix_data_o (rpix)
+  );
+
+  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(COLS / 4), .PLANES(3), .CW(CW), .AW(AW))
+  u_rd_weight (
+    .clk_i, .rst_ni,
+    .start_i (prep_start), .base_i ({base_lv_q, base_lu_q, base_ly_q}), .stride_i (stride_q),
+    .width_i (width_q), .height_i (height_q),
+    .x0_i (prep_x0), .y0_i (prep_y0),
+    .busy_o (wrd_busy_unused),
+    .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .gnt_i (rd_gnt[2]),
+    .rvalid_i (rd_rvalid[2]), .rdata_i (rd_rdata),
+    .pix_valid_o (wpix_valid), .pix_ready_i (wpix_ready), .pix_data_o (wpix)
+  );
+
+  // ---- Census transformers and weight generator ---------------------------------------------
+  logic cl_done, cr_done, wg_done;
+  logic cl_done_q, cr_done_q, wg_done_q;
+  logic cl_busy_unused, cr_busy_unused, wg_busy_unused;
+  logic cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) {cl_done_q, cr_done_q, wg_done_q} <= '0;
+    else if (prep_start) {cl_done_q, cr_done_q, wg_done_q} <= '0;
+    else begin
+      if (cl_done) cl_done_q <= 1'b1;
+      if (cr_done) cr_done_q <= 1'b1;
+      if (wg_done) wg_done_q <= 1'b1;
+    end
+  end
+  assign prep_done = cl_done_q && cr_done_q && wg_done_q;
+
+  logic                       vrd_en, hrd_en;
+  logic [4:0]                 vrd_row, hrd_row;
+  logic [2:0]                 vrd_grp, hrd_grp;
+  logic [DB-1:0]              vrd_d;
+  logic [LANES*WINDOW*CB-1:0] cen_l, cen_r;
+  logic [LANES*WINDOW*WB-1:0] wv;
+  logic [HAGG*WINDOW*WB-1:0]  wh;
+
+  mcadsw_census #(.COLS(COLS)) u_census_l (
+    .clk_i, .rst_ni,
+    .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
+    .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
+    .done_o (cl_done), .busy_o (cl_busy_unused),
+    .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
+    .rd_col_i (6'(32'(vrd_grp) * LANES)), .rd_data_o (cen_l)
+  );
+
+  mcadsw_census #(.COLS(RCOLS)) u_census_r (
+    .clk_i, .rst_ni,
+    .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
+    .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
+    .done_o (cr_done), .busy_o (cr_busy_unused),
+    .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
+    .rd_col_i (7'(32'(vrd_grp) * LANES + DMAX - 1 - 32'(vrd_d))), .rd_data_o (cen_r)
+  );
+
+  mcadsw_weight_gen u_weight_gen (
+    .clk_i, .rst_ni,
+    .thr_i (thr_q),
+    .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
+    .done_o (wg_done), .busy_o (wg_busy_unused),
+    .vrd_en_i (vrd_en), .vrd_bank_i (agg_bank), .vrd_row_i (vrd_row),
+    .vrd_col_i (6'(32'(vrd_grp) * LANES)), .wv_o (wv),
+    .hrd_en_i (hrd_en), .hrd_bank_i (agg_bank), .hrd_row_i (hrd_row),
+    .hrd_col_i (5'(32'(hrd_grp) * HAGG)), .wh_o (wh)
+  );
+
+  // ---- Cost aggregator, WTA and depth FIFO ---------------------------------------------------
+  logic                 disp_valid;
+  logic [4:0]           disp_row_unused;
+  logic [2:0]           disp_grp;
+  logic [HAGG*DB-1:0]   disp;
+  logic                 mon_unused;
+  logic                 mon_ev_valid, mon_fc_valid;
+  logic [4:0]           mon_ev_row, mon_fc_row;
+  logic [DB-1:0]        mon_ev_d, mon_fc_d;
+  logic [2:0]           mon_ev_grp, mon_fc_grp;
+  logic [LANES*mcadsw_pkg::VCOST_BITS-1:0] mon_ev;
+  logic [HAGG*mcadsw_pkg::FCOST_BITS-1:0]  mon_fc;
+
+  mcadsw_cost_agg u_cost_agg (
+    .clk_i, .rst_ni,
+    .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
+    .job_disp_i (disp_q), .job_last_col_i (job_last_col),
+    .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d),
+    .cen_l_i (cen_l), .cen_r_i (cen_r), .wv_i (wv),
+    .hrd_en_o (hrd_en), .hrd_row_o (hrd_row), .hrd_grp_o (hrd_grp), .wh_i (wh),
+    .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
+    .disp_o (disp), .busy_o (agg_busy),
+    .mon_ev_valid_o (mon_ev_valid), .mon_ev_row_o (mon_ev_row), .mon_ev_d_o (mon_ev_d),
+    .mon_ev_grp_o (mon_ev_grp), .mon_ev_o (mon_ev),
+    .mon_fc_valid_o (mon_fc_valid), .mon_fc_row_o (mon_fc_row), .mon_fc_d_o (mon_fc_d),
+    .mon_fc_grp_o (mon_fc_grp), .mon_fc_o (mon_fc)
+  );
+  // The monitor taps are for the block-level bench; unused here.
+  assign mon_unused = ^{mon_ev_valid, mon_ev_row, mon_ev_d, mon_ev_grp, mon_ev,
+                        mon_fc_valid, mon_fc_row, mon_fc_d, mon_fc_grp, mon_fc,
+                        lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
+                        cl_busy_unused, cr_busy_unused, wg_busy_unused,
+                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused};
+
+  mcadsw_depth_fifo #(.AW(AW), .CW(CW)) u_depth_fifo (
+    .clk_i, .rst_ni,
+    .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x), .desc_n_i (desc_n),
+    .space_o (fifo_space), .empty_o (fifo_empty),
+    .disp_valid_i (disp_valid), .disp_grp_i (disp_grp), .disp_i (disp),
+    .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata),
+    .wr_gnt_i (wr_gnt)
+  );
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,196 @@
+#include "engine_bench.hpp"
+
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "Vmcadsw_top.h"
+#include "vbits.hpp"
+
+namespace mcadsw::sim {
+namespace {
+
+// Memory layout of a frame (docs/memory_map.md): five planes of stride bytes
+// per row, each starting on a 4 KiB boundary after a 4 KiB guard.
+struct Layout {
+  uint32_t stride, plane, ly, lu, lv, ry, out, total;
+  Layout(int w, int h) {
+    stride = uint32_t((w + 3) / 4 * 4);
+    plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
+    ly = 4096;
+    lu = ly + plane;
+    lv = lu + plane;
+    ry = lv + plane;
+    out = ry + plane;
+    total = out + plane + 4096;
+  }
+};
+
+void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) m.data()[base + uint32_t(y) * stride + uint32_t(x)] = p.at(x, y);
+}
+
+class Engine {
+ public:
+  Engine(MemoryModel& mem, const EngineOptions& opt) : mem_(mem), opt_(opt) {
+    ctx_->traceEverOn(!opt.waves.empty());
+    top_ = std::make_unique<Vmcadsw_top>(ctx_.get());
+    if (!opt.waves.empty()) {
+      trace_ = std::make_unique<VerilatedFstC>();
+      top_->trace(trace_.get(), 99);
+      trace_->open(opt.waves.c_str());
+    }
+    top_->clk_i = 0;
+    top_->rst_ni = 0;
+    top_->start_i = 0;
+    top_->mem_gnt_i = 0;
+    top_->mem_rvalid_i = 0;
+    top_->eval();
+    for (int i = 0; i < 4; ++i) cycle();
+    top_->rst_ni = 1;
+  }
+  ~Engine() {
+    if (trace_) trace_->close();
+    top_->final();
+  }
+
+  Vmcadsw_top& top() { return *top_; }
+
+  void cycle() {
+    auto& t = *top_;
+    mem_.drive_response(t);
+    t.clk_i = 0;
+    t.eval();
+    mem_.serve(t);
+    if (trace_) trace_->dump(2 * time_);
+    t.clk_i = 1;
+    t.eval();
+    if (trace_) trace_->dump(2 * time_ + 1);
+    mem_.end_cycle();
+    ++time_;
+  }
+
+ private:
+  MemoryModel& mem_;
+  const EngineOptions& opt_;
+  std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
+  std::unique_ptr<Vmcadsw_top> top_;
+  std::unique_ptr<VerilatedFstC> trace_;
+  uint64_t time_ = 0;
+};
+
+void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
+  t.cfg_base_ly_i = c.base_ly;
+  t.cfg_base_lu_i = c.base_lu;
+  t.cfg_base_lv_i = c.base_lv;
+  t.cfg_base_ry_i = c.base_ry;
+  t.cfg_base_out_i = c.base_out;
+  t.cfg_stride_i = c.stride;
+  t.cfg_width_i = uint32_t(c.width) & 0xfff;
+  t.cfg_height_i = uint32_t(c.height) & 0xfff;
+  t.cfg_disp_i = uint32_t(c.disparities) & 0x7f;
+  const WeightThresholds thr = weight_thresholds(table);
+  for (int i = 0; i < kWeightThresholds; ++i)
+    set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
+}
+
+// Runs from start until done_o or the cycle limit.
+void run_frame(Engine& e, EngineResult& r, long limit, bool progress) {
+  auto& t = e.top();
+  t.start_i = 1;
+  e.cycle();
+  t.start_i = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  long n = 0;
+  while (!t.done_o) {
+    if (++n > limit) {
+      r.timed_out = true;
+      break;
+    }
+    e.cycle();
+    if (progress && n % 2000000 == 0)
+      std::fprintf(stderr, "  ... %ld Mcycles simulated\n", n / 1000000);
+  }
+  r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.cycles = long(t.cnt_cycles_o);
+  r.words_read = long(t.cnt_words_read_o);
+  r.words_written = long(t.cnt_words_written_o);
+  r.stall_cycles = long(t.cnt_stall_o);
+  r.error = t.error_o;
+  r.error_code = int(t.error_code_o);
+}
+
+}  // namespace
+
+EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                        const EngineOptions& opt) {
+  const int W = left.width(), H = left.height();
+  const Layout lay(W, H);
+  MemoryModel mem(lay.total, opt.latency);
+  put_plane(mem, lay.ly, lay.stride, left.y);
+  put_plane(mem, lay.lu, lay.stride, left.u);
+  put_plane(mem, lay.lv, lay.stride, left.v);
+  put_plane(mem, lay.ry, lay.stride, right.y);
+  for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.out + i] = 0xff;  // "never written"
+  mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
+
+  EngineResult r;
+  r.width = W;
+  r.height = H;
+  r.disparities = cfg.disparities;
+  {
+    Engine e(mem, opt);
+    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities},
+            cfg.table);
+    // Generous: four times the memory-bound estimate of 8000 cycles per block.
+    const long blocks = long((W + kBlock - 1) / kBlock) * ((H + kBlock - 1) / kBlock);
+    run_frame(e, r, opt.max_cycles > 0 ? opt.max_cycles : 40000 * blocks + 100000, opt.progress);
+  }
+  r.bad_writes = mem.bad_writes();
+
+  // Scoreboard: every pixel of the plane against the reference, both ways
+  // (a pixel the engine never wrote still holds 0xff, never a legal disparity).
+  Config ref_cfg = cfg;
+  Intermediates keep;
+  const Plane ref = disparity_map(left, right, ref_cfg, &keep);
+  r.disparity = Plane(W, H);
+  std::ostringstream rep;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const uint8_t got = mem.data()[lay.out + uint32_t(y) * lay.stride + uint32_t(x)];
+      r.disparity.at(x, y) = got;
+      const uint8_t want = ref.at(x, y);
+      if (got == want) continue;
+      if (r.mismatches++ < opt.max_reported) {
+        const size_t i = size_t(y) * W + x;
+        rep << "  mismatch at (" << x << "," << y << "): RTL d=" << int(got);
+        if (got < cfg.disparities) rep << " (cost " << keep.final_cost[got][i] << ")";
+        else rep << " (never written)";
+        rep << ", reference d=" << int(want) << " (cost " << keep.final_cost[want][i] << ")\n";
+      }
+    }
+  if (r.bad_writes) rep << "  " << r.bad_writes << " bytes written outside the disparity plane, first: "
+                        << mem.first_bad_write() << "\n";
+  r.report = rep.str();
+  return r;
+}
+
+EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles) {
+  MemoryModel mem(1 << 20, opt.latency);
+  mem.allow_writes(0, 0);  // a rejected configuration must write nothing
+  EngineResult r;
+  {
+    Engine e(mem, opt);
+    program(e.top(), raw, make_weight_table(kDefaultGamma));
+    run_frame(e, r, cycles, false);
+  }
+  r.bad_writes = mem.writes();
+  return r;
+}
+
+}  // namespace mcadsw::sim

@@ -1,0 +1,49 @@
+// Whole-engine test bench: driver (loads the planes into the memory model and
+// programs the engine), clock loop with a cycle limit and progress output,
+// and scoreboard (every disparity against the reference, both ways).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "memory_model.hpp"
+#include "mcadsw/ref.hpp"
+
+namespace mcadsw::sim {
+
+struct EngineOptions {
+  MemoryModel::Latency latency;
+  long max_cycles = 0;           // 0: derived from the frame size
+  bool progress = false;         // a line every few million cycles on stderr
+  std::string waves;             // FST file, empty: no waves
+  int max_reported = 10;         // mismatches printed
+};
+
+struct EngineResult {
+  int width = 0, height = 0, disparities = 0;
+  long cycles = 0;               // engine's cycle counter
+  long words_read = 0, words_written = 0, stall_cycles = 0;
+  long mismatches = 0;           // pixels differing from the reference (incl. never written)
+  long bad_writes = 0;           // bytes written outside the disparity plane
+  bool timed_out = false;
+  bool error = false;            // engine rejected the configuration
+  int error_code = 0;
+  double sim_seconds = 0;
+  std::string report;            // first mismatches, human-readable
+  Plane disparity;               // what the engine wrote
+};
+
+// Runs one frame. Throws std::runtime_error for harness failures (memory
+// access out of range, model errors).
+EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                        const EngineOptions& opt);
+
+// Runs one frame with a raw configuration and reports the engine's status,
+// without comparing (fault tests: rejected configurations).
+struct RawConfig {
+  uint32_t base_ly, base_lu, base_lv, base_ry, base_out, stride;
+  int width, height, disparities;
+};
+EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
+
+}  // namespace mcadsw::sim

@@ -1,0 +1,116 @@
+// mcadsw_sim: runs the Verilated engine on one stereo pair in a modelled
+// 32-bit external memory and compares every disparity with the reference.
+//   mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]
+//              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
+//              [--json FILE] [--waves FILE.fst]
+// Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "engine_bench.hpp"
+#include "mcadsw/eval.hpp"
+#include "mcadsw/image_io.hpp"
+#include <opencv2/imgcodecs.hpp>
+
+namespace {
+
+const char* kUsage =
+    "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
+    "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
+    "                  [--json FILE] [--waves FILE.fst]\n";
+
+constexpr double kClockMHz = 95.0;  // paper, Table III
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string left, right, name, gt, masks, out, json, waves;
+  int d = 0;
+  double gamma = mcadsw::kDefaultGamma, scale = 0;
+  mcadsw::sim::EngineOptions opt;
+  opt.progress = true;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      auto val = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "-d") d = std::stoi(val());
+      else if (a == "--gamma") gamma = std::stod(val());
+      else if (a == "--latency") opt.latency.fixed = std::stoi(val());
+      else if (a == "--random-latency") {
+        opt.latency.random = true;
+        opt.latency.seed = uint32_t(std::stoul(val()));
+      } else if (a == "--name") name = val();
+      else if (a == "--gt") gt = val();
+      else if (a == "--scale") scale = std::stod(val());
+      else if (a == "--masks") masks = val();
+      else if (a == "--out") out = val();
+      else if (a == "--json") json = val();
+      else if (a == "--waves") waves = val();
+      else if (a == "-h" || a == "--help") {
+        std::cout << kUsage;
+        return 0;
+      } else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
+      else if (left.empty()) left = a;
+      else if (right.empty()) right = a;
+      else throw std::invalid_argument("unexpected argument " + a);
+    }
+    if (left.empty() || right.empty() || d == 0) throw std::invalid_argument("need LEFT RIGHT -d D");
+  } catch (const std::exception& e) {
+    std::cerr << "mcadsw_sim: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  opt.waves = waves;
+  if (name.empty()) name = left;
+
+  try {
+    const mcadsw::YuvImage l = mcadsw::load_yuv(left), r = mcadsw::load_yuv(right);
+    mcadsw::Config cfg;
+    cfg.disparities = d;
+    cfg.table = mcadsw::make_weight_table(gamma);
+    mcadsw::check_config(cfg, l.width(), l.height());
+    if (r.width() != l.width() || r.height() != l.height())
+      throw std::runtime_error("left and right images differ in size");
+
+    const mcadsw::sim::EngineResult res = mcadsw::sim::run_engine(l, r, cfg, opt);
+    double err_all = -1;
+    if (!gt.empty()) {
+      const auto rd = [&](const std::string& p) { return cv::imread(p, cv::IMREAD_UNCHANGED); };
+      err_all = mcadsw::evaluate(mcadsw::to_mat(res.disparity), rd(gt), scale, rd(masks + "/nonocc.png"),
+                                 rd(masks + "/all.png"), rd(masks + "/disc.png"))
+                    .all;
+    }
+    if (!out.empty())
+      mcadsw::write_disparity(res.disparity, d, out, mcadsw::colormap_path_for(out));
+    const double pixels = double(res.width) * res.height;
+    const bool ok = !res.timed_out && !res.error && res.mismatches == 0 && res.bad_writes == 0;
+    std::printf("%-16s %4dx%-4d D=%-2d %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
+                "reads/px %5.2f  stalls %7ld  %s",
+                name.c_str(), res.width, res.height, d, res.cycles, kClockMHz * 1e6 / res.cycles,
+                res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
+                ok ? "MATCH" : "MISMATCH");
+    if (err_all >= 0) std::printf("  all %.2f%%", err_all);
+    std::printf("  (%.1f s, %.0f kcycles/s)\n", res.sim_seconds, res.cycles / res.sim_seconds / 1e3);
+    if (res.timed_out) std::printf("  TIMEOUT: the engine did not finish\n");
+    if (res.error) std::printf("  engine rejected the configuration, error code %d\n", res.error_code);
+    std::fputs(res.report.c_str(), stdout);
+    if (!json.empty()) {
+      std::ofstream j(json);
+      j << "{\"case\": \"" << name << "\", \"width\": " << res.width << ", \"height\": " << res.height
+        << ", \"disparities\": " << d << ", \"cycles\": " << res.cycles
+        << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
+        << ", \"stall_cycles\": " << res.stall_cycles << ", \"mismatches\": " << res.mismatches
+        << ", \"error_all\": " << (err_all >= 0 ? std::to_string(err_all) : "null")
+        << ", \"sim_seconds\": " << res.sim_seconds << "}\n";
+    }
+    return ok ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << "mcadsw_sim: error: " << e.what() << "\n";
+    return 1;
+  }
+}
