@@ -2,7 +2,9 @@
 # only wraps its targets. Every target installs missing Debian packages first.
 #
 #   make test    build everything and run the test suite (what CI runs)
-#   make sim     regression on the bundled pairs (reference only until the RTL engine exists)
+#   make sim     engine regression on the bundled pairs, bit-exact against the reference
+#                (CASE=<name> one case, WAVES=1 an FST; make wave CASE=<name> opens it)
+#   make ref-sim the reference model alone: Middlebury error table
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
 #   make bench   Google Benchmark of the reference (MDE/s)
@@ -11,7 +13,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim lint rtl-pkg bench sweep clean
+.PHONY: all bootstrap configure build test sim wave ref-sim lint rtl-pkg bench sweep clean
 
 all: build
 
@@ -27,12 +29,21 @@ build: configure
 test: build
 	@cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 
+# make sim [CASE=<name>] [WAVES=1]: the engine regression (scripts/sim_regression.sh)
 sim: build
-	@echo "== make sim: reference model on the bundled pairs ('all' error %, threshold 1) =="
-	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/sim
-	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/sim
-	@echo "Disparity maps: $(BUILD_DIR)/sim/*.png"
-	@echo "NOTE: the RTL engine is not built yet (issue 4); this run exercised the C++ reference only."
+	@scripts/sim_regression.sh $(BUILD_DIR) "$(CASE)" "$(WAVES)"
+
+# make wave CASE=<name>: open the waves of `make sim CASE=<name> WAVES=1`
+wave:
+	@f=$(BUILD_DIR)/sim/$(CASE).fst; [ -n "$(CASE)" ] || { echo "usage: make wave CASE=<name>"; exit 2; }; \
+	 [ -f $$f ] || { echo "no $$f: run make sim CASE=$(CASE) WAVES=1 first"; exit 1; }; \
+	 if [ -n "$$DISPLAY" ] && command -v gtkwave >/dev/null; then gtkwave $$f $(BUILD_DIR)/sim/$(CASE).gtkw; \
+	 else echo "no display: waves in $$f, save file $(BUILD_DIR)/sim/$(CASE).gtkw"; fi
+
+# The reference model alone on the bundled pairs ('all' error table).
+ref-sim: build
+	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
+	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
 
 lint: bootstrap
 	@scripts/rtl_check.sh lint
