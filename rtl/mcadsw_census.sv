@@ -2,11 +2,14 @@
 // kernel, census buffer. Instantiated for the left view (COLS = 48) and the
 // right view (COLS = 48 + DMAX - 1, the columns x - d can reach).
 //
-// Input: the luma of the read window, LCOLS = COLS + 4 columns by ROWS + 4 rows
-// (2 extra on each side for the 5x5 template), in strips of 4 columns: for
-// strip s, rows 0 .. ROWS+3 of columns 4s .. 4s+3, one 32-bit word a row, byte 0
-// the leftmost column (the weight generator takes the same format). The memory
-// side reads at clamped coordinates, so every pixel of the window has a value.
+// Input: the luma of the read window, COLS + 4 columns by ROWS + 4 rows (2
+// extra on each side for the 5x5 template), in strips of 4 columns: for strip
+// s, rows 0 .. ROWS+3 of columns 4s .. 4s+3, one 32-bit word a row, byte 0 the
+// leftmost column (the weight generator takes the same format). The strips
+// start at the aligned memory word left of the window, cfg_ofs_i (0..3)
+// columns early, so that each strip word is one memory read; there are
+// STRIPS = (COLS + 4 + 3 + 3) / 4 of them. The memory side reads at clamped
+// coordinates, so every pixel has a value.
 //
 // Input buffer: 8 banks of luma column words (column p in bank p % 8), filled
 // through a staging register that collects a strip and writes 4 whole columns.
@@ -43,6 +46,7 @@ module mcadsw_census #(
   input  logic [XB-1:0]              cfg_hi_x_i,
   input  logic [YB-1:0]              cfg_lo_y_i,
   input  logic [YB-1:0]              cfg_hi_y_i,
+  input  logic [1:0]                 cfg_ofs_i,   // window column 0 is input column cfg_ofs_i
   // Luma words of the window
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
@@ -60,7 +64,7 @@ module mcadsw_census #(
   localparam int SUB    = 8;                       // sub-banks (columns)
   localparam int LCOLS  = COLS + 4;                // luma columns of the window
   localparam int LROWS  = ROWS + 4;
-  localparam int STRIPS = (LCOLS + 3) / 4;
+  localparam int STRIPS = (LCOLS + 3 + 3) / 4;  // room for an offset of up to 3
   localparam int NWORDS = STRIPS * LROWS;
   localparam int LDEPTH = (STRIPS * 4 + SUB - 1) / SUB;  // luma words per sub-bank
   localparam int CDEPTH = (COLS + SUB - 1) / SUB;        // census words per sub-bank
@@ -79,6 +83,7 @@ module mcadsw_census #(
   logic [BB-1:0] bank_q;
   logic [XB-1:0] lo_x_q, hi_x_q;
   logic [YB-1:0] lo_y_q, hi_y_q;
+  logic [1:0]    ofs_q;
   logic [NB-1:0] nword_q;
   logic [XB-1:0] ki_q;           // census column the kernel writes
   logic          pix_fire;
@@ -96,6 +101,7 @@ module mcadsw_census #(
       hi_x_q  <= '0;
       lo_y_q  <= '0;
       hi_y_q  <= '0;
+      ofs_q   <= '0;
       nword_q <= '0;
       ki_q    <= '0;
       done_o  <= 1'b0;
@@ -109,6 +115,7 @@ module mcadsw_census #(
           hi_x_q  <= cfg_hi_x_i;
           lo_y_q  <= cfg_lo_y_i;
           hi_y_q  <= cfg_hi_y_i;
+          ofs_q   <= cfg_ofs_i;
           nword_q <= '0;
         end
         LOAD: if (pix_fire) begin
@@ -149,10 +156,13 @@ module mcadsw_census #(
     .cols_o (strip_cols)
   );
 
-  // Luma columns the kernel reads: ic .. ic + 4, ic = clamp(ki, lo_x, hi_x).
+  // Luma input columns the kernel reads: lc .. lc + 4, where lc = ofs +
+  // clamp(ki, lo_x, hi_x) (census position i needs window luma columns i .. i+4).
   logic [XB-1:0]      ic;
+  int                 lc;
   logic [SUB*LW-1:0]  lsub_rd;        // the word each sub-bank presents
   assign ic = (ki_q < lo_x_q) ? lo_x_q : (ki_q > hi_x_q) ? hi_x_q : ki_q;
+  assign lc = 32'(ic) + 32'(ofs_q);
 
   for (genvar b = 0; b < SUB; b++) begin : g_lsub
     // Strip s writes columns 4s .. 4s+3: sub-bank b receives column 4s + (b % 4)
@@ -164,9 +174,9 @@ module mcadsw_census #(
     always_ff @(posedge clk_i) begin
       if (strip_end && 32'(in_strip) % 2 == b / 4) mem_q[32'(in_strip) / 2] <= wr_col;
     end
-    // Read: the one of columns ic .. ic+4 that lives in this sub-bank, if any.
+    // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
     int p;
-    assign p = 32'(ic) + ((b - 32'(ic) % SUB + SUB) % SUB);
+    assign p = lc + ((b - lc % SUB + SUB) % SUB);
     assign lsub_rd[b*LW +: LW] = mem_q[(p / SUB) % LDEPTH];
   end
 
@@ -175,9 +185,9 @@ module mcadsw_census #(
   endfunction
 
   // ---- Kernel: a column of codes (Fig. 2 template, docs/algorithm.md bit order) ---
-  logic [5*LW-1:0] lcols;             // luma columns ic .. ic + 4
+  logic [5*LW-1:0] lcols;             // luma columns lc .. lc + 4
   for (genvar dx = 0; dx < 5; dx++) begin : g_lcol
-    assign lcols[dx*LW +: LW] = luma_col(lsub_rd, 32'(ic) + dx);
+    assign lcols[dx*LW +: LW] = luma_col(lsub_rd, lc + dx);
   end
 
   function automatic logic [7:0] lpix(input logic [5*LW-1:0] c, input int dx, input int y);

@@ -197,6 +197,17 @@ module mcadsw_top #(
   logic signed [CW:0] rx0;     // right census window origin
   assign rx0 = prep_x0 - (CW + 1)'(DMAX - 1);
 
+  // Readers start at the aligned memory word at or left of a window's first
+  // input column (floor to a multiple of 4), so a strip word is one read; the
+  // block skips the first (x & 3) input columns.
+  logic signed [CW:0] lx_in, rx_in;       // first luma input column of the census windows
+  assign lx_in = prep_x0 - (CW + 1)'(2);
+  assign rx_in = rx0 - (CW + 1)'(2);
+  logic signed [CW:0] lx_al, rx_al, wx_al; // aligned reader origins
+  assign lx_al = {lx_in[CW:2], 2'b00};
+  assign rx_al = {rx_in[CW:2], 2'b00};
+  assign wx_al = {prep_x0[CW:2], 2'b00};
+
   // ---- Memory controller and window readers ----------------------------------------------
   localparam int NR = 3;
   logic [NR-1:0]    rd_req, rd_gnt, rd_rvalid;
@@ -221,36 +232,36 @@ module mcadsw_top #(
   logic [31:0] lpix, rpix, wpix;
   logic        lrd_busy_unused, rrd_busy_unused, wrd_busy_unused;
 
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((COLS + 4 + 3) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((COLS + 4 + 6) / 4), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_l (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i (base_ly_q), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (prep_x0 - (CW + 1)'(2)), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .x0_i (lx_al), .y0_i (prep_y0 - (CW + 1)'(2)),
     .busy_o (lrd_busy_unused),
     .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .gnt_i (rd_gnt[0]),
     .rvalid_i (rd_rvalid[0]), .rdata_i (rd_rdata),
     .pix_valid_o (lpix_valid), .pix_ready_i (lpix_ready), .pix_data_o (lpix)
   );
 
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((RCOLS + 4 + 3) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((RCOLS + 4 + 6) / 4), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_r (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i (base_ry_q), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (rx0 - (CW + 1)'(2)), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .x0_i (rx_al), .y0_i (prep_y0 - (CW + 1)'(2)),
     .busy_o (rrd_busy_unused),
     .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .gnt_i (rd_gnt[1]),
     .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
     .pix_valid_o (rpix_valid), .pix_ready_i (rpix_ready), .pix_data_o (rpix)
   );
 
-  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(COLS / 4), .PLANES(3), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(COLS / 4 + 1), .PLANES(3), .CW(CW), .AW(AW))
   u_rd_weight (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i ({base_lv_q, base_lu_q, base_ly_q}), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (prep_x0), .y0_i (prep_y0),
+    .x0_i (wx_al), .y0_i (prep_y0),
     .busy_o (wrd_busy_unused),
     .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .gnt_i (rd_gnt[2]),
     .rvalid_i (rd_rvalid[2]), .rdata_i (rd_rdata),
@@ -286,6 +297,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .cfg_ofs_i (lx_in[1:0]),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
     .done_o (cl_done), .busy_o (cl_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -297,6 +309,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .cfg_ofs_i (rx_in[1:0]),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -307,6 +320,7 @@ module mcadsw_top #(
     .clk_i, .rst_ni,
     .thr_i (thr_q),
     .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .cfg_ofs_i (prep_x0[1:0]),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
     .done_o (wg_done), .busy_o (wg_busy_unused),
     .vrd_en_i (vrd_en), .vrd_bank_i (agg_bank), .vrd_row_i (vrd_row),

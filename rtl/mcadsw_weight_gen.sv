@@ -4,7 +4,10 @@
 //
 // Input: the colour of the ROWS x COLS read window (48 x 48), plane by plane
 // (Y, then U, then V), in strips of 4 columns: for strip s, rows 0 .. ROWS-1 of
-// columns 4s .. 4s+3, one 32-bit word a row, byte 0 the leftmost column.
+// columns 4s .. 4s+3, one 32-bit word a row, byte 0 the leftmost column. The
+// strips start at the aligned memory word left of the window, cfg_ofs_i
+// (0..3) columns early, so each strip word is one memory read: COLS/4 + 1
+// strips a plane.
 // The memory side reads at clamped coordinates, so the weights of positions
 // outside the image are those of the nearest edge pixel (docs/algorithm.md).
 //
@@ -43,6 +46,7 @@ module mcadsw_weight_gen #(
   input  logic                       cfg_valid_i,
   output logic                       cfg_ready_o,
   input  logic [BB-1:0]              cfg_bank_i,
+  input  logic [1:0]                 cfg_ofs_i,    // window column 0 is input column cfg_ofs_i
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
   input  logic [31:0]                pix_data_i,
@@ -63,7 +67,7 @@ module mcadsw_weight_gen #(
 );
 
   localparam int RADIUS = WINDOW / 2;
-  localparam int WPR    = COLS / 4;                 // words per row
+  localparam int WPR    = COLS / 4 + 1;             // strips a plane (offset 0..3)
   localparam int NWORDS = 3 * ROWS * WPR;
   localparam int NB     = $clog2(NWORDS + 1);
   localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
@@ -77,6 +81,7 @@ module mcadsw_weight_gen #(
   typedef enum logic [1:0] {IDLE, LOAD, VERT, HORZ} state_e;
   state_e        state_q;
   logic [BB-1:0] bank_q;
+  logic [1:0]    ofs_q;
   logic [NB-1:0] nword_q;
   logic [RB-1:0] r_q;
   logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
@@ -91,6 +96,7 @@ module mcadsw_weight_gen #(
     if (!rst_ni) begin
       state_q <= IDLE;
       bank_q  <= '0;
+      ofs_q   <= '0;
       nword_q <= '0;
       r_q     <= '0;
       c_q     <= '0;
@@ -101,6 +107,7 @@ module mcadsw_weight_gen #(
         IDLE: if (cfg_valid_i) begin
           state_q <= LOAD;
           bank_q  <= cfg_bank_i;
+          ofs_q   <= cfg_ofs_i;
           nword_q <= '0;
         end
         LOAD: if (pix_fire) begin
@@ -147,7 +154,7 @@ module mcadsw_weight_gen #(
   // an input word (4 pixels of a row) writes one byte into each bank, and the
   // kernel reads a whole column at once ("column by column", Fig. 11).
   localparam int CW = ROWS * 8;             // column word
-  localparam int SB = $clog2(COLS / 4);
+  localparam int SB = $clog2(WPR);
   localparam int IRB = $clog2(ROWS);
   logic [1:0]       in_plane;
   logic [SB-1:0]    in_strip;               // columns 4s .. 4s+3
@@ -169,22 +176,24 @@ module mcadsw_weight_gen #(
 
   logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
   logic [4*3*CW-1:0] bank_rd;
+  logic [XB:0]       in_col;                // its input column: window column c + offset
+  assign in_col = {1'b0, c_q} + (XB + 1)'(ofs_q);
 
   for (genvar b = 0; b < 4; b++) begin : g_ibank
     logic [CW-1:0] wr_col;                  // column 4s + b
     assign wr_col = strip_cols[b*CW +: CW];
 
-    logic [CW-1:0] y_q [COLS/4];
-    logic [CW-1:0] u_q [COLS/4];
-    logic [CW-1:0] v_q [COLS/4];
+    logic [CW-1:0] y_q [WPR];
+    logic [CW-1:0] u_q [WPR];
+    logic [CW-1:0] v_q [WPR];
     always_ff @(posedge clk_i) begin
       if (strip_end && in_plane == 2'd0) y_q[in_strip] <= wr_col;
       if (strip_end && in_plane == 2'd1) u_q[in_strip] <= wr_col;
       if (strip_end && in_plane == 2'd2) v_q[in_strip] <= wr_col;
     end
-    assign bank_rd[b*3*CW +: 3*CW] = {v_q[c_q[XB-1:2]], u_q[c_q[XB-1:2]], y_q[c_q[XB-1:2]]};
+    assign bank_rd[b*3*CW +: 3*CW] = {v_q[SB'(in_col[XB:2])], u_q[SB'(in_col[XB:2])], y_q[SB'(in_col[XB:2])]};
   end
-  assign column = bank_rd[32'(c_q[1:0])*3*CW +: 3*CW];
+  assign column = bank_rd[32'(in_col[1:0])*3*CW +: 3*CW];
 
   // ---- Horizontal row buffer (Fig. 11): the centre rows of every column -----------
   // Written during the vertical pass (row r + RADIUS of column c at position

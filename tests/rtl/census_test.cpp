@@ -51,6 +51,10 @@ class CensusBench {
     const int W = luma.width, H = luma.height;
     const int lo_x = std::max(0, -w.x0), hi_x = std::min(cols_ - 1, W - 1 - w.x0);
     const int lo_y = std::max(0, -w.y0), hi_y = std::min(kRows - 1, H - 1 - w.y0);
+    {
+      const int first = w.x0 - 2;
+      t.cfg_ofs_i = ((first % 4) + 4) % 4;
+    }
     t.cfg_valid_i = 1;
     t.cfg_bank_i = bank;
     t.cfg_lo_x_i = lo_x;
@@ -62,15 +66,17 @@ class CensusBench {
     tick();
     t.cfg_valid_i = 0;
 
-    // The luma window at clamped coordinates, as the memory controller reads
-    // it: strips of 4 columns, rows 0 .. ROWS+3 each.
-    const int strips = (cols_ + 4 + 3) / 4;
+    // The luma window at clamped coordinates, as the window reader delivers
+    // it: strips of 4 columns, rows 0 .. ROWS+3 each, starting at the aligned
+    // column at or left of the first input column (offset 0..3).
+    const int first = w.x0 - 2, aligned = first - (((first % 4) + 4) % 4);
+    const int strips = (cols_ + 4 + 6) / 4;
     std::vector<uint32_t> words;
     for (int s = 0; s < strips; ++s)
       for (int u = 0; u < kRows + 4; ++u) {
         uint32_t v = 0;
         for (int b = 0; b < 4; ++b)
-          v |= uint32_t(luma.clamped(w.x0 - 2 + 4 * s + b, w.y0 - 2 + u)) << (8 * b);
+          v |= uint32_t(luma.clamped(aligned + 4 * s + b, w.y0 - 2 + u)) << (8 * b);
         words.push_back(v);
       }
     const long limit = 20L * kRows * cols_ + 10000;  // never hang

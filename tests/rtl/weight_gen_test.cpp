@@ -50,20 +50,24 @@ class WeightGenBench {
     const WeightThresholds thr = weight_thresholds(c.table);
     for (int i = 0; i < kWeightThresholds; ++i)
       set_bits(t.thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
+    const int x0 = c.bx - kRadius, y0 = c.by - kRadius;
+    const int aligned = x0 - ((x0 % 4) + 4) % 4;  // window reader starts on a word boundary
+    t.cfg_ofs_i = x0 - aligned;
     t.cfg_valid_i = 1;
     t.cfg_bank_i = c.bank;
     t.eval();
     EXPECT_TRUE(t.cfg_ready_o);
     tick();
     t.cfg_valid_i = 0;
-    // Plane by plane, 4-column strips, rows 0..47, at clamped coordinates.
-    const int x0 = c.bx - kRadius, y0 = c.by - kRadius;
+    // Plane by plane, 4-column strips from the aligned column, rows 0..47,
+    // at clamped coordinates.
     std::vector<uint32_t> words;
     for (const Plane* p : {&c.img.y, &c.img.u, &c.img.v})
-      for (int s = 0; s < kBlockCols / 4; ++s)
+      for (int s = 0; s < kBlockCols / 4 + 1; ++s)
         for (int y = 0; y < kBlockCols; ++y) {
           uint32_t v = 0;
-          for (int b = 0; b < 4; ++b) v |= uint32_t(p->clamped(x0 + 4 * s + b, y0 + y)) << (8 * b);
+          for (int b = 0; b < 4; ++b)
+            v |= uint32_t(p->clamped(aligned + 4 * s + b, y0 + y)) << (8 * b);
           words.push_back(v);
         }
     const sim::StreamResult r = sim::stream_words(t, words, c.stall, rng, 100000);  // limit: never hang
