@@ -19,6 +19,7 @@ PACKAGES=(
   yosys              # synthesis (0.23 on bookworm)
   opensta            # static timing
   qflow-tech-osu018  # OSU 0.18 um standard cells for gate count and timing
+  gtkwave            # waveform viewer for `make wave` (and fst2vcd, headless)
 )
 
 missing=()

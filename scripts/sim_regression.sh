@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The `make sim` regression: the Verilated engine on the bundled pairs, every
+# The `make sim` regression: the Verilated engine on the bundled pairs (and a
+# small crop, quick to trace with WAVES=1), every
 # disparity compared with the reference. Prints one row per case, writes
 # BUILD/sim/summary.json, exits non-zero on any mismatch, timeout or error.
 #   scripts/sim_regression.sh BUILD_DIR [CASE] [WAVES]
@@ -24,6 +25,7 @@ cases=(
   "teddy|middlebury|teddy|60|4|"
   "cones|middlebury|cones|60|4|"
   "tsukuba_random_latency|middlebury|tsukuba|16|16|--random-latency 1"
+  "teddy_crop|cif|teddy|64|4|--crop 100,100,74,38"
 )
 
 selected=()

@@ -72,5 +72,38 @@ TEST(Engine, FixedLatencyAndSingleDisparity) {
   expect_exact(sim::run_engine(test::random_yuv(37, 20, rng), test::random_yuv(37, 20, rng), cfg, opt));
 }
 
+// Invalid configurations: the engine reports the error code of docs/memory_map.md,
+// finishes at once and writes nothing.
+TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
+  const sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 60, 40, 16};
+  struct Bad {
+    const char* what;
+    sim::RawConfig cfg;
+    int code;
+  };
+  std::vector<Bad> bad;
+  auto with = [&](const char* what, int code, auto change) {
+    sim::RawConfig c = good;
+    change(c);
+    bad.push_back({what, c, code});
+  };
+  with("width 0", 1, [](auto& c) { c.width = 0; });
+  with("width above the maximum", 1, [](auto& c) { c.width = kMaxWidth + 1; });
+  with("height 0", 2, [](auto& c) { c.height = 0; });
+  with("D = 0", 3, [](auto& c) { c.disparities = 0; });
+  with("D above DMAX", 3, [](auto& c) { c.disparities = kDmax + 1; });
+  with("stride below width", 4, [](auto& c) { c.stride = 56; });
+  with("stride not a multiple of 4", 4, [](auto& c) { c.stride = 66; });
+  with("misaligned base", 5, [](auto& c) { c.base_lu = 0x2002; });
+  with("output overlaps the right view", 6, [](auto& c) { c.base_out = 0x4000 + 64; });
+  for (const Bad& b : bad) {
+    const sim::EngineResult r = sim::run_raw(b.cfg, {}, 1000);
+    EXPECT_FALSE(r.timed_out) << b.what;
+    EXPECT_TRUE(r.error) << b.what;
+    EXPECT_EQ(r.error_code, b.code) << b.what;
+    EXPECT_EQ(r.bad_writes, 0) << b.what << ": the engine wrote to memory";
+  }
+}
+
 }  // namespace
 }  // namespace mcadsw
