@@ -90,19 +90,15 @@ module mcadsw_scheduler #(
   assign job_valid_o = agg_busy_q && !agg_draining_q && fifo_space_i;
   assign job_row_o   = arow_q;
   assign agg_bank_o  = abank_q;
-  begin : g_lastcol
-    logic [CW:0] last;  // last Ev column inside the image: W - 1 - (bx - 15)
-    assign last = {1'b0, width_i} - (CW + 1)'(1) - {1'b0, abx_q} + (CW + 1)'(RADIUS);
-    assign job_last_col_o = (last > (CW + 1)'(COLS - 1)) ? 6'(COLS - 1) : last[5:0];
-  end
+  logic [CW:0] last_col;  // last Ev column inside the image: W - 1 - (bx - 15)
+  assign last_col = {1'b0, width_i} - (CW + 1)'(1) - {1'b0, abx_q} + (CW + 1)'(RADIUS);
+  assign job_last_col_o = (last_col > (CW + 1)'(COLS - 1)) ? 6'(COLS - 1) : last_col[5:0];
   assign desc_push_o = job_valid_o && job_ready_i;
   assign desc_addr_o = out_base_i + AW'(y_abs) * stride_i;
   assign desc_x_o    = abx_q;
-  begin : g_n
-    logic [CW:0] left;
-    assign left     = {1'b0, width_i} - {1'b0, abx_q};
-    assign desc_n_o = (left > (CW + 1)'(BLOCK)) ? 5'(BLOCK) : left[4:0];
-  end
+  logic [CW:0] cols_left;  // image columns from the block's first
+  assign cols_left = {1'b0, width_i} - {1'b0, abx_q};
+  assign desc_n_o  = (cols_left > (CW + 1)'(BLOCK)) ? 5'(BLOCK) : cols_left[4:0];
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

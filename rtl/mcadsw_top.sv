@@ -77,7 +77,7 @@ module mcadsw_top #(
     if (cfg_width_i == '0 || 32'(cfg_width_i) > mcadsw_pkg::MAX_WIDTH) check = 3'd1;
     else if (cfg_height_i == '0 || 32'(cfg_height_i) > mcadsw_pkg::MAX_HEIGHT) check = 3'd2;
     else if (cfg_disp_i == '0 || 32'(cfg_disp_i) > DMAX) check = 3'd3;
-    else if (cfg_stride_i < AW'(cfg_width_i) || cfg_stride_i[1:0] != 2'b00) check = 3'd4;
+    else if (cfg_stride_i < AW'(cfg_width_i) || (cfg_stride_i & AW'(3)) != '0) check = 3'd4;
     else if (((cfg_base_ly_i | cfg_base_lu_i | cfg_base_lv_i | cfg_base_ry_i |
                cfg_base_out_i) & AW'(3)) != '0) check = 3'd5;
     else if (overlaps(cfg_base_out_i, cfg_base_ly_i, size) ||
