@@ -14,7 +14,7 @@
 // Input buffer: 8 banks of luma column words (column p in bank p % 8), filled
 // through a staging register that collects a strip and writes 4 whole columns.
 //
-// Kernel: one column of ROWS codes a cycle, COLS cycles a block. Position
+// Kernel: one column of ROWS codes a cycle, COLS + 1 cycles a block. Position
 // (i, j) of the census buffer receives the code of the nearest in-image
 // position (clamp(i, lo_x, hi_x), clamp(j, lo_y, hi_y)): the border rule of
 // docs/algorithm.md, applied once, when the buffer is written.
@@ -78,7 +78,7 @@ module mcadsw_census #(
   end
 
   // ---- Control ----------------------------------------------------------------------
-  typedef enum logic [1:0] {IDLE, LOAD, KERNEL} state_e;
+  typedef enum logic [1:0] {IDLE, LOAD, KERNEL, FLUSH} state_e;
   state_e        state_q;
   logic [BB-1:0] bank_q;
   logic [XB-1:0] lo_x_q, hi_x_q;
@@ -126,12 +126,12 @@ module mcadsw_census #(
           end
         end
         KERNEL: begin
-          if (ki_q == XB'(COLS - 1)) begin
-            state_q <= IDLE;
-            done_o  <= 1'b1;
-          end else begin
-            ki_q <= ki_q + XB'(1);
-          end
+          if (ki_q == XB'(COLS - 1)) state_q <= FLUSH;
+          else ki_q <= ki_q + XB'(1);
+        end
+        FLUSH: begin  // the last column is written this cycle
+          state_q <= IDLE;
+          done_o  <= 1'b1;
         end
         default: state_q <= IDLE;
       endcase
@@ -185,37 +185,48 @@ module mcadsw_census #(
   endfunction
 
   // ---- Kernel: a column of codes (Fig. 2 template, docs/algorithm.md bit order) ---
-  logic [5*LW-1:0] lcols;             // luma columns lc .. lc + 4
-  for (genvar dx = 0; dx < 5; dx++) begin : g_lcol
-    assign lcols[dx*LW +: LW] = luma_col(lsub_rd, lc + dx);
-  end
-
-  function automatic logic [7:0] lpix(input logic [5*LW-1:0] c, input int dx, input int y);
-    lpix = c[dx*LW + y*8 +: 8];
+  // Written as a function and called only where a column is written, so a
+  // simulator evaluates it in the kernel's COLS cycles of a block, not in every
+  // cycle; the hardware is the same combinational kernel.
+  function automatic logic [CWB-1:0] census_column(input logic [SUB*LW-1:0] rd, input int lcol,
+                                                   input logic [YB-1:0] lo_y,
+                                                   input logic [YB-1:0] hi_y);
+    logic [5*LW-1:0] lcols;           // luma columns lcol .. lcol + 4
+    logic [CWB-1:0]  raw;             // codes of rows 0 .. ROWS-1, unclamped
+    for (int dx = 0; dx < 5; dx++) lcols[dx*LW +: LW] = luma_col(rd, lcol + dx);
+    for (int j = 0; j < ROWS; j++) begin
+      logic [7:0] c;
+      c = lcols[2*LW + (j + 2)*8 +: 8];
+      raw[j*CB + 5] = lcols[(2 + mcadsw_pkg::TAP0_DX)*LW + (j + 2 + mcadsw_pkg::TAP0_DY)*8 +: 8] <= c;
+      raw[j*CB + 4] = lcols[(2 + mcadsw_pkg::TAP1_DX)*LW + (j + 2 + mcadsw_pkg::TAP1_DY)*8 +: 8] <= c;
+      raw[j*CB + 3] = lcols[(2 + mcadsw_pkg::TAP2_DX)*LW + (j + 2 + mcadsw_pkg::TAP2_DY)*8 +: 8] <= c;
+      raw[j*CB + 2] = lcols[(2 + mcadsw_pkg::TAP3_DX)*LW + (j + 2 + mcadsw_pkg::TAP3_DY)*8 +: 8] <= c;
+      raw[j*CB + 1] = lcols[(2 + mcadsw_pkg::TAP4_DX)*LW + (j + 2 + mcadsw_pkg::TAP4_DY)*8 +: 8] <= c;
+      raw[j*CB + 0] = lcols[(2 + mcadsw_pkg::TAP5_DX)*LW + (j + 2 + mcadsw_pkg::TAP5_DY)*8 +: 8] <= c;
+    end
+    // Rows outside the image take the code of the edge row.
+    for (int j = 0; j < ROWS; j++) begin
+      if (j < 32'(lo_y)) census_column[j*CB +: CB] = raw[32'(lo_y)*CB +: CB];
+      else if (j > 32'(hi_y)) census_column[j*CB +: CB] = raw[32'(hi_y)*CB +: CB];
+      else census_column[j*CB +: CB] = raw[j*CB +: CB];
+    end
   endfunction
 
-  logic [CWB-1:0] raw;                // codes of rows 0 .. ROWS-1, unclamped
-  for (genvar j = 0; j < ROWS; j++) begin : g_code
-    localparam int R = j + 2;         // luma row of the centre
-    logic [7:0] c;
-    assign c = lpix(lcols, 2, R);
-    assign raw[j*CB + 5] = lpix(lcols, 2 + mcadsw_pkg::TAP0_DX, R + mcadsw_pkg::TAP0_DY) <= c;
-    assign raw[j*CB + 4] = lpix(lcols, 2 + mcadsw_pkg::TAP1_DX, R + mcadsw_pkg::TAP1_DY) <= c;
-    assign raw[j*CB + 3] = lpix(lcols, 2 + mcadsw_pkg::TAP2_DX, R + mcadsw_pkg::TAP2_DY) <= c;
-    assign raw[j*CB + 2] = lpix(lcols, 2 + mcadsw_pkg::TAP3_DX, R + mcadsw_pkg::TAP3_DY) <= c;
-    assign raw[j*CB + 1] = lpix(lcols, 2 + mcadsw_pkg::TAP4_DX, R + mcadsw_pkg::TAP4_DY) <= c;
-    assign raw[j*CB + 0] = lpix(lcols, 2 + mcadsw_pkg::TAP5_DX, R + mcadsw_pkg::TAP5_DY) <= c;
+  // One kernel: its column is registered and written the next cycle.
+  logic           col_valid_q;
+  logic [XB-1:0]  col_ki_q;
+  logic [CWB-1:0] col_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      col_valid_q <= 1'b0;
+      col_ki_q    <= '0;
+    end else begin
+      col_valid_q <= state_q == KERNEL;
+      col_ki_q    <= ki_q;
+    end
   end
-
-  // Rows outside the image take the code of the edge row.
-  logic [CB-1:0]  top_code, bottom_code;
-  logic [CWB-1:0] column;
-  assign top_code    = raw[32'(lo_y_q)*CB +: CB];
-  assign bottom_code = raw[32'(hi_y_q)*CB +: CB];
-  assign column[0 +: CB] = (lo_y_q != '0) ? top_code : raw[0 +: CB];  // row 0 is never below
-  for (genvar j = 1; j < ROWS; j++) begin : g_clamp
-    assign column[j*CB +: CB] = (YB'(j) < lo_y_q) ? top_code :
-                                (YB'(j) > hi_y_q) ? bottom_code : raw[j*CB +: CB];
+  always_ff @(posedge clk_i) begin
+    if (state_q == KERNEL) col_q <= census_column(lsub_rd, lc, lo_y_q, hi_y_q);
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
@@ -223,8 +234,8 @@ module mcadsw_census #(
   for (genvar b = 0; b < SUB; b++) begin : g_csub
     logic [CWB-1:0] mem_q [BANKS*CDEPTH];
     always_ff @(posedge clk_i) begin
-      if (state_q == KERNEL && 32'(ki_q) % SUB == b)
-        mem_q[32'(bank_q)*CDEPTH + 32'(ki_q) / SUB] <= column;
+      if (col_valid_q && 32'(col_ki_q) % SUB == b)
+        mem_q[32'(bank_q)*CDEPTH + 32'(col_ki_q) / SUB] <= col_q;
     end
     // The lane of rd_col_i .. rd_col_i + 7 that lives in this sub-bank.
     int p;

@@ -29,18 +29,18 @@ module mcadsw_horz_agg #(
     else weigh = FB'(ev) << (e - WB'(1));
   endfunction
 
-  logic [HAGG*FB-1:0] fc_d;
-
-  for (genvar m = 0; m < HAGG; m++) begin : g_agg
-    logic [FB-1:0] sum;
-    always_comb begin
+  // The HAGG window sums, as a function called only when valid (see mcadsw_vert_agg).
+  function automatic logic [HAGG*FB-1:0] window_sums(input logic [(WINDOW+HAGG-1)*VB-1:0] ev,
+                                                     input logic [HAGG*WINDOW*WB-1:0] wh);
+    for (int m = 0; m < HAGG; m++) begin
+      logic [FB-1:0] sum;
       sum = '0;
       for (int j = 0; j < WINDOW; j++) begin
-        sum = sum + weigh(ev_i[(m + j)*VB +: VB], wh_i[(m*WINDOW + j)*WB +: WB]);
+        sum = sum + weigh(ev[(m + j)*VB +: VB], wh[(m*WINDOW + j)*WB +: WB]);
       end
+      window_sums[m*FB +: FB] = sum;
     end
-    assign fc_d[m*FB +: FB] = sum;
-  end
+  endfunction
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -48,7 +48,7 @@ module mcadsw_horz_agg #(
       fc_o    <= '0;
     end else begin
       valid_o <= valid_i;
-      if (valid_i) fc_o <= fc_d;
+      if (valid_i) fc_o <= window_sums(ev_i, wh_i);
     end
   end
 

@@ -46,20 +46,21 @@ module mcadsw_vert_agg #(
     else weigh = VB'(cost) << (e - WB'(1));
   endfunction
 
-  logic [LANES*VB-1:0] ev_d;
-
-  for (genvar l = 0; l < LANES; l++) begin : g_lane
-    logic [VB-1:0] sum;
-    always_comb begin
+  // The LANES column sums, as a function called only when a group is valid, so a
+  // simulator skips it in idle cycles; the hardware is the same.
+  function automatic logic [LANES*VB-1:0] column_sums(input logic [LANES*WINDOW*CB-1:0] l,
+                                                      input logic [LANES*WINDOW*CB-1:0] r,
+                                                      input logic [LANES*WINDOW*WB-1:0] w);
+    for (int ln = 0; ln < LANES; ln++) begin
+      logic [VB-1:0] sum;
       sum = '0;
       for (int k = 0; k < WINDOW; k++) begin
-        sum = sum + weigh(hamming(cen_l_i[(l*WINDOW + k)*CB +: CB],
-                                  cen_r_i[(l*WINDOW + k)*CB +: CB]),
-                          wv_i[(l*WINDOW + k)*WB +: WB]);
+        sum = sum + weigh(hamming(l[(ln*WINDOW + k)*CB +: CB], r[(ln*WINDOW + k)*CB +: CB]),
+                          w[(ln*WINDOW + k)*WB +: WB]);
       end
+      column_sums[ln*VB +: VB] = sum;
     end
-    assign ev_d[l*VB +: VB] = sum;
-  end
+  endfunction
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -67,7 +68,7 @@ module mcadsw_vert_agg #(
       ev_o    <= '0;
     end else begin
       valid_o <= valid_i;
-      if (valid_i) ev_o <= ev_d;
+      if (valid_i) ev_o <= column_sums(cen_l_i, cen_r_i, wv_i);
     end
   end
 

@@ -218,27 +218,28 @@ module mcadsw_weight_gen #(
   endfunction
 
   // ---- Kernel: WINDOW colour distances and table lookups ----------------------------
-  logic             horz;
-  logic [PW-1:0]    centre;
-  logic [ENTRY-1:0] codes;
-  assign horz   = state_q == HORZ;
-  assign centre = horz ? hrow[(32'(c_q) + RADIUS)*PW +: PW] : col_pixel(column, 32'(r_q) + RADIUS);
-
-  for (genvar k = 0; k < WINDOW; k++) begin : g_tap
-    logic [PW-1:0]  p;
+  // Vertical (h = 0): pixels (c, r+k) against (c, r+R) from the column word;
+  // horizontal (h = 1): (c+k, r+R) against (c+R, r+R) from the row buffer.
+  // A function called only where weights are written, so a simulator evaluates
+  // it in the kernel's cycles only; the hardware is the same.
+  function automatic logic [ENTRY-1:0] weight_codes(input logic h, input logic [3*CW-1:0] col,
+                                                    input logic [COLS*PW-1:0] row, input int r,
+                                                    input int c, input logic [NTHR*DCB-1:0] thr);
+    logic [PW-1:0]  ctr, p;
     logic [DCB-1:0] d;
     logic [WB-1:0]  passed;   // thresholds passed
-    assign p = horz ? hrow[(32'(c_q) + k)*PW +: PW] : col_pixel(column, 32'(r_q) + k);
-    assign d = cdist(p, centre);
-    always_comb begin
+    ctr = h ? row[(c + RADIUS)*PW +: PW] : col_pixel(col, r + RADIUS);
+    for (int k = 0; k < WINDOW; k++) begin
+      p = h ? row[(c + k)*PW +: PW] : col_pixel(col, r + k);
+      d = cdist(p, ctr);
       passed = '0;
-      for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr_i[i*DCB +: DCB]);
+      for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);
+      weight_codes[k*WB +: WB] = WB'(NTHR) - passed;
     end
-    assign codes[k*WB +: WB] = WB'(NTHR) - passed;
-  end
+  endfunction
 
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= centre;
+    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= col_pixel(column, 32'(r_q) + RADIUS);
   end
 
   // ---- Weight buffers: one word per aggregator read ----------------------------------
@@ -250,12 +251,16 @@ module mcadsw_weight_gen #(
   logic [HAGG*ENTRY-1:0]  hbuf_q [BANKS*BLOCK*HGRP];
 
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT)
-      vbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*VGRP + 32'(c_q) / LANES]
-            [(32'(c_q) % LANES)*ENTRY +: ENTRY] <= codes;
-    if (state_q == HORZ)
-      hbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*HGRP + 32'(c_q) / HAGG]
-            [(32'(c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
+    if (state_q == VERT || state_q == HORZ) begin : p_kernel
+      logic [ENTRY-1:0] codes;  // one kernel for both passes
+      codes = weight_codes(state_q == HORZ, column, hrow, 32'(r_q), 32'(c_q), thr_i);
+      if (state_q == VERT)
+        vbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*VGRP + 32'(c_q) / LANES]
+              [(32'(c_q) % LANES)*ENTRY +: ENTRY] <= codes;
+      else
+        hbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*HGRP + 32'(c_q) / HAGG]
+              [(32'(c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
+    end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
