@@ -23,6 +23,9 @@ struct PairCase {
   double max_all;  // percent; measured with `scripts/eval_pairs.sh` (docs/algorithm.md)
 };
 
+// gtest prints the parameter by name rather than as bytes.
+void PrintTo(const PairCase& c, std::ostream* os) { *os << c.name << " D=" << c.disparities; }
+
 // Guards set from measurement at the default gamma (22), rounded up to 0.01:
 // 3.6341 / 0.8684 / 15.1127 / 11.4535. The error may only improve.
 class Middlebury : public ::testing::TestWithParam<PairCase> {};
