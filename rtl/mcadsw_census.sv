@@ -65,12 +65,10 @@ module mcadsw_census #(
   localparam int LCOLS  = COLS + 4;                // luma columns of the window
   localparam int LROWS  = ROWS + 4;
   localparam int STRIPS = (LCOLS + 3 + 3) / 4;  // room for an offset of up to 3
-  localparam int NWORDS = STRIPS * LROWS;
   localparam int LDEPTH = (STRIPS * 4 + SUB - 1) / SUB;  // luma words per sub-bank
   localparam int CDEPTH = (COLS + SUB - 1) / SUB;        // census words per sub-bank
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
-  localparam int NB     = $clog2(NWORDS + 1);
   localparam int SB     = $clog2(STRIPS);
 
   if (ROWS < WINDOW || LANES != SUB || CB != 6) begin : g_bad_param
@@ -84,7 +82,6 @@ module mcadsw_census #(
   logic [XB-1:0] lo_x_q, hi_x_q;
   logic [YB-1:0] lo_y_q, hi_y_q;
   logic [1:0]    ofs_q;
-  logic [NB-1:0] nword_q;
   logic [XB-1:0] ki_q;           // census column the kernel writes
   logic          pix_fire;
 
@@ -102,7 +99,6 @@ module mcadsw_census #(
       lo_y_q  <= '0;
       hi_y_q  <= '0;
       ofs_q   <= '0;
-      nword_q <= '0;
       ki_q    <= '0;
       done_o  <= 1'b0;
     end else begin
@@ -116,14 +112,10 @@ module mcadsw_census #(
           lo_y_q  <= cfg_lo_y_i;
           hi_y_q  <= cfg_hi_y_i;
           ofs_q   <= cfg_ofs_i;
-          nword_q <= '0;
         end
-        LOAD: if (pix_fire) begin
-          nword_q <= nword_q + NB'(1);
-          if (nword_q == NB'(NWORDS - 1)) begin
-            state_q <= KERNEL;
-            ki_q    <= '0;
-          end
+        LOAD: if (win_done) begin
+          state_q <= KERNEL;
+          ki_q    <= '0;
         end
         KERNEL: begin
           if (ki_q == XB'(COLS - 1)) state_q <= FLUSH;
@@ -139,22 +131,23 @@ module mcadsw_census #(
   end
 
   // ---- Input buffer -------------------------------------------------------------------
-  localparam int LRB = $clog2(LROWS);
-  logic [SB-1:0]     in_strip;
-  logic [LRB-1:0]    in_row;
-  logic              strip_end;
+  logic [SB-1:0]     in_strip;         // strip of the word being accepted
+  logic              strip_end, win_done;
   logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
-  assign in_strip = SB'(32'(nword_q) / LROWS);
-  assign in_row   = LRB'(32'(nword_q) % LROWS);
+  logic              in_plane_unused;
 
-  mcadsw_strip_stage #(.ROWS(LROWS)) u_stage (
-    .clk_i,
-    .wr_i   (pix_fire),
-    .row_i  (in_row),
-    .data_i (pix_data_i),
-    .last_o (strip_end),
-    .cols_o (strip_cols)
+  mcadsw_strip_stage #(.ROWS(LROWS), .STRIPS(STRIPS), .PLANES(1)) u_stage (
+    .clk_i, .rst_ni,
+    .start_i (cfg_valid_i && cfg_ready_o),
+    .wr_i    (pix_fire),
+    .data_i  (pix_data_i),
+    .last_o  (strip_end),
+    .done_o  (win_done),
+    .plane_o (in_plane_unused),
+    .strip_o (in_strip),
+    .cols_o  (strip_cols)
   );
+
 
   // Luma input columns the kernel reads: lc .. lc + 4, where lc = ofs +
   // clamp(ki, lo_x, hi_x) (census position i needs window luma columns i .. i+4).

@@ -1,30 +1,60 @@
 // Word buffer at the front of the input buffers (Fig. 10 / Fig. 11: "the input
 // data are first packed into data words"), shared by the census transformer
-// and the weight generator. The memory side delivers a window in strips of 4
-// columns, one 32-bit word a row (byte b = column 4s + b); this stage collects
-// the first ROWS - 1 words of a strip, and when the last row arrives presents
-// the 4 complete column words, so the input buffers only ever write whole words.
+// and the weight generator. The memory side delivers a window of PLANES planes
+// in strips of 4 columns, one 32-bit word a row (byte b = column 4s + b),
+// strip by strip, plane by plane. This stage counts the words, collects the
+// first ROWS - 1 words of a strip, and when the last row arrives presents the
+// 4 complete column words with the strip's plane and index, so the input
+// buffers only ever write whole words.
 `default_nettype none
 
 module mcadsw_strip_stage #(
-  parameter int ROWS = mcadsw_pkg::BLOCK_COLS,  // rows of a strip
-  parameter int RB   = $clog2(ROWS)
+  parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,  // rows of a strip
+  parameter int STRIPS = 13,                      // strips a plane
+  parameter int PLANES = 1,
+  parameter int RB     = $clog2(ROWS),
+  parameter int SB     = $clog2(STRIPS),
+  parameter int PB     = (PLANES > 1) ? $clog2(PLANES) : 1
 ) (
   input  logic                 clk_i,
-  input  logic                 wr_i,     // a word is accepted
-  input  logic [RB-1:0]        row_i,    // its row in the strip
+  input  logic                 rst_ni,
+  input  logic                 start_i,   // a new window begins with the next word
+  input  logic                 wr_i,      // a word is accepted
   input  logic [31:0]          data_i,
-  output logic                 last_o,   // the last row: cols_o is complete
-  output logic [4*ROWS*8-1:0]  cols_o    // column b at b*ROWS*8, row y at byte y
+  output logic                 last_o,    // this word ends a strip: cols_o is complete
+  output logic                 done_o,    // this word ends the window
+  output logic [PB-1:0]        plane_o,   // plane and strip of the word
+  output logic [SB-1:0]        strip_o,
+  output logic [4*ROWS*8-1:0]  cols_o     // column b at b*ROWS*8, row y at byte y
 );
 
+  logic [RB-1:0]          row_q;
   logic [(ROWS-1)*32-1:0] stage_q;
 
-  always_ff @(posedge clk_i) begin
-    if (wr_i && row_i != RB'(ROWS - 1)) stage_q[32'(row_i)*32 +: 32] <= data_i;
+  assign last_o = wr_i && row_q == RB'(ROWS - 1);
+  assign done_o = last_o && strip_o == SB'(STRIPS - 1) && plane_o == PB'(PLANES - 1);
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      row_q   <= '0;
+      strip_o <= '0;
+      plane_o <= '0;
+    end else if (start_i) begin
+      row_q   <= '0;
+      strip_o <= '0;
+      plane_o <= '0;
+    end else if (wr_i) begin
+      row_q <= last_o ? '0 : row_q + RB'(1);
+      if (last_o) begin
+        strip_o <= (strip_o == SB'(STRIPS - 1)) ? '0 : strip_o + SB'(1);
+        if (strip_o == SB'(STRIPS - 1)) plane_o <= plane_o + PB'(1);
+      end
+    end
   end
 
-  assign last_o = wr_i && row_i == RB'(ROWS - 1);
+  always_ff @(posedge clk_i) begin
+    if (wr_i && !last_o) stage_q[32'(row_q)*32 +: 32] <= data_i;
+  end
 
   for (genvar b = 0; b < 4; b++) begin : g_col
     for (genvar y = 0; y < ROWS - 1; y++) begin : g_row

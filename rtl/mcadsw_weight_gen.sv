@@ -68,8 +68,6 @@ module mcadsw_weight_gen #(
 
   localparam int RADIUS = WINDOW / 2;
   localparam int WPR    = COLS / 4 + 1;             // strips a plane (offset 0..3)
-  localparam int NWORDS = 3 * ROWS * WPR;
-  localparam int NB     = $clog2(NWORDS + 1);
   localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
 
   if (COLS % 4 != 0 || ROWS != BLOCK + WINDOW - 1 || COLS != BLOCK + WINDOW - 1 ||
@@ -82,7 +80,6 @@ module mcadsw_weight_gen #(
   state_e        state_q;
   logic [BB-1:0] bank_q;
   logic [1:0]    ofs_q;
-  logic [NB-1:0] nword_q;
   logic [RB-1:0] r_q;
   logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
   logic          pix_fire;
@@ -97,7 +94,6 @@ module mcadsw_weight_gen #(
       state_q <= IDLE;
       bank_q  <= '0;
       ofs_q   <= '0;
-      nword_q <= '0;
       r_q     <= '0;
       c_q     <= '0;
       done_o  <= 1'b0;
@@ -108,15 +104,11 @@ module mcadsw_weight_gen #(
           state_q <= LOAD;
           bank_q  <= cfg_bank_i;
           ofs_q   <= cfg_ofs_i;
-          nword_q <= '0;
         end
-        LOAD: if (pix_fire) begin
-          nword_q <= nword_q + NB'(1);
-          if (nword_q == NB'(NWORDS - 1)) begin
-            state_q <= VERT;
-            r_q     <= '0;
-            c_q     <= '0;
-          end
+        LOAD: if (win_done) begin
+          state_q <= VERT;
+          r_q     <= '0;
+          c_q     <= '0;
         end
         VERT: begin  // column by column: the BLOCK centre rows of column c
           if (r_q == RB'(BLOCK - 1)) begin
@@ -155,24 +147,23 @@ module mcadsw_weight_gen #(
   // kernel reads a whole column at once ("column by column", Fig. 11).
   localparam int CW = ROWS * 8;             // column word
   localparam int SB = $clog2(WPR);
-  localparam int IRB = $clog2(ROWS);
   logic [1:0]       in_plane;
   logic [SB-1:0]    in_strip;               // columns 4s .. 4s+3
-  logic [IRB-1:0]   in_row;
-  logic             strip_end;              // last row of a strip arrives
+  logic             strip_end, win_done;    // last row of a strip / of the window
   logic [4*CW-1:0]  strip_cols;             // the 4 column words of that strip
-  assign in_plane = 2'(32'(nword_q) / (ROWS * WPR));
-  assign in_strip = SB'((32'(nword_q) / ROWS) % WPR);
-  assign in_row   = IRB'(32'(nword_q) % ROWS);
 
-  mcadsw_strip_stage #(.ROWS(ROWS)) u_stage (
-    .clk_i,
-    .wr_i   (pix_fire),
-    .row_i  (in_row),
-    .data_i (pix_data_i),
-    .last_o (strip_end),
-    .cols_o (strip_cols)
+  mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3)) u_stage (
+    .clk_i, .rst_ni,
+    .start_i (cfg_valid_i && cfg_ready_o),
+    .wr_i    (pix_fire),
+    .data_i  (pix_data_i),
+    .last_o  (strip_end),
+    .done_o  (win_done),
+    .plane_o (in_plane),
+    .strip_o (in_strip),
+    .cols_o  (strip_cols)
   );
+
 
   logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
   logic [4*3*CW-1:0] bank_rd;
