@@ -13,6 +13,12 @@
 //
 // Input buffer: 8 banks of luma column words (column p in bank p % 8), filled
 // through a staging register that collects a strip and writes 4 whole columns.
+// It is circular over NSTRIP strips (partial column reuse, Sec. IV): the
+// window's strip s lives in buffer strip (base + s) mod NSTRIP, and a block
+// that continues the previous one 18 columns to the right (cfg_first_i > 0)
+// advances base by the strips its aligned origin moved (STRIPS - cfg_first_i)
+// and receives only strips cfg_first_i .. STRIPS-1; the others are the
+// previous block's, already in the buffer. cfg_first_i = 0 loads a whole window.
 //
 // Kernel: one column of ROWS codes a cycle, COLS + 1 cycles a block. Position
 // (i, j) of the census buffer receives the code of the nearest in-image
@@ -32,6 +38,8 @@ module mcadsw_census #(
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter int BANKS  = 2,
+  parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
+  parameter int SB     = $clog2(STRIPS),
   parameter int XB     = $clog2(COLS),             // column index width
   parameter int YB     = $clog2(ROWS),             // row index width
   parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
@@ -47,6 +55,7 @@ module mcadsw_census #(
   input  logic [YB-1:0]              cfg_lo_y_i,
   input  logic [YB-1:0]              cfg_hi_y_i,
   input  logic [1:0]                 cfg_ofs_i,   // window column 0 is input column cfg_ofs_i
+  input  logic [SB-1:0]              cfg_first_i, // first strip delivered (0: whole window)
   // Luma words of the window
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
@@ -64,24 +73,29 @@ module mcadsw_census #(
   localparam int SUB    = 8;                       // sub-banks (columns)
   localparam int LCOLS  = COLS + 4;                // luma columns of the window
   localparam int LROWS  = ROWS + 4;
-  localparam int STRIPS = (LCOLS + 3 + 3) / 4;  // room for an offset of up to 3
-  localparam int LDEPTH = (STRIPS * 4 + SUB - 1) / SUB;  // luma words per sub-bank
+  localparam int NSTRIP = STRIPS + STRIPS % 2;     // buffer strips: 4 NSTRIP columns, a multiple of SUB
+  localparam int LDEPTH = NSTRIP * 4 / SUB;         // luma words per sub-bank
   localparam int CDEPTH = (COLS + SUB - 1) / SUB;        // census words per sub-bank
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
-  localparam int SB     = $clog2(STRIPS);
 
-  if (ROWS < WINDOW || LANES != SUB || CB != 6) begin : g_bad_param
+  if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < LCOLS + 3) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
+  // v mod n for 0 <= v < 2n.
+  function automatic int wrap(input int v, input int n);
+    wrap = (v >= n) ? v - n : v;
+  endfunction
+
   // ---- Control ----------------------------------------------------------------------
-  typedef enum logic [1:0] {IDLE, LOAD, KERNEL, FLUSH} state_e;
+  typedef enum logic [2:0] {IDLE, LOAD, KERNEL, FLUSH, FLUSH2} state_e;
   state_e        state_q;
   logic [BB-1:0] bank_q;
   logic [XB-1:0] lo_x_q, hi_x_q;
   logic [YB-1:0] lo_y_q, hi_y_q;
   logic [1:0]    ofs_q;
+  logic [SB-1:0] base_q;         // buffer strip of window strip 0
   logic [XB-1:0] ki_q;           // census column the kernel writes
   logic          pix_fire;
 
@@ -99,6 +113,7 @@ module mcadsw_census #(
       lo_y_q  <= '0;
       hi_y_q  <= '0;
       ofs_q   <= '0;
+      base_q  <= '0;
       ki_q    <= '0;
       done_o  <= 1'b0;
     end else begin
@@ -112,6 +127,7 @@ module mcadsw_census #(
           lo_y_q  <= cfg_lo_y_i;
           hi_y_q  <= cfg_hi_y_i;
           ofs_q   <= cfg_ofs_i;
+          base_q  <= SB'(wrap(32'(base_q) + STRIPS - 32'(cfg_first_i), NSTRIP));
         end
         LOAD: if (win_done) begin
           state_q <= KERNEL;
@@ -121,7 +137,8 @@ module mcadsw_census #(
           if (ki_q == XB'(COLS - 1)) state_q <= FLUSH;
           else ki_q <= ki_q + XB'(1);
         end
-        FLUSH: begin  // the last column is written this cycle
+        FLUSH: state_q <= FLUSH2;  // the last column is read and computed
+        FLUSH2: begin              // and written
           state_q <= IDLE;
           done_o  <= 1'b1;
         end
@@ -139,6 +156,7 @@ module mcadsw_census #(
   mcadsw_strip_stage #(.ROWS(LROWS), .STRIPS(STRIPS), .PLANES(1)) u_stage (
     .clk_i, .rst_ni,
     .start_i (cfg_valid_i && cfg_ready_o),
+    .first_i (cfg_first_i),
     .wr_i    (pix_fire),
     .data_i  (pix_data_i),
     .last_o  (strip_end),
@@ -149,28 +167,33 @@ module mcadsw_census #(
   );
 
 
-  // Luma input columns the kernel reads: lc .. lc + 4, where lc = ofs +
-  // clamp(ki, lo_x, hi_x) (census position i needs window luma columns i .. i+4).
+  // Luma input columns the kernel reads: lc .. lc + 4 (mod 4 NSTRIP), where
+  // lc = 4 base + ofs + clamp(ki, lo_x, hi_x) (census position i needs window
+  // luma columns i .. i+4).
   logic [XB-1:0]      ic;
   int                 lc;
-  logic [SUB*LW-1:0]  lsub_rd;        // the word each sub-bank presents
+  logic [SUB*LW-1:0]  lsub_q;         // the word each sub-bank read (synchronous read)
+  int                 wstrip;         // buffer strip of the finished input strip
   assign ic = (ki_q < lo_x_q) ? lo_x_q : (ki_q > hi_x_q) ? hi_x_q : ki_q;
-  assign lc = 32'(ic) + 32'(ofs_q);
+  assign lc = wrap(4*32'(base_q) + 32'(ofs_q) + 32'(ic), 4*NSTRIP);
+  assign wstrip = wrap(32'(base_q) + 32'(in_strip), NSTRIP);
 
   for (genvar b = 0; b < SUB; b++) begin : g_lsub
-    // Strip s writes columns 4s .. 4s+3: sub-bank b receives column 4s + (b % 4)
-    // when s has the parity of b / 4.
+    // Buffer strip t holds columns 4t .. 4t+3: sub-bank b receives column
+    // 4t + (b % 4) when t has the parity of b / 4.
     logic [LW-1:0] wr_col;
     assign wr_col = strip_cols[(b % 4)*LW +: LW];
 
     logic [LW-1:0] mem_q [LDEPTH];
     always_ff @(posedge clk_i) begin
-      if (strip_end && 32'(in_strip) % 2 == b / 4) mem_q[32'(in_strip) / 2] <= wr_col;
+      if (strip_end && wstrip % 2 == b / 4) mem_q[wstrip / 2] <= wr_col;
     end
     // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
     int p;
     assign p = lc + ((b - lc % SUB + SUB) % SUB);
-    assign lsub_rd[b*LW +: LW] = mem_q[(p / SUB) % LDEPTH];
+    always_ff @(posedge clk_i) begin
+      if (state_q == KERNEL) lsub_q[b*LW +: LW] <= mem_q[(p / SUB) % LDEPTH];
+    end
   end
 
   function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input int p);
@@ -205,21 +228,29 @@ module mcadsw_census #(
     end
   endfunction
 
-  // One kernel: its column is registered and written the next cycle.
-  logic           col_valid_q;
-  logic [XB-1:0]  col_ki_q;
+  // Pipeline: cycle 1 reads the luma columns of census column ki, cycle 2
+  // computes its codes into col_q, cycle 3 writes them.
+  logic           rd_valid_q, col_valid_q;
+  logic [XB-1:0]  rd_ki_q, col_ki_q;
+  logic [2:0]     rd_lc_q;        // lc mod 8: the sub-bank of the first luma column
   logic [CWB-1:0] col_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
+      rd_valid_q  <= 1'b0;
+      rd_ki_q     <= '0;
+      rd_lc_q     <= '0;
       col_valid_q <= 1'b0;
       col_ki_q    <= '0;
     end else begin
-      col_valid_q <= state_q == KERNEL;
-      col_ki_q    <= ki_q;
+      rd_valid_q  <= state_q == KERNEL;
+      rd_ki_q     <= ki_q;
+      rd_lc_q     <= 3'(lc);
+      col_valid_q <= rd_valid_q;
+      col_ki_q    <= rd_ki_q;
     end
   end
   always_ff @(posedge clk_i) begin
-    if (state_q == KERNEL) col_q <= census_column(lsub_rd, lc, lo_y_q, hi_y_q);
+    if (rd_valid_q) col_q <= census_column(lsub_q, 32'(rd_lc_q), lo_y_q, hi_y_q);
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
@@ -250,12 +281,12 @@ module mcadsw_census #(
     end
   end
 
+  // Lane l is census column rd_col + l, from sub-bank (rd_col + l) % 8; its
+  // WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the column word: a
+  // rotator and a row shifter, one word shift a lane.
   for (genvar l = 0; l < LANES; l++) begin : g_lane
-    logic [CWB-1:0] col;
-    assign col = csub_rd[((32'(rd_rot_q) + l) % SUB)*CWB +: CWB];
-    for (genvar k = 0; k < WINDOW; k++) begin : g_row
-      assign rd_data_o[(l*WINDOW + k)*CB +: CB] = col[(32'(rd_row_q) + k)*CB +: CB];
-    end
+    assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] =
+        (WINDOW*CB)'(csub_rd[((32'(rd_rot_q) + l) % SUB)*CWB +: CWB] >> (32'(rd_row_q)*CB));
   end
 
 endmodule

@@ -29,26 +29,22 @@ module mcadsw_horz_agg #(
     else weigh = FB'(ev) << (e - WB'(1));
   endfunction
 
-  // The HAGG window sums, as a function called only when valid (see mcadsw_vert_agg).
-  function automatic logic [HAGG*FB-1:0] window_sums(input logic [(WINDOW+HAGG-1)*VB-1:0] ev,
-                                                     input logic [HAGG*WINDOW*WB-1:0] wh);
-    for (int m = 0; m < HAGG; m++) begin
-      logic [FB-1:0] sum;
-      sum = '0;
-      for (int j = 0; j < WINDOW; j++) begin
-        sum = sum + weigh(ev[(m + j)*VB +: VB], wh[(m*WINDOW + j)*WB +: WB]);
-      end
-      window_sums[m*FB +: FB] = sum;
-    end
-  endfunction
-
+  // The HAGG window sums, computed only when valid (see mcadsw_vert_agg).
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       valid_o <= 1'b0;
       fc_o    <= '0;
     end else begin
       valid_o <= valid_i;
-      if (valid_i) fc_o <= window_sums(ev_i, wh_i);
+      if (valid_i) begin
+        for (int m = 0; m < HAGG; m++) begin : b_agg
+          logic [FB-1:0] sum;
+          sum = '0;
+          for (int j = 0; j < WINDOW; j++)
+            sum = sum + weigh(ev_i[(m + j)*VB +: VB], wh_i[(m*WINDOW + j)*WB +: WB]);
+          fc_o[m*FB +: FB] <= sum;
+        end
+      end
     end
   end
 

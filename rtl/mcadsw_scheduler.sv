@@ -28,6 +28,7 @@ module mcadsw_scheduler #(
   output logic               prep_bank_o,
   output logic signed [CW:0] prep_x0_o,      // left window origin (bx - 15)
   output logic signed [CW:0] prep_y0_o,      // by - 15
+  output logic               prep_cont_o,    // the block continues the previous one (bx > 0)
   input  logic               prep_done_i,    // all three preparers finished (level)
   // Cost aggregator
   output logic               agg_bank_o,
@@ -79,6 +80,7 @@ module mcadsw_scheduler #(
   assign prep_bank_o  = pbank_q;
   assign prep_x0_o    = $signed({1'b0, pbx_q}) - (CW + 1)'(RADIUS);
   assign prep_y0_o    = $signed({1'b0, pby_q}) - (CW + 1)'(RADIUS);
+  assign prep_cont_o  = pbx_q != '0;
 
   // Aggregation of the prepared block starts when the aggregator has drained.
   logic agg_go;

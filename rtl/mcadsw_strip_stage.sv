@@ -5,7 +5,10 @@
 // strip by strip, plane by plane. This stage counts the words, collects the
 // first ROWS - 1 words of a strip, and when the last row arrives presents the
 // 4 complete column words with the strip's plane and index, so the input
-// buffers only ever write whole words.
+// buffers only ever write whole words. A window may start at strip first_i
+// (the strips before it are still in the input buffer from the previous,
+// horizontally adjacent block: partial column reuse, Sec. IV); every plane
+// then delivers strips first_i .. STRIPS-1.
 `default_nettype none
 
 module mcadsw_strip_stage #(
@@ -19,6 +22,7 @@ module mcadsw_strip_stage #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   input  logic                 start_i,   // a new window begins with the next word
+  input  logic [SB-1:0]        first_i,   // its first strip (sampled with start_i)
   input  logic                 wr_i,      // a word is accepted
   input  logic [31:0]          data_i,
   output logic                 last_o,    // this word ends a strip: cols_o is complete
@@ -29,6 +33,7 @@ module mcadsw_strip_stage #(
 );
 
   logic [RB-1:0]          row_q;
+  logic [SB-1:0]          first_q;
   logic [(ROWS-1)*32-1:0] stage_q;
 
   assign last_o = wr_i && row_q == RB'(ROWS - 1);
@@ -37,29 +42,32 @@ module mcadsw_strip_stage #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       row_q   <= '0;
+      first_q <= '0;
       strip_o <= '0;
       plane_o <= '0;
     end else if (start_i) begin
       row_q   <= '0;
-      strip_o <= '0;
+      first_q <= first_i;
+      strip_o <= first_i;
       plane_o <= '0;
     end else if (wr_i) begin
       row_q <= last_o ? '0 : row_q + RB'(1);
       if (last_o) begin
-        strip_o <= (strip_o == SB'(STRIPS - 1)) ? '0 : strip_o + SB'(1);
+        strip_o <= (strip_o == SB'(STRIPS - 1)) ? first_q : strip_o + SB'(1);
         if (strip_o == SB'(STRIPS - 1)) plane_o <= plane_o + PB'(1);
       end
     end
   end
 
+  // The stage holds the words column by column (column b, row y at byte
+  // b*(ROWS-1) + y), so the columns leave it as whole slices.
   always_ff @(posedge clk_i) begin
-    if (wr_i && !last_o) stage_q[32'(row_q)*32 +: 32] <= data_i;
+    if (wr_i && !last_o)
+      for (int b = 0; b < 4; b++) stage_q[(b*(ROWS - 1) + 32'(row_q))*8 +: 8] <= data_i[b*8 +: 8];
   end
 
   for (genvar b = 0; b < 4; b++) begin : g_col
-    for (genvar y = 0; y < ROWS - 1; y++) begin : g_row
-      assign cols_o[(b*ROWS + y)*8 +: 8] = stage_q[y*32 + b*8 +: 8];
-    end
+    assign cols_o[b*ROWS*8 +: (ROWS - 1)*8] = stage_q[b*(ROWS - 1)*8 +: (ROWS - 1)*8];
     assign cols_o[(b*ROWS + ROWS - 1)*8 +: 8] = data_i[b*8 +: 8];
   end
 

@@ -168,6 +168,7 @@ module mcadsw_top #(
     .prep_bank_o    (prep_bank),
     .prep_x0_o      (prep_x0),
     .prep_y0_o      (prep_y0),
+    .prep_cont_o    (prep_cont),
     .prep_done_i    (prep_done),
     .agg_bank_o     (agg_bank),
     .job_valid_o    (job_valid),
@@ -203,10 +204,32 @@ module mcadsw_top #(
   logic signed [CW:0] lx_in, rx_in;       // first luma input column of the census windows
   assign lx_in = prep_x0 - (CW + 1)'(2);
   assign rx_in = rx0 - (CW + 1)'(2);
-  logic signed [CW:0] lx_al, rx_al, wx_al; // aligned reader origins
+  logic signed [CW:0] lx_al, rx_al, wx_al; // aligned window origins
   assign lx_al = {lx_in[CW:2], 2'b00};
   assign rx_al = {rx_in[CW:2], 2'b00};
   assign wx_al = {prep_x0[CW:2], 2'b00};
+
+  // Partial column reuse (Sec. IV): a block that continues its left neighbour
+  // (prep_cont) finds the strips both windows share in its input buffers and
+  // reads only the last `shift` strips of its window, where shift (4 or 5) is
+  // how many words the aligned origin moved with the block's 18 columns.
+  localparam int LSTRIPS = (COLS + 4 + 6) / 4;      // census left  (14)
+  localparam int RSTRIPS = (RCOLS + 4 + 6) / 4;     // census right (30)
+  localparam int WSTRIPS = COLS / 4 + 1;            // weights      (13)
+  function automatic logic [5:0] first_strip(input logic [1:0] xin_ofs, input logic cont,
+                                             input int strips);
+    // floor(x / 4) - floor((x - BLOCK) / 4) = ceil((BLOCK - x mod 4) / 4)
+    first_strip = cont ? 6'(strips - (mcadsw_pkg::BLOCK + 3 - 32'(xin_ofs)) / 4) : 6'd0;
+  endfunction
+  logic               prep_cont;
+  logic [5:0]         l_first, r_first, w_first;
+  assign l_first = first_strip(lx_in[1:0], prep_cont, LSTRIPS);
+  assign r_first = first_strip(rx_in[1:0], prep_cont, RSTRIPS);
+  assign w_first = first_strip(prep_x0[1:0], prep_cont, WSTRIPS);
+  logic signed [CW:0] lx_rd, rx_rd, wx_rd; // first column each reader reads
+  assign lx_rd = lx_al + (CW + 1)'(4 * 32'(l_first));
+  assign rx_rd = rx_al + (CW + 1)'(4 * 32'(r_first));
+  assign wx_rd = wx_al + (CW + 1)'(4 * 32'(w_first));
 
   // ---- Memory controller and window readers ----------------------------------------------
   localparam int NR = 3;
@@ -232,36 +255,39 @@ module mcadsw_top #(
   logic [31:0] lpix, rpix, wpix;
   logic        lrd_busy_unused, rrd_busy_unused, wrd_busy_unused;
 
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((COLS + 4 + 6) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(LSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_l (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i (base_ly_q), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (lx_al), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .x0_i (lx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .strips_i (4'(LSTRIPS - 32'(l_first))),
     .busy_o (lrd_busy_unused),
     .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .gnt_i (rd_gnt[0]),
     .rvalid_i (rd_rvalid[0]), .rdata_i (rd_rdata),
     .pix_valid_o (lpix_valid), .pix_ready_i (lpix_ready), .pix_data_o (lpix)
   );
 
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS((RCOLS + 4 + 6) / 4), .PLANES(1), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(RSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_r (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i (base_ry_q), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (rx_al), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .x0_i (rx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
+    .strips_i (5'(RSTRIPS - 32'(r_first))),
     .busy_o (rrd_busy_unused),
     .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .gnt_i (rd_gnt[1]),
     .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
     .pix_valid_o (rpix_valid), .pix_ready_i (rpix_ready), .pix_data_o (rpix)
   );
 
-  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(COLS / 4 + 1), .PLANES(3), .CW(CW), .AW(AW))
+  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(WSTRIPS), .PLANES(3), .CW(CW), .AW(AW))
   u_rd_weight (
     .clk_i, .rst_ni,
     .start_i (prep_start), .base_i ({base_lv_q, base_lu_q, base_ly_q}), .stride_i (stride_q),
     .width_i (width_q), .height_i (height_q),
-    .x0_i (wx_al), .y0_i (prep_y0),
+    .x0_i (wx_rd), .y0_i (prep_y0),
+    .strips_i (4'(WSTRIPS - 32'(w_first))),
     .busy_o (wrd_busy_unused),
     .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .gnt_i (rd_gnt[2]),
     .rvalid_i (rd_rvalid[2]), .rdata_i (rd_rdata),
@@ -297,7 +323,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (lx_in[1:0]),
+    .cfg_ofs_i (lx_in[1:0]), .cfg_first_i (4'(l_first)),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
     .done_o (cl_done), .busy_o (cl_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -309,7 +335,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (rx_in[1:0]),
+    .cfg_ofs_i (rx_in[1:0]), .cfg_first_i (5'(r_first)),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -320,7 +346,7 @@ module mcadsw_top #(
     .clk_i, .rst_ni,
     .thr_i (thr_q),
     .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused), .cfg_bank_i (prep_bank),
-    .cfg_ofs_i (prep_x0[1:0]),
+    .cfg_ofs_i (prep_x0[1:0]), .cfg_first_i (4'(w_first)),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
     .done_o (wg_done), .busy_o (wg_busy_unused),
     .vrd_en_i (vrd_en), .vrd_bank_i (agg_bank), .vrd_row_i (vrd_row),

@@ -34,10 +34,7 @@ module mcadsw_vert_agg #(
 
   // Hamming distance of two census codes (Eq. 1).
   function automatic logic [CNTB-1:0] hamming(input logic [CB-1:0] a, input logic [CB-1:0] b);
-    logic [CB-1:0] x;
-    x = a ^ b;
-    hamming = '0;
-    for (int i = 0; i < CB; i++) hamming = hamming + {{(CNTB - 1){1'b0}}, x[i]};
+    hamming = CNTB'($countones(a ^ b));
   endfunction
 
   // Multiplication by a one-hot weight is a shift.
@@ -46,29 +43,25 @@ module mcadsw_vert_agg #(
     else weigh = VB'(cost) << (e - WB'(1));
   endfunction
 
-  // The LANES column sums, as a function called only when a group is valid, so a
-  // simulator skips it in idle cycles; the hardware is the same.
-  function automatic logic [LANES*VB-1:0] column_sums(input logic [LANES*WINDOW*CB-1:0] l,
-                                                      input logic [LANES*WINDOW*CB-1:0] r,
-                                                      input logic [LANES*WINDOW*WB-1:0] w);
-    for (int ln = 0; ln < LANES; ln++) begin
-      logic [VB-1:0] sum;
-      sum = '0;
-      for (int k = 0; k < WINDOW; k++) begin
-        sum = sum + weigh(hamming(l[(ln*WINDOW + k)*CB +: CB], r[(ln*WINDOW + k)*CB +: CB]),
-                          w[(ln*WINDOW + k)*WB +: WB]);
-      end
-      column_sums[ln*VB +: VB] = sum;
-    end
-  endfunction
-
+  // The LANES column sums, computed only when a group is valid, so a simulator
+  // skips them in idle cycles; the hardware is the same.
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       valid_o <= 1'b0;
       ev_o    <= '0;
     end else begin
       valid_o <= valid_i;
-      if (valid_i) ev_o <= column_sums(cen_l_i, cen_r_i, wv_i);
+      if (valid_i) begin
+        for (int ln = 0; ln < LANES; ln++) begin : b_lane
+          logic [VB-1:0] sum;
+          sum = '0;
+          for (int k = 0; k < WINDOW; k++)
+            sum = sum + weigh(hamming(cen_l_i[(ln*WINDOW + k)*CB +: CB],
+                                      cen_r_i[(ln*WINDOW + k)*CB +: CB]),
+                              wv_i[(ln*WINDOW + k)*WB +: WB]);
+          ev_o[ln*VB +: VB] <= sum;
+        end
+      end
     end
   end
 

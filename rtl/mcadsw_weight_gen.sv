@@ -7,7 +7,11 @@
 // columns 4s .. 4s+3, one 32-bit word a row, byte 0 the leftmost column. The
 // strips start at the aligned memory word left of the window, cfg_ofs_i
 // (0..3) columns early, so each strip word is one memory read: COLS/4 + 1
-// strips a plane.
+// strips a plane. The input buffers are circular over those strips, as the
+// census transformer's (partial column reuse, Sec. IV): cfg_first_i > 0 means
+// the window continues the previous block's 18 columns to the right, the
+// buffers advance by WPR - cfg_first_i strips and only strips cfg_first_i ..
+// WPR-1 of each plane are delivered.
 // The memory side reads at clamped coordinates, so the weights of positions
 // outside the image are those of the nearest edge pixel (docs/algorithm.md).
 //
@@ -36,6 +40,8 @@ module mcadsw_weight_gen #(
   parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
   parameter int BANKS  = 2,
+  parameter int WPR    = COLS / 4 + 1,              // strips a plane (offset 0..3)
+  parameter int SB     = $clog2(WPR),
   parameter int XB     = $clog2(COLS),
   parameter int RB     = $clog2(BLOCK),
   parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
@@ -47,6 +53,7 @@ module mcadsw_weight_gen #(
   output logic                       cfg_ready_o,
   input  logic [BB-1:0]              cfg_bank_i,
   input  logic [1:0]                 cfg_ofs_i,    // window column 0 is input column cfg_ofs_i
+  input  logic [SB-1:0]              cfg_first_i,  // first strip delivered (0: whole window)
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
   input  logic [31:0]                pix_data_i,
@@ -67,19 +74,24 @@ module mcadsw_weight_gen #(
 );
 
   localparam int RADIUS = WINDOW / 2;
-  localparam int WPR    = COLS / 4 + 1;             // strips a plane (offset 0..3)
   localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
 
-  if (COLS % 4 != 0 || ROWS != BLOCK + WINDOW - 1 || COLS != BLOCK + WINDOW - 1 ||
+  if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 || COLS != BLOCK + WINDOW - 1 ||
       NTHR != (1 << WB) - 1) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
+
+  // v mod n for 0 <= v < 2n.
+  function automatic int wrap(input int v, input int n);
+    wrap = (v >= n) ? v - n : v;
+  endfunction
 
   // ---- Control ------------------------------------------------------------------
   typedef enum logic [1:0] {IDLE, LOAD, VERT, HORZ} state_e;
   state_e        state_q;
   logic [BB-1:0] bank_q;
   logic [1:0]    ofs_q;
+  logic [SB-1:0] base_q;       // buffer strip of window strip 0
   logic [RB-1:0] r_q;
   logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
   logic          pix_fire;
@@ -94,6 +106,7 @@ module mcadsw_weight_gen #(
       state_q <= IDLE;
       bank_q  <= '0;
       ofs_q   <= '0;
+      base_q  <= '0;
       r_q     <= '0;
       c_q     <= '0;
       done_o  <= 1'b0;
@@ -104,6 +117,7 @@ module mcadsw_weight_gen #(
           state_q <= LOAD;
           bank_q  <= cfg_bank_i;
           ofs_q   <= cfg_ofs_i;
+          base_q  <= SB'(wrap(32'(base_q) + WPR - 32'(cfg_first_i), WPR));
         end
         LOAD: if (win_done) begin
           state_q <= VERT;
@@ -146,7 +160,6 @@ module mcadsw_weight_gen #(
   // an input word (4 pixels of a row) writes one byte into each bank, and the
   // kernel reads a whole column at once ("column by column", Fig. 11).
   localparam int CW = ROWS * 8;             // column word
-  localparam int SB = $clog2(WPR);
   logic [1:0]       in_plane;
   logic [SB-1:0]    in_strip;               // columns 4s .. 4s+3
   logic             strip_end, win_done;    // last row of a strip / of the window
@@ -155,6 +168,7 @@ module mcadsw_weight_gen #(
   mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3)) u_stage (
     .clk_i, .rst_ni,
     .start_i (cfg_valid_i && cfg_ready_o),
+    .first_i (cfg_first_i),
     .wr_i    (pix_fire),
     .data_i  (pix_data_i),
     .last_o  (strip_end),
@@ -166,9 +180,11 @@ module mcadsw_weight_gen #(
 
 
   logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
-  logic [4*3*CW-1:0] bank_rd;
-  logic [XB:0]       in_col;                // its input column: window column c + offset
-  assign in_col = {1'b0, c_q} + (XB + 1)'(ofs_q);
+  logic [4*CW-1:0]   y_rd, u_rd, v_rd;      // the word each bank presents
+  logic [XB:0]       in_col;                // its buffer column: 4 base + offset + window column c
+  logic [SB-1:0]     wstrip;                // buffer strip of the finished input strip
+  assign in_col = (XB + 1)'(wrap(4*32'(base_q) + 32'(ofs_q) + 32'(c_q), 4*WPR));
+  assign wstrip = SB'(wrap(32'(base_q) + 32'(in_strip), WPR));
 
   for (genvar b = 0; b < 4; b++) begin : g_ibank
     logic [CW-1:0] wr_col;                  // column 4s + b
@@ -178,13 +194,16 @@ module mcadsw_weight_gen #(
     logic [CW-1:0] u_q [WPR];
     logic [CW-1:0] v_q [WPR];
     always_ff @(posedge clk_i) begin
-      if (strip_end && in_plane == 2'd0) y_q[in_strip] <= wr_col;
-      if (strip_end && in_plane == 2'd1) u_q[in_strip] <= wr_col;
-      if (strip_end && in_plane == 2'd2) v_q[in_strip] <= wr_col;
+      if (strip_end && in_plane == 2'd0) y_q[wstrip] <= wr_col;
+      if (strip_end && in_plane == 2'd1) u_q[wstrip] <= wr_col;
+      if (strip_end && in_plane == 2'd2) v_q[wstrip] <= wr_col;
     end
-    assign bank_rd[b*3*CW +: 3*CW] = {v_q[SB'(in_col[XB:2])], u_q[SB'(in_col[XB:2])], y_q[SB'(in_col[XB:2])]};
+    assign y_rd[b*CW +: CW] = y_q[SB'(in_col[XB:2])];
+    assign u_rd[b*CW +: CW] = u_q[SB'(in_col[XB:2])];
+    assign v_rd[b*CW +: CW] = v_q[SB'(in_col[XB:2])];
   end
-  assign column = bank_rd[32'(in_col[1:0])*3*CW +: 3*CW];
+  assign column = {v_rd[32'(in_col[1:0])*CW +: CW], u_rd[32'(in_col[1:0])*CW +: CW],
+                   y_rd[32'(in_col[1:0])*CW +: CW]};
 
   // ---- Horizontal row buffer (Fig. 11): the centre rows of every column -----------
   // Written during the vertical pass (row r + RADIUS of column c at position

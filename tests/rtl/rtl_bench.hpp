@@ -44,4 +44,15 @@ StreamResult stream_words(V& t, const std::vector<uint32_t>& words, double stall
   return r;
 }
 
+// Partial column reuse (docs/architecture.md 5.4): the first strip a window
+// reader delivers when a block continues its left neighbour, whose input
+// window started `block` columns earlier. A window of `strips` strips starts at
+// the aligned word at or left of its first input column `xin`; the strips both
+// windows hold are already in the block's input buffer.
+inline int first_strip(int xin, bool cont, int strips, int block = 18) {
+  if (!cont) return 0;
+  auto floor_div4 = [](int v) { return v >= 0 ? v / 4 : -((-v + 3) / 4); };
+  return strips - (floor_div4(xin) - floor_div4(xin - block));
+}
+
 }  // namespace mcadsw::sim
