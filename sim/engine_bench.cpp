@@ -1,12 +1,15 @@
 #include "engine_bench.hpp"
 
 #include <verilated.h>
+#if VM_TRACE_FST
 #include <verilated_fst_c.h>
+#endif
 
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 #include "Vmcadsw_top.h"
 #include "vbits.hpp"
@@ -18,10 +21,10 @@ namespace {
 // per row, each starting on a 4 KiB boundary after a 4 KiB guard.
 struct Layout {
   uint32_t stride, plane, ly, lu, lv, ry, out, total;
-  Layout(int w, int h) {
+  Layout(int w, int h, uint32_t origin = 0) {
     stride = uint32_t((w + 3) / 4 * 4);
     plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
-    ly = 4096;
+    ly = origin + 4096;
     lu = ly + plane;
     lv = lu + plane;
     ry = lv + plane;
@@ -41,9 +44,13 @@ class Engine {
     ctx_->traceEverOn(!opt.waves.empty());
     top_ = std::make_unique<Vmcadsw_top>(ctx_.get());
     if (!opt.waves.empty()) {
+#if VM_TRACE_FST
       trace_ = std::make_unique<VerilatedFstC>();
       top_->trace(trace_.get(), 99);
       trace_->open(opt.waves.c_str());
+#else
+      throw std::runtime_error("this model was built without FST tracing: no waves");
+#endif
     }
     top_->clk_i = 0;
     top_->rst_ni = 0;
@@ -51,11 +58,21 @@ class Engine {
     top_->mem_gnt_i = 0;
     top_->mem_rvalid_i = 0;
     top_->eval();
+    reset();
+  }
+  // Asynchronous reset for 4 cycles, with the memory system.
+  void reset() {
+    top_->rst_ni = 0;
+    top_->start_i = 0;
+    top_->eval();
+    mem_.reset();
     for (int i = 0; i < 4; ++i) cycle();
     top_->rst_ni = 1;
   }
   ~Engine() {
+#if VM_TRACE_FST
     if (trace_) trace_->close();
+#endif
     top_->final();
   }
 
@@ -67,10 +84,14 @@ class Engine {
     t.clk_i = 0;
     t.eval();
     mem_.serve(t);
+#if VM_TRACE_FST
     if (trace_) trace_->dump(2 * time_);
+#endif
     t.clk_i = 1;
     t.eval();
+#if VM_TRACE_FST
     if (trace_) trace_->dump(2 * time_ + 1);
+#endif
     mem_.end_cycle();
     ++time_;
   }
@@ -80,7 +101,9 @@ class Engine {
   const EngineOptions& opt_;
   std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
   std::unique_ptr<Vmcadsw_top> top_;
+#if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> trace_;
+#endif
   uint64_t time_ = 0;
 };
 
@@ -99,8 +122,9 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
     set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
 }
 
-// Runs from start until done_o or the cycle limit.
-void run_frame(Engine& e, EngineResult& r, long limit, bool progress) {
+// Runs from start until done_o or the cycle limit; `start_again_at` > 0 pulses
+// start_i again that many cycles after the start.
+void run_frame(Engine& e, EngineResult& r, long limit, bool progress, long start_again_at = 0) {
   auto& t = e.top();
   t.start_i = 1;
   e.cycle();
@@ -112,7 +136,9 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress) {
       r.timed_out = true;
       break;
     }
+    t.start_i = n == start_again_at;
     e.cycle();
+    t.start_i = 0;
     if (progress && n % 2000000 == 0)
       std::fprintf(stderr, "  ... %ld Mcycles simulated\n", n / 1000000);
   }
@@ -125,36 +151,27 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress) {
   r.error_code = int(t.error_code_o);
 }
 
-}  // namespace
+// Generous: four times the memory-bound estimate of 8000 cycles per block.
+long frame_limit(int W, int H, const EngineOptions& opt) {
+  const long blocks = long((W + kBlock - 1) / kBlock) * ((H + kBlock - 1) / kBlock);
+  return opt.max_cycles > 0 ? opt.max_cycles : 40000 * blocks + 100000;
+}
 
-EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
-                        const EngineOptions& opt) {
-  const int W = left.width(), H = left.height();
-  const Layout lay(W, H);
-  MemoryModel mem(lay.total, opt.latency);
+// Writes a frame's planes at its layout and fills its disparity plane with
+// 0xff ("never written").
+void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right) {
   put_plane(mem, lay.ly, lay.stride, left.y);
   put_plane(mem, lay.lu, lay.stride, left.u);
   put_plane(mem, lay.lv, lay.stride, left.v);
   put_plane(mem, lay.ry, lay.stride, right.y);
-  for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.out + i] = 0xff;  // "never written"
-  mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
+  for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.out + i] = 0xff;
+}
 
-  EngineResult r;
-  r.width = W;
-  r.height = H;
-  r.disparities = cfg.disparities;
-  {
-    Engine e(mem, opt);
-    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities},
-            cfg.table);
-    // Generous: four times the memory-bound estimate of 8000 cycles per block.
-    const long blocks = long((W + kBlock - 1) / kBlock) * ((H + kBlock - 1) / kBlock);
-    run_frame(e, r, opt.max_cycles > 0 ? opt.max_cycles : 40000 * blocks + 100000, opt.progress);
-  }
-  r.bad_writes = mem.bad_writes();
-
-  // Scoreboard: every pixel of the plane against the reference, both ways
-  // (a pixel the engine never wrote still holds 0xff, never a legal disparity).
+// Scoreboard: every pixel of the plane against the reference, both ways (a
+// pixel the engine never wrote still holds 0xff, never a legal disparity).
+void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right,
+           const Config& cfg, const EngineOptions& opt, EngineResult& r) {
+  const int W = left.width(), H = left.height();
   Config ref_cfg = cfg;
   Intermediates keep;
   const Plane ref = disparity_map(left, right, ref_cfg, &keep);
@@ -176,8 +193,75 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
     }
   if (r.bad_writes) rep << "  " << r.bad_writes << " bytes written outside the disparity plane, first: "
                         << mem.first_bad_write() << "\n";
-  r.report = rep.str();
+  r.report += rep.str();
+}
+
+}  // namespace
+
+EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                        const EngineOptions& opt) {
+  const int W = left.width(), H = left.height();
+  const Layout lay(W, H);
+  MemoryModel mem(lay.total, opt.latency);
+  load_frame(mem, lay, left, right);
+  mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
+
+  EngineResult r;
+  r.width = W;
+  r.height = H;
+  r.disparities = cfg.disparities;
+  {
+    Engine e(mem, opt);
+    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities},
+            cfg.table);
+    run_frame(e, r, frame_limit(W, H, opt), opt.progress);
+  }
+  r.bad_writes = mem.bad_writes();
+  score(mem, lay, left, right, cfg, opt, r);
   return r;
+}
+
+std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const EngineOptions& opt,
+                                     FaultSpec fault) {
+  std::vector<Layout> lays;
+  uint32_t origin = 0;
+  for (const Frame& f : frames) {
+    lays.emplace_back(f.left.width(), f.left.height(), origin);
+    origin = lays.back().total;
+  }
+  MemoryModel mem(origin, opt.latency);
+  for (size_t k = 0; k < frames.size(); ++k) load_frame(mem, lays[k], frames[k].left, frames[k].right);
+
+  std::vector<EngineResult> results(frames.size());
+  Engine e(mem, opt);
+  long bad_before = 0;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const Frame& f = frames[k];
+    const Layout& lay = lays[k];
+    const int W = f.left.width(), H = f.left.height();
+    EngineResult& r = results[k];
+    r.width = W;
+    r.height = H;
+    r.disparities = f.cfg.disparities;
+    // Only this frame's disparity plane may be written while it runs.
+    mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
+    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, f.cfg.disparities},
+            f.cfg.table);
+    if (k == 0 && fault.kind == Fault::kResetMidFrame) {
+      EngineResult aborted;
+      run_frame(e, aborted, fault.at_cycle, false);
+      if (!aborted.timed_out) throw std::runtime_error("frame 0 finished before the reset was due");
+      e.reset();
+      program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, f.cfg.disparities},
+              f.cfg.table);
+    }
+    run_frame(e, r, frame_limit(W, H, opt), opt.progress,
+              fault.kind == Fault::kStartWhileBusy ? fault.at_cycle : 0);
+    r.bad_writes = mem.bad_writes() - bad_before;
+    bad_before = mem.bad_writes();
+    score(mem, lay, f.left, f.right, f.cfg, opt, r);
+  }
+  return results;
 }
 
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "memory_model.hpp"
 #include "mcadsw/ref.hpp"
@@ -37,6 +38,24 @@ struct EngineResult {
 // access out of range, model errors).
 EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
                         const EngineOptions& opt);
+
+// Several frames through one engine instance, in the same memory, without a
+// reset between them (back to back), each scored like run_engine. A fault
+// can be injected into every frame at `at_cycle` cycles after its start:
+//   kResetMidFrame   reset (engine and memory system) in the middle of frame 0,
+//                    which is then started again from the beginning;
+//   kStartWhileBusy  start_i pulsed again while the frame runs (must be ignored).
+struct Frame {
+  YuvImage left, right;
+  Config cfg;
+};
+enum class Fault { kNone, kResetMidFrame, kStartWhileBusy };
+struct FaultSpec {
+  Fault kind = Fault::kNone;
+  long at_cycle = 0;
+};
+std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const EngineOptions& opt,
+                                     FaultSpec fault = {});
 
 // Runs one frame with a raw configuration and reports the engine's status,
 // without comparing (fault tests: rejected configurations).

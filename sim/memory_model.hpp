@@ -56,6 +56,9 @@ class MemoryModel {
   }
 
   void end_cycle() { ++cycle_; }
+  // The memory system is reset with the engine: responses still in flight are
+  // dropped (docs/memory_map.md).
+  void reset() { pending_.clear(); }
 
   long reads() const { return reads_; }
   long writes() const { return writes_; }

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
+#include <vector>
 
 #include "engine_bench.hpp"
 #include "mcadsw/image_io.hpp"
@@ -70,6 +72,60 @@ TEST(Engine, FixedLatencyAndSingleDisparity) {
   EngineOptions opt;
   opt.latency.fixed = 3;
   expect_exact(sim::run_engine(test::random_yuv(37, 20, rng), test::random_yuv(37, 20, rng), cfg, opt));
+}
+
+// Frames back to back through one engine, no reset between them: sizes, D and
+// weight tables change from frame to frame, and each frame is exact.
+TEST(Engine, BackToBackFramesWithoutReset) {
+  std::mt19937 rng(4);
+  std::vector<sim::Frame> frames;
+  auto add = [&](int w, int h, int d, double gamma) {
+    Config cfg;
+    cfg.disparities = d;
+    cfg.table = make_weight_table(gamma);
+    frames.push_back({test::random_yuv(w, h, rng), test::random_yuv(w, h, rng), cfg});
+  };
+  add(41, 23, 12, 22.0);
+  add(13, 9, 8, 60.0);
+  add(37, 20, 1, 10.0);
+  EngineOptions opt;
+  opt.latency.random = true;
+  opt.latency.seed = 11;
+  for (const EngineResult& r : sim::run_frames(frames, opt)) expect_exact(r);
+}
+
+// Reset in the middle of a frame (engine and memory system), then the same
+// frame from the start and another one: both exact, nothing written elsewhere.
+TEST(Engine, ResetInMidFrameThenCleanFrames) {
+  std::mt19937 rng(5);
+  Config cfg;
+  cfg.disparities = 12;
+  std::vector<sim::Frame> frames;
+  frames.push_back({test::random_yuv(41, 23, rng), test::random_yuv(41, 23, rng), cfg});
+  frames.push_back({test::random_yuv(20, 30, rng), test::random_yuv(20, 30, rng), cfg});
+  for (long at : {50L, 4000L, 15000L}) {
+    SCOPED_TRACE("reset after " + std::to_string(at) + " cycles");
+    for (const EngineResult& r :
+         sim::run_frames(frames, {}, {sim::Fault::kResetMidFrame, at}))
+      expect_exact(r);
+  }
+}
+
+// start_i while busy is ignored: the frame is exact and takes as many cycles
+// as without the second start.
+TEST(Engine, StartWhileBusyIsIgnored) {
+  std::mt19937 rng(6);
+  Config cfg;
+  cfg.disparities = 12;
+  const std::vector<sim::Frame> frames{
+      {test::random_yuv(41, 23, rng), test::random_yuv(41, 23, rng), cfg}};
+  const EngineResult clean = sim::run_frames(frames, {}).at(0);
+  expect_exact(clean);
+  for (long at : {1L, 7000L}) {
+    const EngineResult r = sim::run_frames(frames, {}, {sim::Fault::kStartWhileBusy, at}).at(0);
+    expect_exact(r);
+    EXPECT_EQ(r.cycles, clean.cycles) << "a start while busy changed the frame (at " << at << ")";
+  }
 }
 
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,
