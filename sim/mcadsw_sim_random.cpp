@@ -1,0 +1,205 @@
+// mcadsw_sim_random: random differential regression of the Verilated engine
+// against the reference (`make sim-random N=<cases> SEED=<s>`).
+//   mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR]
+// Case k of seed S is a function of (S, k) only: a random stereo pair (noise,
+// flat, stripes, gradients, shifted copies, crops of the bundled Middlebury
+// pairs), a random size (smaller than the window, not a multiple of 18, up to
+// the maximum width), a random D in 1..DMAX, a random legal weight table and
+// random memory latency and grant stalls. Every pixel is compared; a failing
+// case prints the one command that reruns it alone.
+// Exit status: 0 all cases bit-exact, 1 a mismatch or harness error, 2 usage.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "engine_bench.hpp"
+#include "mcadsw/image_io.hpp"
+
+namespace {
+
+using namespace mcadsw;
+
+const char* kUsage = "usage: mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR]\n";
+
+struct Case {
+  std::string pattern;
+  YuvImage left, right;
+  Config cfg;
+  sim::EngineOptions opt;
+};
+
+Plane pattern_plane(const std::string& kind, int w, int h, std::mt19937& rng) {
+  Plane p(w, h);
+  std::uniform_int_distribution<int> byte(0, 255);
+  const int base = byte(rng), amp = byte(rng);
+  const int period = std::uniform_int_distribution<int>(2, 24)(rng);
+  const bool vertical = rng() % 2;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      int v = base;
+      if (kind == "noise") v = byte(rng);
+      else if (kind == "stripes") v = (((vertical ? x : y) / period) % 2) ? base : amp;
+      else if (kind == "gradient") v = (base + (x * amp) / std::max(1, w) + (y * 37) / std::max(1, h)) & 255;
+      p.at(x, y) = uint8_t(v);
+    }
+  return p;
+}
+
+// The right view: the left one shifted by a disparity, with a little noise,
+// or an unrelated image.
+YuvImage right_view(const YuvImage& l, std::mt19937& rng) {
+  const int shift = std::uniform_int_distribution<int>(0, 70)(rng);
+  const int noise = std::uniform_int_distribution<int>(0, 6)(rng);
+  YuvImage r = l;
+  for (Plane* p : {&r.y, &r.u, &r.v}) {
+    const Plane& src = p == &r.y ? l.y : p == &r.u ? l.u : l.v;
+    for (int y = 0; y < p->height; ++y)
+      for (int x = 0; x < p->width; ++x) {
+        const int v = src.clamped(x + shift, y) + std::uniform_int_distribution<int>(-noise, noise)(rng);
+        p->at(x, y) = uint8_t(std::clamp(v, 0, 255));
+      }
+  }
+  return r;
+}
+
+YuvImage crop(const YuvImage& img, int x0, int y0, int w, int h) {
+  YuvImage c{Plane(w, h), Plane(w, h), Plane(w, h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      c.y.at(x, y) = img.y.clamped(x0 + x, y0 + y);
+      c.u.at(x, y) = img.u.clamped(x0 + x, y0 + y);
+      c.v.at(x, y) = img.v.clamped(x0 + x, y0 + y);
+    }
+  return c;
+}
+
+Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvImage>>& real) {
+  std::seed_seq seq{seed, uint32_t(k), 0x6d636164u};
+  std::mt19937 rng(seq);
+  Case c;
+  // Size: mostly small, some smaller than the 31x31 window, a few wide strips
+  // up to the maximum width (kept short so a case stays fast).
+  int w, h;
+  const int kind = std::uniform_int_distribution<int>(0, 9)(rng);
+  if (kind == 0) {
+    w = std::uniform_int_distribution<int>(1, 30)(rng);
+    h = std::uniform_int_distribution<int>(1, 30)(rng);
+  } else if (kind == 1) {
+    w = std::uniform_int_distribution<int>(200, kMaxWidth)(rng);
+    h = std::uniform_int_distribution<int>(1, 12)(rng);
+  } else {
+    w = std::uniform_int_distribution<int>(8, 110)(rng);
+    h = std::uniform_int_distribution<int>(8, 60)(rng);
+  }
+  static const char* kPatterns[] = {"noise", "flat", "stripes", "gradient", "real"};
+  c.pattern = kPatterns[std::uniform_int_distribution<int>(0, real.empty() ? 3 : 4)(rng)];
+  if (c.pattern == "real") {
+    const auto& pair = real[rng() % real.size()];
+    const int x0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.width() - w))(rng);
+    const int y0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.height() - h))(rng);
+    c.left = crop(pair.first, x0, y0, w, h);
+    c.right = crop(pair.second, x0, y0, w, h);
+  } else {
+    c.left = YuvImage{pattern_plane(c.pattern, w, h, rng), pattern_plane(c.pattern, w, h, rng),
+                      pattern_plane(c.pattern, w, h, rng)};
+    if (rng() % 4 == 0) {
+      c.right = YuvImage{pattern_plane("noise", w, h, rng), pattern_plane("noise", w, h, rng),
+                         pattern_plane("noise", w, h, rng)};
+    } else {
+      c.right = right_view(c.left, rng);
+    }
+  }
+  c.cfg.disparities = std::uniform_int_distribution<int>(1, kDmax)(rng);
+  // A random legal table: non-increasing, values from the 8 legal weights.
+  if (rng() % 3 == 0) {
+    c.cfg.table = make_weight_table(std::uniform_real_distribution<double>(2.0, 200.0)(rng));
+  } else {
+    int code = std::uniform_int_distribution<int>(0, 7)(rng);
+    for (auto& v : c.cfg.table) {
+      if (code > 0 && rng() % 40 == 0) code -= 1 + int(rng() % code);
+      v = uint8_t(weight_from_code(code));
+    }
+  }
+  c.opt.latency.random = rng() % 2;
+  c.opt.latency.seed = rng();
+  c.opt.latency.max_random = std::uniform_int_distribution<int>(1, 12)(rng);
+  c.opt.latency.gnt_prob = std::uniform_real_distribution<double>(0.3, 1.0)(rng);
+  if (!c.opt.latency.random) c.opt.latency.fixed = std::uniform_int_distribution<int>(0, 4)(rng);
+  return c;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int cases = 200, only = -1;
+  uint32_t seed = 1;
+  std::string data = MCADSW_DATA_DIR;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      auto val = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "--cases") cases = std::stoi(val());
+      else if (a == "--seed") seed = uint32_t(std::stoul(val()));
+      else if (a == "--case") only = std::stoi(val());
+      else if (a == "--data") data = val();
+      else if (a == "-h" || a == "--help") {
+        std::cout << kUsage;
+        return 0;
+      } else throw std::invalid_argument("unknown option " + a);
+    }
+    if (cases < 1) throw std::invalid_argument("--cases must be at least 1");
+    if (only < -1) throw std::invalid_argument("--case must be 0 or more");
+  } catch (const std::exception& e) {
+    std::cerr << "mcadsw_sim_random: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+
+  std::vector<std::pair<YuvImage, YuvImage>> real;
+  try {
+    for (const char* pair : {"tsukuba", "venus", "teddy", "cones"}) {
+      const std::string dir = data + "/middlebury/" + pair + "/";
+      real.emplace_back(load_yuv(dir + "left.png"), load_yuv(dir + "right.png"));
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "mcadsw_sim_random: " << e.what() << " (crops of real pairs need --data DIR)\n";
+    return 2;
+  }
+
+  const int first = only >= 0 ? only : 0, last = only >= 0 ? only : cases - 1;
+  long failures = 0, run = 0, cycles = 0;
+  for (int k = first; k <= last; ++k) {
+    const Case c = make_case(seed, k, real);
+    sim::EngineResult r;
+    std::string err;
+    try {
+      r = sim::run_engine(c.left, c.right, c.cfg, c.opt);
+    } catch (const std::exception& e) {
+      err = e.what();
+    }
+    ++run;
+    cycles += r.cycles;
+    const bool ok = err.empty() && !r.timed_out && !r.error && r.mismatches == 0 && r.bad_writes == 0;
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d  %s latency  %8ld cycles  %s\n", k, c.pattern.c_str(),
+                c.left.width(), c.left.height(), c.cfg.disparities,
+                c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
+                r.cycles, ok ? "MATCH" : "FAIL");
+    if (!ok) {
+      ++failures;
+      if (!err.empty()) std::printf("  harness error: %s\n", err.c_str());
+      if (r.timed_out) std::printf("  the engine did not finish\n");
+      if (r.error) std::printf("  configuration rejected, code %d\n", r.error_code);
+      std::printf("  %ld mismatches\n%s", r.mismatches, r.report.c_str());
+      std::printf("  reproduce: %s --seed %u --case %d\n", argv[0], seed, k);
+    }
+    std::fflush(stdout);
+  }
+  std::printf("sim-random: %ld case(s), seed %u, %ld cycles, %ld mismatching case(s)\n", run, seed,
+              cycles, failures);
+  return failures ? 1 : 0;
+}
