@@ -4,7 +4,12 @@
 #   make test    build everything and run the test suite (what CI runs)
 #   make sim     engine regression on the bundled pairs, bit-exact against the reference
 #                (CASE=<name> one case, WAVES=1 an FST; make wave CASE=<name> opens it)
+#   make sim-random N=<cases> SEED=<s>  random pairs, sizes, D, tables and memory timing
+#                against the reference (default 200 cases, seed 1)
 #   make ref-sim the reference model alone: Middlebury error table
+#   make synth   Yosys -> OSU 0.18 um gates, memories as macros, OpenSTA timing
+#                (build/synth/report.md; DMAX=16 for the reduced configuration)
+#   make gls     gate-level simulation of the synthesised netlist against the RTL
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
 #   make bench   Google Benchmark of the reference (MDE/s)
@@ -13,7 +18,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim wave ref-sim lint rtl-pkg bench sweep clean
+.PHONY: all bootstrap configure build test sim wave sim-random ref-sim synth gls lint rtl-pkg bench sweep clean
 
 all: build
 
@@ -33,6 +38,12 @@ test: build
 sim: build
 	@scripts/sim_regression.sh $(BUILD_DIR) "$(CASE)" "$(WAVES)"
 
+# make sim-random [N=200] [SEED=1]: random differential regression
+N    ?= 200
+SEED ?= 1
+sim-random: build
+	@$(BUILD_DIR)/bin/mcadsw_sim_random --cases $(N) --seed $(SEED)
+
 # make wave CASE=<name>: open the waves of `make sim CASE=<name> WAVES=1`
 wave:
 	@f=$(BUILD_DIR)/sim/$(CASE).fst; [ -n "$(CASE)" ] || { echo "usage: make wave CASE=<name>"; exit 2; }; \
@@ -44,6 +55,14 @@ wave:
 ref-sim: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
+
+# make synth [DMAX=16]: gate count, memory inventory and timing (scripts/synth.sh)
+synth: bootstrap
+	@DMAX=$(DMAX) scripts/synth.sh
+
+# make gls [DMAX=64]: the netlist in the Verilator harness (scripts/gls.sh)
+gls: bootstrap
+	@DMAX=$(DMAX) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
 lint: bootstrap
 	@scripts/rtl_check.sh lint

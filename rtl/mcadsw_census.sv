@@ -196,8 +196,10 @@ module mcadsw_census #(
     end
   end
 
-  function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input int p);
-    luma_col = rd[(p % SUB)*LW +: LW];
+  // The sub-bank word of luma column p: an 8:1 multiplexer.
+  function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input logic [2:0] b);
+    luma_col = '0;
+    for (int i = 0; i < SUB; i++) luma_col = luma_col | (rd[i*LW +: LW] & {LW{b == 3'(i)}});
   endfunction
 
   // ---- Kernel: a column of codes (Fig. 2 template, docs/algorithm.md bit order) ---
@@ -209,7 +211,7 @@ module mcadsw_census #(
                                                    input logic [YB-1:0] hi_y);
     logic [5*LW-1:0] lcols;           // luma columns lcol .. lcol + 4
     logic [CWB-1:0]  raw;             // codes of rows 0 .. ROWS-1, unclamped
-    for (int dx = 0; dx < 5; dx++) lcols[dx*LW +: LW] = luma_col(rd, lcol + dx);
+    for (int dx = 0; dx < 5; dx++) lcols[dx*LW +: LW] = luma_col(rd, 3'(lcol + dx));
     for (int j = 0; j < ROWS; j++) begin
       logic [7:0] c;
       c = lcols[2*LW + (j + 2)*8 +: 8];
@@ -281,12 +283,17 @@ module mcadsw_census #(
     end
   end
 
-  // Lane l is census column rd_col + l, from sub-bank (rd_col + l) % 8; its
-  // WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the column word: a
-  // rotator and a row shifter, one word shift a lane.
+  // Lane l is census column rd_col + l, from sub-bank (rd_col + l) % 8 (an 8:1
+  // multiplexer); its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
+  // column word (a row shifter).
+  function automatic logic [CWB-1:0] sub_word(input logic [SUB*CWB-1:0] w, input logic [2:0] b);
+    sub_word = '0;
+    for (int i = 0; i < SUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{b == 3'(i)}});
+  endfunction
   for (genvar l = 0; l < LANES; l++) begin : g_lane
-    assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] =
-        (WINDOW*CB)'(csub_rd[((32'(rd_rot_q) + l) % SUB)*CWB +: CWB] >> (32'(rd_row_q)*CB));
+    logic [CWB-1:0] col;
+    assign col = sub_word(csub_rd, rd_rot_q + 3'(l));
+    assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
   end
 
 endmodule

@@ -37,25 +37,48 @@ module mcadsw_pingpong #(
   end
 
   // Both banks in one vector: bank b holds columns b*COLS .. b*COLS + COLS - 1.
+  // Writes and reads select among the few legal positions (a group of LANES
+  // columns; a window of RDN columns starting at HAGG*grp), so the hardware is
+  // small multiplexers rather than bit-granular shifters.
+  localparam int WGRPS = 2 * COLS / LANES;         // write positions, both banks
+  localparam int RGRPS = COLS / LANES;             // read windows of a bank
   logic [2*COLS*VB-1:0] banks_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       banks_q <= '0;
     end else if (wr_en_i) begin
-      banks_q[(32'(wr_bank_i)*COLS + 32'(wr_grp_i)*LANES)*VB +: LANES*VB] <= wr_data_i;
+      for (int p = 0; p < WGRPS; p++)
+        if (32'(wr_bank_i)*RGRPS + 32'(wr_grp_i) == p) banks_q[p*LANES*VB +: LANES*VB] <= wr_data_i;
     end
   end
 
-  logic [VB-1:0] edge_cost;
-  assign edge_cost = banks_q[(32'(rd_bank_i)*COLS + 32'(rd_last_i))*VB +: VB];
+  function automatic logic [COLS*VB-1:0] bank_of(input logic [2*COLS*VB-1:0] b, input logic sel);
+    bank_of = sel ? b[COLS*VB +: COLS*VB] : b[0 +: COLS*VB];
+  endfunction
+
+  function automatic logic [RDN*VB-1:0] window_of(input logic [COLS*VB-1:0] b, input logic [GB-1:0] grp);
+    window_of = '0;
+    for (int g = 0; g < RGRPS; g++)
+      window_of = window_of | (b[g*HAGG*VB +: RDN*VB] & {(RDN*VB){grp == GB'(g)}});
+  endfunction
+
+  function automatic logic [VB-1:0] cost_at(input logic [COLS*VB-1:0] b, input logic [CB-1:0] c);
+    cost_at = '0;
+    for (int i = 0; i < COLS; i++) cost_at = cost_at | (b[i*VB +: VB] & {VB{c == CB'(i)}});
+  endfunction
+
+  logic [COLS*VB-1:0] bank;
+  logic [RDN*VB-1:0]  window;
+  logic [VB-1:0]      edge_cost;
+  assign bank      = bank_of(banks_q, rd_bank_i);
+  assign window    = window_of(bank, rd_grp_i);
+  assign edge_cost = cost_at(bank, rd_last_i);
 
   for (genvar i = 0; i < RDN; i++) begin : g_rd
     logic [CB:0] col;
     assign col = (CB + 1)'(32'(rd_grp_i)*HAGG + i);
-    assign rd_data_o[i*VB +: VB] =
-        (col > {1'b0, rd_last_i}) ? edge_cost
-                                  : banks_q[(32'(rd_bank_i)*COLS + 32'(rd_grp_i)*HAGG + i)*VB +: VB];
+    assign rd_data_o[i*VB +: VB] = (col > {1'b0, rd_last_i}) ? edge_cost : window[i*VB +: VB];
   end
 
 endmodule

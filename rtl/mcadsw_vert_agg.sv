@@ -34,7 +34,11 @@ module mcadsw_vert_agg #(
 
   // Hamming distance of two census codes (Eq. 1).
   function automatic logic [CNTB-1:0] hamming(input logic [CB-1:0] a, input logic [CB-1:0] b);
-    hamming = CNTB'($countones(a ^ b));
+    logic [CB-1:0] x;
+    x = a ^ b;
+    hamming = '0;
+    // An adder of the bits ($countones is miscomputed by Icarus Verilog 11).
+    for (int i = 0; i < CB; i++) hamming = hamming + CNTB'(x[i]);
   endfunction
 
   // Multiplication by a one-hot weight is a shift.

@@ -202,8 +202,12 @@ module mcadsw_weight_gen #(
     assign u_rd[b*CW +: CW] = u_q[SB'(in_col[XB:2])];
     assign v_rd[b*CW +: CW] = v_q[SB'(in_col[XB:2])];
   end
-  assign column = {v_rd[32'(in_col[1:0])*CW +: CW], u_rd[32'(in_col[1:0])*CW +: CW],
-                   y_rd[32'(in_col[1:0])*CW +: CW]};
+  function automatic logic [CW-1:0] bank_word(input logic [4*CW-1:0] w, input logic [1:0] b);
+    bank_word = '0;
+    for (int i = 0; i < 4; i++) bank_word = bank_word | (w[i*CW +: CW] & {CW{b == 2'(i)}});
+  endfunction
+  assign column = {bank_word(v_rd, in_col[1:0]), bank_word(u_rd, in_col[1:0]),
+                   bank_word(y_rd, in_col[1:0])};
 
   // ---- Horizontal row buffer (Fig. 11): the centre rows of every column -----------
   // Written during the vertical pass (row r + RADIUS of column c at position
@@ -212,10 +216,6 @@ module mcadsw_weight_gen #(
   logic [COLS*PW-1:0] hrow_q [BLOCK];
   logic [COLS*PW-1:0] hrow;
   assign hrow = hrow_q[r_q];
-
-  function automatic logic [PW-1:0] col_pixel(input logic [3*CW-1:0] col, input int y);
-    col_pixel = {col[2*CW + y*8 +: 8], col[CW + y*8 +: 8], col[y*8 +: 8]};
-  endfunction
 
   function automatic logic [DCB-1:0] absdiff(input logic [7:0] a, input logic [7:0] b);
     logic [7:0] d;
@@ -229,27 +229,52 @@ module mcadsw_weight_gen #(
 
   // ---- Kernel: WINDOW colour distances and table lookups ----------------------------
   // Vertical (h = 0): pixels (c, r+k) against (c, r+R) from the column word;
-  // horizontal (h = 1): (c+k, r+R) against (c+R, r+R) from the row buffer.
-  // A function called only where weights are written, so a simulator evaluates
-  // it in the kernel's cycles only; the hardware is the same.
-  function automatic logic [ENTRY-1:0] weight_codes(input logic h, input logic [3*CW-1:0] col,
-                                                    input logic [COLS*PW-1:0] row, input int r,
-                                                    input int c, input logic [NTHR*DCB-1:0] thr);
-    logic [PW-1:0]  ctr, p;
+  // horizontal (h = 1): (c+k, r+R) against (c+R, r+R) from the row buffer. The
+  // WINDOW pixels are first selected as a window (one of BLOCK offsets: an
+  // AND-OR multiplexer, not a bit-granular shifter), then taken at constant
+  // positions. A function called only where weights are written, so a simulator
+  // evaluates it in the kernel's cycles only; the hardware is the same.
+  localparam int WPW = WINDOW * PW;          // a window of pixels
+
+  // Rows r .. r + WINDOW - 1 of the column, as pixels: each plane's window is
+  // one of BLOCK row offsets, then Y, U, V are interleaved at constant positions.
+  function automatic logic [WPW-1:0] vwindow(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
+    logic [3*WINDOW*8-1:0] planes;    // Y, U, V windows
+    planes = '0;
+    for (int o = 0; o < BLOCK; o++)
+      planes = planes | ({col[2*CW + o*8 +: WINDOW*8], col[CW + o*8 +: WINDOW*8], col[o*8 +: WINDOW*8]} &
+                         {(3*WINDOW*8){r == RB'(o)}});
+    for (int k = 0; k < WINDOW; k++)
+      vwindow[k*PW +: PW] = {planes[2*WINDOW*8 + k*8 +: 8], planes[WINDOW*8 + k*8 +: 8], planes[k*8 +: 8]};
+  endfunction
+
+  function automatic logic [WPW-1:0] hwindow(input logic [COLS*PW-1:0] row, input logic [XB-1:0] c);
+    hwindow = '0;
+    for (int o = 0; o < BLOCK; o++) hwindow = hwindow | (row[o*PW +: WPW] & {WPW{c == XB'(o)}});
+  endfunction
+
+  function automatic logic [ENTRY-1:0] weight_codes(input logic [WPW-1:0] win,
+                                                    input logic [NTHR*DCB-1:0] thr);
     logic [DCB-1:0] d;
     logic [WB-1:0]  passed;   // thresholds passed
-    ctr = h ? row[(c + RADIUS)*PW +: PW] : col_pixel(col, r + RADIUS);
     for (int k = 0; k < WINDOW; k++) begin
-      p = h ? row[(c + k)*PW +: PW] : col_pixel(col, r + k);
-      d = cdist(p, ctr);
+      d = cdist(win[k*PW +: PW], win[RADIUS*PW +: PW]);
       passed = '0;
       for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);
       weight_codes[k*WB +: WB] = WB'(NTHR) - passed;
     end
   endfunction
 
+  // The centre pixel r + RADIUS of the column goes into the horizontal row buffer.
+  function automatic logic [PW-1:0] centre_pixel(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
+    centre_pixel = '0;
+    for (int o = 0; o < BLOCK; o++)
+      centre_pixel = centre_pixel | ({col[2*CW + (o + RADIUS)*8 +: 8], col[CW + (o + RADIUS)*8 +: 8],
+                                      col[(o + RADIUS)*8 +: 8]} & {PW{r == RB'(o)}});
+  endfunction
+
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= col_pixel(column, 32'(r_q) + RADIUS);
+    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= centre_pixel(column, r_q);
   end
 
   // ---- Weight buffers: one word per aggregator read ----------------------------------
@@ -263,7 +288,7 @@ module mcadsw_weight_gen #(
   always_ff @(posedge clk_i) begin
     if (state_q == VERT || state_q == HORZ) begin : p_kernel
       logic [ENTRY-1:0] codes;  // one kernel for both passes
-      codes = weight_codes(state_q == HORZ, column, hrow, 32'(r_q), 32'(c_q), thr_i);
+      codes = weight_codes(state_q == HORZ ? hwindow(hrow, c_q) : vwindow(column, r_q), thr_i);
       if (state_q == VERT)
         vbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*VGRP + 32'(c_q) / LANES]
               [(32'(c_q) % LANES)*ENTRY +: ENTRY] <= codes;

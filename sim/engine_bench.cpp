@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -196,6 +197,46 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
   r.report += rep.str();
 }
 
+// Files for tests/icarus/run.sh: mem.hex ($readmemh, one 32-bit word a line,
+// byte 0 in bits 7:0), config.txt (plusargs for the Verilog bench), and after
+// the run verilator_out.hex (the disparity plane's words) and
+// verilator_counters.txt.
+void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, const WeightTable& table) {
+  std::ofstream m(dir + "/mem.hex");
+  for (size_t a = 0; a + 4 <= mem.size(); a += 4) {
+    uint32_t w = 0;
+    for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%08x\n", w);
+    m << buf;
+  }
+  const WeightThresholds thr = weight_thresholds(table);
+  std::ofstream f(dir + "/config.txt");
+  f << "+WORDS=" << mem.size() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
+    << " +BASE_LV=" << c.base_lv << " +BASE_RY=" << c.base_ry << " +BASE_OUT=" << c.base_out
+    << " +STRIDE=" << c.stride << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
+    << " +DISP=" << c.disparities;
+  for (int i = 0; i < kWeightThresholds; ++i) f << " +THR" << i << "=" << thr[i];
+  f << "\n";
+  if (!m || !f) throw std::runtime_error("cannot write the dump files in " + dir);
+}
+
+void dump_after(const std::string& dir, MemoryModel& mem, uint32_t out, uint32_t bytes,
+                const EngineResult& r) {
+  std::ofstream m(dir + "/verilator_out.hex");
+  for (uint32_t a = out; a < out + bytes; a += 4) {
+    uint32_t w = 0;
+    for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%08x\n", w);
+    m << buf;
+  }
+  std::ofstream c(dir + "/verilator_counters.txt");
+  c << "cycles " << r.cycles << " words_read " << r.words_read << " words_written "
+    << r.words_written << "\n";
+  if (!m || !c) throw std::runtime_error("cannot write the dump files in " + dir);
+}
+
 }  // namespace
 
 EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
@@ -210,13 +251,15 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
   r.width = W;
   r.height = H;
   r.disparities = cfg.disparities;
+  const RawConfig raw{lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities};
+  if (!opt.dump_dir.empty()) dump_before(opt.dump_dir, mem, raw, cfg.table);
   {
     Engine e(mem, opt);
-    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities},
-            cfg.table);
+    program(e.top(), raw, cfg.table);
     run_frame(e, r, frame_limit(W, H, opt), opt.progress);
   }
   r.bad_writes = mem.bad_writes();
+  if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay.out, lay.stride * uint32_t(H), r);
   score(mem, lay, left, right, cfg, opt, r);
   return r;
 }

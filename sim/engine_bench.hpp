@@ -18,6 +18,9 @@ struct EngineOptions {
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
   int max_reported = 10;         // mismatches printed
+  // Directory for the second simulator (tests/icarus): the memory image and
+  // configuration before the run, the disparity plane and counters after it.
+  std::string dump_dir;
 };
 
 struct EngineResult {

@@ -2,7 +2,7 @@
 // 32-bit external memory and compares every disparity with the reference.
 //   mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]
 //              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
-//              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H]
+//              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--dump DIR]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -20,8 +20,9 @@ namespace {
 const char* kUsage =
     "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
-    "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H]\n"
-    "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n";
+    "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--dump DIR]\n"
+    "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
+    "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
 
 constexpr double kClockMHz = 95.0;  // paper, Table III
 
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
       else if (a == "--out") out = val();
       else if (a == "--json") json = val();
       else if (a == "--waves") waves = val();
+      else if (a == "--dump") opt.dump_dir = val();
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)
           throw std::invalid_argument("--crop takes X,Y,W,H");

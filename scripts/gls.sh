@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# make gls: gate-level simulation. The OSU 0.18 um netlist written by
+# scripts/synth.sh runs in the same Verilator harness as the RTL (models of the
+# cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)
+# on a small crop of Teddy; every disparity is compared with the reference (the
+# harness's scoreboard) and the disparity map with the RTL's, byte for byte.
+#
+#   scripts/gls.sh            netlist of the reduced configuration (DMAX = 16)
+#   DMAX=64 scripts/gls.sh    the full one (build/synth, from `make synth`)
+# The netlist is synthesised first if it is missing.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+dmax=${DMAX:-16}
+build=${BUILD_DIR:-$root/build}
+if [ "$dmax" = 64 ]; then synth_dir=$build/synth; else synth_dir=$build/synth_dmax$dmax; fi
+netlist=$synth_dir/mcadsw_top_osu018.v
+gls_build=$build/gls_dmax$dmax
+out=$build/gls
+d=$(( dmax < 16 ? dmax : 16 ))
+crop=100,100,40,24
+mkdir -p "$out"
+
+if [ ! -f "$netlist" ]; then
+  echo "gls: no netlist at $netlist, synthesising it (DMAX=$dmax)"
+  DMAX=$dmax OUT=$synth_dir "$root/scripts/synth.sh"
+fi
+# The cell models cover the combinational cells and flip-flops only.
+if grep -Eq '^\s*(TBUFX1|TBUFX2|LATCH) ' "$netlist"; then
+  echo "gls: the netlist uses a tri-state buffer or latch, which sim/gls/osu018_cells.v does not model" >&2
+  exit 1
+fi
+
+echo "gls: building the gate-level model (Verilator, $gls_build)"
+cmake -S "$root" -B "$gls_build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DMCADSW_GLS_NETLIST="$netlist" > /dev/null
+start=$(date +%s)
+cmake --build "$gls_build" --target mcadsw_sim_gls mcadsw_sim > "$out/build.log" 2>&1 || {
+  tail -30 "$out/build.log"; echo "gls: build failed (log: $out/build.log)" >&2; exit 1; }
+echo "gls: model built in $(( $(date +%s) - start )) s"
+
+left=$root/data/cif/teddy/left.png
+right=$root/data/cif/teddy/right.png
+echo "gls: Teddy crop $crop at D = $d, netlist vs reference"
+"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$crop" --name gls \
+    --out "$out/gls.png" --json "$out/gls.json"
+echo "gls: same crop, RTL vs reference"
+"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" --name rtl \
+    --out "$out/rtl.png" --json "$out/rtl.json"
+if cmp -s "$out/gls.png" "$out/rtl.png"; then
+  echo "gls: netlist and RTL disparity maps are identical; both equal the reference"
+else
+  echo "gls: netlist and RTL disparity maps differ ($out/gls.png, $out/rtl.png)" >&2
+  exit 1
+fi

@@ -1,0 +1,147 @@
+// Second simulator (Icarus Verilog, 4-state): mcadsw_top on the memory image
+// the C++ harness dumped (mcadsw_sim --dump DIR), with a zero-latency memory
+// (grant in the cycle of the request, read data the cycle after, as the C++
+// model's latency 0). Checks that no output is X or Z after reset, writes the
+// disparity plane and the counters for tests/icarus/run.sh to compare with the
+// Verilator run.
+`timescale 1ns/1ps
+module tb_mcadsw_top;
+  localparam int MAXW = 1 << 20;           // memory words
+  localparam int NTHR = mcadsw_pkg::WTHRESHOLDS;  // 7: thr0 .. thr6 below
+  localparam int DCB  = mcadsw_pkg::COLOR_DIST_BITS;
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #5 clk = ~clk;
+
+  int words, base_ly, base_lu, base_lv, base_ry, base_out, stride, width, height, disp;
+  int thr0, thr1, thr2, thr3, thr4, thr5, thr6;
+  logic [31:0] mem [MAXW];
+  string dir;
+
+  logic [31:0] cfg_base_ly, cfg_base_lu, cfg_base_lv, cfg_base_ry, cfg_base_out, cfg_stride;
+  logic [11:0] cfg_width, cfg_height;
+  logic [6:0]  cfg_disp;
+  logic [NTHR*DCB-1:0] cfg_thr;
+  logic start = 1'b0;
+  logic busy, done, error;
+  logic [2:0] error_code;
+  logic [31:0] cnt_cycles, cnt_rd, cnt_wr, cnt_stall;
+  logic mem_req, mem_gnt, mem_we, mem_rvalid;
+  logic [3:0] mem_be;
+  logic [31:0] mem_addr, mem_wdata, mem_rdata;
+
+  mcadsw_top dut (
+    .clk_i (clk), .rst_ni (rst_n),
+    .cfg_base_ly_i (cfg_base_ly), .cfg_base_lu_i (cfg_base_lu), .cfg_base_lv_i (cfg_base_lv),
+    .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),
+    .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
+    .cfg_thr_i (cfg_thr), .start_i (start),
+    .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
+    .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_rd), .cnt_words_written_o (cnt_wr),
+    .cnt_stall_o (cnt_stall),
+    .mem_req_o (mem_req), .mem_gnt_i (mem_gnt), .mem_we_o (mem_we), .mem_be_o (mem_be),
+    .mem_addr_o (mem_addr), .mem_wdata_o (mem_wdata), .mem_rvalid_i (mem_rvalid),
+    .mem_rdata_i (mem_rdata)
+  );
+
+  // Zero-latency memory.
+  assign mem_gnt = mem_req;
+  always_ff @(posedge clk) begin
+    mem_rvalid <= 1'b0;
+    if (mem_req) begin
+      if (mem_addr[1:0] != 2'b00 || mem_addr / 4 >= words) begin
+        $display("FAIL: access out of range or misaligned: %h", mem_addr);
+        $finish;
+      end
+      if (mem_we) begin
+        for (int b = 0; b < 4; b++)
+          if (mem_be[b]) mem[mem_addr / 4][b*8 +: 8] <= mem_wdata[b*8 +: 8];
+      end else begin
+        mem_rdata  <= mem[mem_addr / 4];
+        mem_rvalid <= 1'b1;
+      end
+    end
+  end
+
+  // No X or Z on any output once reset is released.
+  logic [127:0] outs;
+  assign outs = {busy, done, error, error_code, cnt_cycles, cnt_rd, cnt_wr, cnt_stall, mem_req};
+  longint xchecks = 0;
+  always @(negedge clk) begin
+    if (rst_n) begin
+      xchecks++;
+      if ($isunknown(outs) || (mem_req && ($isunknown({mem_we, mem_addr}) ||
+                                           (mem_we && $isunknown({mem_be, mem_wdata}))))) begin
+        $display("FAIL: X or Z on an output at %0t: status %b, req %b we %b addr %h", $time,
+                 {busy, done, error, error_code}, mem_req, mem_we, mem_addr);
+        $finish;
+      end
+    end
+  end
+
+  // Debug aid: the first X inside the aggregator's inputs and costs.
+  logic seen_x = 1'b0;
+  always @(negedge clk) begin
+    if (rst_n && !seen_x) begin
+      if (dut.u_cost_agg.mon_ev_valid_o && $isunknown(dut.u_cost_agg.mon_ev_o)) begin
+        seen_x = 1'b1;
+        $display("DEBUG: X in vertical costs at %0t row %0d d %0d grp %0d: cen_l %0d cen_r %0d wv %0d",
+                 $time, dut.u_cost_agg.mon_ev_row_o, dut.u_cost_agg.mon_ev_d_o, dut.u_cost_agg.mon_ev_grp_o,
+                 $isunknown(dut.cen_l), $isunknown(dut.cen_r), $isunknown(dut.wv));
+      end
+      if (dut.u_cost_agg.mon_fc_valid_o && $isunknown(dut.u_cost_agg.mon_fc_o)) begin
+        seen_x = 1'b1;
+        $display("DEBUG: X in final costs at %0t row %0d d %0d grp %0d", $time,
+                 dut.u_cost_agg.mon_fc_row_o, dut.u_cost_agg.mon_fc_d_o, dut.u_cost_agg.mon_fc_grp_o);
+      end
+    end
+  end
+
+  initial begin
+    int fd;
+    longint cycles;
+    int ok;
+    if (!$value$plusargs("DIR=%s", dir)) begin $display("FAIL: +DIR= missing"); $finish; end
+    ok = $value$plusargs("WORDS=%d", words);
+    ok = $value$plusargs("BASE_LY=%d", base_ly);
+    ok = $value$plusargs("BASE_LU=%d", base_lu);
+    ok = $value$plusargs("BASE_LV=%d", base_lv);
+    ok = $value$plusargs("BASE_RY=%d", base_ry);
+    ok = $value$plusargs("BASE_OUT=%d", base_out);
+    ok = $value$plusargs("STRIDE=%d", stride);
+    ok = $value$plusargs("WIDTH=%d", width);
+    ok = $value$plusargs("HEIGHT=%d", height);
+    ok = $value$plusargs("DISP=%d", disp);
+    ok = $value$plusargs("THR0=%d", thr0);
+    ok = $value$plusargs("THR1=%d", thr1);
+    ok = $value$plusargs("THR2=%d", thr2);
+    ok = $value$plusargs("THR3=%d", thr3);
+    ok = $value$plusargs("THR4=%d", thr4);
+    ok = $value$plusargs("THR5=%d", thr5);
+    ok = $value$plusargs("THR6=%d", thr6);
+    if (words <= 0 || words > MAXW) begin $display("FAIL: WORDS %0d", words); $finish; end
+    $readmemh({dir, "/mem.hex"}, mem, 0, words - 1);
+    cfg_base_ly = base_ly; cfg_base_lu = base_lu; cfg_base_lv = base_lv; cfg_base_ry = base_ry;
+    cfg_base_out = base_out; cfg_stride = stride;
+    cfg_width = width; cfg_height = height; cfg_disp = disp;
+    cfg_thr = {DCB'(thr6), DCB'(thr5), DCB'(thr4), DCB'(thr3), DCB'(thr2), DCB'(thr1), DCB'(thr0)};
+    repeat (4) @(posedge clk);
+    #1 rst_n = 1'b1;
+    @(posedge clk); #1 start = 1'b1;
+    @(posedge clk); #1 start = 1'b0;
+    cycles = 0;
+    while (!done) begin
+      @(posedge clk); #1;
+      cycles++;
+      if (cycles > 10_000_000) begin $display("FAIL: no done after %0d cycles", cycles); $finish; end
+    end
+    fd = $fopen({dir, "/icarus_out.hex"}, "w");
+    for (int a = base_out / 4; a < (base_out + stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
+    $fclose(fd);
+    fd = $fopen({dir, "/icarus_counters.txt"}, "w");
+    $fwrite(fd, "cycles %0d words_read %0d words_written %0d\n", cnt_cycles, cnt_rd, cnt_wr);
+    $fclose(fd);
+    $display("icarus: done after %0d cycles, error %b, %0d X checks", cnt_cycles, error, xchecks);
+    $finish;
+  end
+endmodule
