@@ -65,17 +65,6 @@ YuvImage right_view(const YuvImage& l, std::mt19937& rng) {
   return r;
 }
 
-YuvImage crop(const YuvImage& img, int x0, int y0, int w, int h) {
-  YuvImage c{Plane(w, h), Plane(w, h), Plane(w, h)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      c.y.at(x, y) = img.y.clamped(x0 + x, y0 + y);
-      c.u.at(x, y) = img.u.clamped(x0 + x, y0 + y);
-      c.v.at(x, y) = img.v.clamped(x0 + x, y0 + y);
-    }
-  return c;
-}
-
 Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvImage>>& real) {
   std::seed_seq seq{seed, uint32_t(k), 0x6d636164u};
   std::mt19937 rng(seq);

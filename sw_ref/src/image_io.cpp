@@ -47,6 +47,17 @@ YuvImage to_yuv(const cv::Mat& bgr) {
   return YuvImage{from_mat(planes[0]), from_mat(planes[1]), from_mat(planes[2])};
 }
 
+YuvImage crop(const YuvImage& img, int x0, int y0, int w, int h) {
+  YuvImage c{Plane(w, h), Plane(w, h), Plane(w, h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      c.y.at(x, y) = img.y.clamped(x0 + x, y0 + y);
+      c.u.at(x, y) = img.u.clamped(x0 + x, y0 + y);
+      c.v.at(x, y) = img.v.clamped(x0 + x, y0 + y);
+    }
+  return c;
+}
+
 YuvImage load_yuv(const std::string& path) { return to_yuv(read_color_image(path)); }
 
 std::string colormap_path_for(const std::string& path) {

@@ -27,17 +27,6 @@ void expect_exact(const EngineResult& r) {
               r.height, r.disparities, r.cycles, r.words_read, r.words_written, r.stall_cycles);
 }
 
-YuvImage crop(const YuvImage& img, int x0, int y0, int w, int h) {
-  YuvImage c{Plane(w, h), Plane(w, h), Plane(w, h)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      c.y.at(x, y) = img.y.at(x0 + x, y0 + y);
-      c.u.at(x, y) = img.u.at(x0 + x, y0 + y);
-      c.v.at(x, y) = img.v.at(x0 + x, y0 + y);
-    }
-  return c;
-}
-
 TEST(Engine, RandomPairSmallerThanOneBlock) {
   std::mt19937 rng(1);
   Config cfg;

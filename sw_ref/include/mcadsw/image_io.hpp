@@ -18,6 +18,9 @@ cv::Mat read_color_image(const std::string& path);
 // cv::cvtColor(bgr, COLOR_BGR2YUV), split into planes.
 YuvImage to_yuv(const cv::Mat& bgr);
 YuvImage load_yuv(const std::string& path);
+// The w x h region at (x0, y0) of all three planes; coordinates outside the
+// image take the nearest edge pixel.
+YuvImage crop(const YuvImage& img, int x0, int y0, int w, int h);
 
 cv::Mat to_mat(const Plane& p);  // CV_8UC1 copy
 Plane from_mat(const cv::Mat& gray8);
