@@ -1,5 +1,6 @@
 // Yosys techmap: each inferred memory ($mem_v2, after `memory -nomap`) becomes
-// a MCADSW_RAM black-box macro (constraints/macro_ram.v). Synchronous resets,
+// a MCADSW_RAM black-box macro (sim/gls/mcadsw_ram_model.v, read with
+// `read_verilog -lib`: its ports only). Synchronous resets,
 // initial values and transparency of read ports are not supported by the
 // macro; synth.sh checks that no memory uses them.
 (* techmap_celltype = "$mem_v2" *)

@@ -32,7 +32,7 @@ start=$(date +%s)
 echo "synth: Yosys, DMAX=$dmax, clock ${period_ns} ns, liberty $(basename "$lib") (log: $out/yosys.log)"
 cat > "$out/synth.ys" <<YS
 read_verilog -sv mcadsw_pkg.sv $mods
-read_verilog -lib $root/constraints/macro_ram.v
+read_verilog -lib $root/sim/gls/mcadsw_ram_model.v
 chparam -set DMAX $dmax mcadsw_top
 hierarchy -check -top mcadsw_top
 # One module per paper block (Fig. 16); their sub-modules are flattened into them.
@@ -140,7 +140,7 @@ fi
   echo
   echo "Yosys 0.23 to OSU 0.18 um standard cells (\`$(basename "$lib")\`), abc with buffering"
   echo "(\`constraints/abc_osu018.script\`), OpenSTA against \`constraints/mcadsw.sdc\`. On-chip memories"
-  echo "are black-box macros (\`constraints/macro_ram.v\`), counted apart as the paper does."
+  echo "are black-box macros (\`MCADSW_RAM\`, ports from \`sim/gls/mcadsw_ram_model.v\`), counted apart as the paper does."
   echo "Yosys ran ${yosys_s} s with a peak of ${yosys_mb} MB."
   echo
   echo "| figure | this engine | paper (Table III, UMC 90 nm) |"
