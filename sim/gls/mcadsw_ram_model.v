@@ -4,9 +4,9 @@
 // of the gate count. Gate-level simulation uses the body, a behavioural model
 // with the semantics of Yosys' $mem_v2 for the features the engine's memories
 // use (scripts/synth.sh checks that no memory uses more): rising-edge write
-// ports with per-bit enables, read ports either asynchronous or clocked with an enable and an asynchronous reset to
-// RD_ARST_VALUE, a clocked read returning the data from before a write in the
-// same cycle.
+// ports with per-bit enables; read ports either asynchronous or clocked with an
+// enable and an asynchronous reset to RD_ARST_VALUE; a clocked read returns the
+// data from before a write in the same cycle.
 /* verilator lint_off DECLFILENAME */
 module MCADSW_RAM #(
   parameter SIZE = 4,
