@@ -1,0 +1,31 @@
+// OpenCV stereo matchers the report (`make report`) and the benchmark compare
+// the engine with: StereoSGBM in MODE_SGBM_3WAY and MODE_HH, and StereoBM.
+// Not part of the engine; this is what a user would otherwise run.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace mcadsw {
+
+enum class Baseline { kSgbm3Way, kSgbmHH, kBm };
+inline constexpr Baseline kBaselines[] = {Baseline::kSgbm3Way, Baseline::kSgbmHH, Baseline::kBm};
+
+const char* baseline_name(Baseline b);
+// The matcher's parameters, one line, for the report.
+std::string baseline_params(Baseline b, int disparities);
+
+// Dense integer disparity map of the left view, CV_8UC1 with values 0..D-1,
+// from 8-bit BGR views of one size. So that the baselines are not penalised for
+// what the engine handles by its border rule and always outputs a value:
+//  - both views are padded on the left by the disparity range (edge pixels
+//    replicated) and the result cropped back, so every pixel has all D candidates;
+//  - uniqueness, left-right and speckle checks are off, and any pixel still left
+//    invalid takes the nearest valid disparity to its left (else to its right);
+//  - the sub-pixel result is rounded to the nearest integer and clamped to D-1.
+// OpenCV searches a multiple of 16 disparities: D is rounded up for the search.
+// Throws std::invalid_argument for bad sizes, types or D outside 1..255.
+cv::Mat baseline_disparity(Baseline b, const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                           int disparities);
+
+}  // namespace mcadsw
