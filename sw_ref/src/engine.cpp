@@ -22,7 +22,7 @@ void check_config(const Config& cfg, int width, int height) {
   check_weight_table(cfg.table);
 }
 
-static void check_views(const YuvImage& left, const YuvImage& right) {
+void check_views(const YuvImage& left, const YuvImage& right) {
   const auto same = [](const Plane& a, const Plane& b) {
     return a.width == b.width && a.height == b.height && a.px.size() == b.px.size();
   };
@@ -36,6 +36,11 @@ static void check_views(const YuvImage& left, const YuvImage& right) {
 
 Plane disparity_map(const YuvImage& left, const YuvImage& right, const Config& cfg,
                     Intermediates* keep) {
+  return keep ? disparity_map_blocks(left, right, cfg, keep) : disparity_map_fast(left, right, cfg);
+}
+
+Plane disparity_map_blocks(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                           Intermediates* keep) {
   check_views(left, right);
   check_config(cfg, left.width(), left.height());
   const int W = left.width(), H = left.height(), D = cfg.disparities;

@@ -102,6 +102,9 @@ struct Config {
 };
 // Throws std::invalid_argument with a message naming the offending value.
 void check_config(const Config& cfg, int width, int height);
+// Throws std::invalid_argument unless Y, U, V of the left view and Y of the right
+// view all have the same size.
+void check_views(const YuvImage& left, const YuvImage& right);
 
 // Optional intermediate results, for block-level tests and debugging.
 struct Intermediates {
@@ -112,8 +115,18 @@ struct Intermediates {
 };
 
 // The whole engine: 8-bit disparity map of the left view. Only Y of the right
-// view is used. If `keep` is non-null it receives every intermediate result.
+// view is used. If `keep` is non-null it receives every intermediate result
+// (block-by-block path); otherwise the whole-frame fast path runs. Both give the
+// same map bit for bit.
 Plane disparity_map(const YuvImage& left, const YuvImage& right, const Config& cfg,
                     Intermediates* keep = nullptr);
+// Block by block, as the functions above chain (the oracle of the fast path).
+Plane disparity_map_blocks(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                           Intermediates* keep = nullptr);
+// Whole frame at once, all disparities of a pixel together (sw_ref/src/fast.cpp,
+// docs/algorithm.md section 11). `portable` selects the plain C++ kernel even
+// where the SIMD one is compiled in, so tests can check both.
+Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                         bool portable = false);
 
 }  // namespace mcadsw

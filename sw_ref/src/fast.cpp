@@ -1,0 +1,436 @@
+// Whole-frame fast path of the engine (docs/algorithm.md, section 11).
+//
+// Computes exactly what the block-by-block path of engine.cpp computes
+// (census -> cost -> Eq. 3 -> Eq. 4 -> WTA), reorganised for a CPU:
+//   - all disparities of a pixel are processed together, contiguous and
+//     innermost, so one weight (the same for every d) multiplies a whole vector;
+//   - the right census row is stored reversed and clamp-padded, so
+//     cr(clamp(x - d), y) for d = 0..D-1 is one contiguous load;
+//   - the census costs of the 32 rows y-15..y+16 live in a ring of per-row
+//     [x][d] volumes; each row is computed once per band of output rows;
+//   - weights are computed on the fly from the thresholds (7 comparisons),
+//     never stored as planes;
+//   - the WTA is fused: the horizontal sum is accumulated as E*64 + d, so the
+//     unsigned minimum over d is the smallest E and, on a tie, the smallest d.
+// Output rows are dealt to worker threads in bands; every pixel is a pure
+// function of the inputs, so the result does not depend on the thread count.
+//
+// Two kernels implement the same arithmetic: an AVX2 one (compiled when the
+// file is built with AVX2, see MCADSW_FAST_NATIVE in sw_ref/CMakeLists.txt) and
+// a portable one in plain C++. Exactness of the AVX2 integer widths:
+//   - vertical: vpmaddubsw multiplies cost (u8, 0..6) by weight (s8, 0..64) and
+//     adds two taps: <= 768, no saturation; 16 such sums <= kVertCostMax < 2^15;
+//   - horizontal: vpmaddwd multiplies Ev (< 2^15) by weight*64 (<= 4096) and
+//     adds two taps in 32 bits; E*64 + d <= 1 511 522 367 < 2^31.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstring>
+#include <thread>
+
+#ifdef __AVX2__
+#include <immintrin.h>
+#endif
+
+#include "mcadsw/ref.hpp"
+
+namespace mcadsw {
+namespace {
+
+constexpr int kTaps = 2 * kRadius + 2;  // 32: the 31 taps plus one of weight 0, so taps pair up
+constexpr int kPairs = kTaps / 2;       // 16
+constexpr int kRing = 32;               // cost rows held: y-15 .. y+16 (tap 31 reads y+16)
+constexpr int kBandRows = 16;           // output rows per work item
+constexpr int kKeyShift = kDispBits;    // key = E << 6 | d
+// A padded disparity lane (d >= D) starts at this offset, above every real key.
+constexpr uint32_t kPadKey = 0x60000000u;
+static_assert((uint64_t(kFinalCostMax) << kKeyShift) + kDmax - 1 < kPadKey, "keys of real d");
+static_assert((uint64_t(kFinalCostMax) << kKeyShift) + kDmax - 1 + kPadKey <= UINT32_MAX,
+              "keys of padded d do not wrap");
+static_assert((int64_t(kVertCostMax) << kKeyShift) * 2 <= INT32_MAX, "vpmaddwd pair sum");
+static_assert(kCostMax * kWeightMax * 2 <= INT16_MAX, "vpmaddubsw pair sum");
+static_assert(kVertCostMax <= INT16_MAX, "Ev is a signed 16-bit vpmaddwd operand");
+
+inline int clampi(int v, int n) { return v < 0 ? 0 : (v >= n ? n - 1 : v); }
+
+// Frame-level inputs, built once and shared read-only by the workers.
+struct Frame {
+  int W = 0, H = 0, D = 0;
+  int Dp = 0;  // D rounded up to a multiple of 16 (the SIMD lane count of costs)
+  WeightTable table;
+  WeightThresholds thr{};
+  const uint8_t* centre[3] = {};  // left Y, U, V planes
+  std::vector<uint8_t> cl;        // left census, W*H
+  // Right census, each row reversed and clamp-padded: rrev[y][t] = cr(clamp(W-1-t), y),
+  // t = 0..W+Dp-1, so cr(clamp(x-d), y) = rrev[y][W-1-x+d] for every d < Dp.
+  std::vector<uint8_t> rrev;
+  int rrev_stride = 0;
+  // Left Y, U, V transposed, rows clamp-padded: col[c][x][t] = P_c(x, clamp(t-R)),
+  // t = 0..H+kTaps-1: the vertical taps of (x, y) are col[c][x][y..y+31].
+  std::vector<uint8_t> col[3];
+  int col_stride = 0;
+  // Left Y, U, V rows, columns clamp-padded: row[c][y][t] = P_c(clamp(t-R), y):
+  // the horizontal taps of (x, y) are row[c][y][x..x+31].
+  std::vector<uint8_t> row[3];
+  int row_stride = 0;
+};
+
+// Census of a whole plane through a clamp-padded copy (same codes as census_code).
+std::vector<uint8_t> census_plane(const Plane& p) {
+  const int W = p.width, H = p.height, R = kCensusRadius, PW = W + 2 * R;
+  std::vector<uint8_t> pad(size_t(PW) * (H + 2 * R));
+  for (int y = 0; y < H + 2 * R; ++y)
+    for (int x = 0; x < PW; ++x) pad[size_t(y) * PW + x] = p.clamped(x - R, y - R);
+  std::vector<uint8_t> out(size_t(W) * H);
+  for (int y = 0; y < H; ++y) {
+    const uint8_t* c = &pad[size_t(y + R) * PW + R];
+    uint8_t* o = &out[size_t(y) * W];
+    for (int x = 0; x < W; ++x) o[x] = 0;
+    for (const Offset& t : kCensusTaps) {
+      const uint8_t* n = c + t.dy * PW + t.dx;
+      for (int x = 0; x < W; ++x) o[x] = uint8_t(o[x] << 1) | uint8_t(n[x] <= c[x]);
+    }
+  }
+  return out;
+}
+
+Frame make_frame(const YuvImage& left, const YuvImage& right, const Config& cfg) {
+  Frame f;
+  f.W = left.width();
+  f.H = left.height();
+  f.D = cfg.disparities;
+  f.Dp = (f.D + 15) / 16 * 16;
+  f.table = cfg.table;
+  f.thr = weight_thresholds(cfg.table);
+  const int W = f.W, H = f.H;
+  const Plane* yuv[3] = {&left.y, &left.u, &left.v};
+  for (int c = 0; c < 3; ++c) f.centre[c] = yuv[c]->px.data();
+  f.cl = census_plane(left.y);
+  const std::vector<uint8_t> cr = census_plane(right.y);
+  f.rrev_stride = W + f.Dp;
+  f.rrev.resize(size_t(f.rrev_stride) * H);
+  for (int y = 0; y < H; ++y)
+    for (int t = 0; t < f.rrev_stride; ++t)
+      f.rrev[size_t(y) * f.rrev_stride + t] = cr[size_t(y) * W + clampi(W - 1 - t, W)];
+  f.col_stride = H + kTaps;
+  f.row_stride = W + kTaps;
+  for (int c = 0; c < 3; ++c) {
+    const Plane& p = *yuv[c];
+    f.col[c].resize(size_t(f.col_stride) * W);
+    for (int t = 0; t < f.col_stride; ++t) {
+      const uint8_t* src = &p.px[size_t(clampi(t - kRadius, H)) * W];
+      for (int x = 0; x < W; ++x) f.col[c][size_t(x) * f.col_stride + t] = src[x];
+    }
+    f.row[c].resize(size_t(f.row_stride) * H);
+    for (int y = 0; y < H; ++y)
+      for (int t = 0; t < f.row_stride; ++t)
+        f.row[c][size_t(y) * f.row_stride + t] = p.px[size_t(y) * W + clampi(t - kRadius, W)];
+  }
+  return f;
+}
+
+// Per-worker buffers.
+struct Scratch {
+  std::vector<uint8_t> ring;  // kRing cost rows of W*Dp, [x][d]
+  std::vector<uint16_t> ev;   // one row of vertical costs, W*Dp
+  std::vector<uint32_t> hp;   // one row of horizontal-pass inputs, (W + 2R)*Dp
+};
+
+// ---- Portable kernel --------------------------------------------------------------
+// Plain C++, natural [x][d] layouts. Used without AVX2, and by the tests.
+
+void popcount_row_portable(const Frame& f, int r, uint8_t* out) {
+  const int W = f.W, Dp = f.Dp;
+  const uint8_t* rr = &f.rrev[size_t(r) * f.rrev_stride];
+  for (int x = 0; x < W; ++x) {
+    const uint8_t l = f.cl[size_t(r) * W + x];
+    const uint8_t* rx = rr + (W - 1 - x);
+    for (int d = 0; d < Dp; ++d) out[size_t(x) * Dp + d] = uint8_t(census_cost(l, rx[d]));
+  }
+}
+
+int colour_dist(const uint8_t* const* taps, const int* centre, int i) {
+  int s = 0;
+  for (int c = 0; c < 3; ++c) s += std::abs(int(taps[c][i]) - centre[c]);
+  return s;
+}
+
+void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
+  const int W = f.W, H = f.H, Dp = f.Dp, D = f.D;
+  const size_t row_bytes = size_t(W) * Dp;
+  s.ring.resize(kRing * row_bytes);
+  s.ev.resize(row_bytes);
+  std::vector<uint32_t> acc(Dp);
+  int next = std::max(0, y0 - kRadius);  // next cost row to compute
+  for (int y = y0; y < y1; ++y) {
+    for (; next <= std::min(H - 1, y + kRadius + 1); ++next)
+      popcount_row_portable(f, next, &s.ring[(next % kRing) * row_bytes]);
+    // Eq. 3 for every column of row y.
+    for (int x = 0; x < W; ++x) {
+      const int centre[3] = {f.centre[0][size_t(y) * W + x], f.centre[1][size_t(y) * W + x],
+                             f.centre[2][size_t(y) * W + x]};
+      const uint8_t* taps[3];
+      for (int c = 0; c < 3; ++c) taps[c] = &f.col[c][size_t(x) * f.col_stride + y];
+      uint16_t* ev = &s.ev[size_t(x) * Dp];
+      std::fill(ev, ev + Dp, 0);
+      for (int k = 0; k < kWindow; ++k) {
+        const int w = f.table[colour_dist(taps, centre, k)];
+        if (w == 0) continue;
+        const uint8_t* c = &s.ring[(clampi(y + k - kRadius, H) % kRing) * row_bytes + size_t(x) * Dp];
+        for (int d = 0; d < Dp; ++d) ev[d] = uint16_t(ev[d] + c[d] * w);
+      }
+    }
+    // Eq. 4 and the WTA.
+    for (int x = 0; x < W; ++x) {
+      const int centre[3] = {f.centre[0][size_t(y) * W + x], f.centre[1][size_t(y) * W + x],
+                             f.centre[2][size_t(y) * W + x]};
+      const uint8_t* taps[3];
+      for (int c = 0; c < 3; ++c) taps[c] = &f.row[c][size_t(y) * f.row_stride + x];
+      for (int d = 0; d < Dp; ++d) acc[d] = uint32_t(d) + (d < D ? 0 : kPadKey);
+      for (int j = 0; j < kWindow; ++j) {
+        const uint32_t w = uint32_t(f.table[colour_dist(taps, centre, j)]) << kKeyShift;
+        if (w == 0) continue;
+        const uint16_t* ev = &s.ev[size_t(clampi(x + j - kRadius, W)) * Dp];
+        for (int d = 0; d < Dp; ++d) acc[d] += ev[d] * w;
+      }
+      out[size_t(y) * W + x] = uint8_t(*std::min_element(acc.begin(), acc.end()) & (kDmax - 1));
+    }
+  }
+}
+
+// ---- AVX2 kernel ---------------------------------------------------------------------
+#ifdef __AVX2__
+
+// Weight bytes of the 32 taps whose Y, U, V start at taps[c] (tap 31 forced to 0),
+// against the centre colour; the weight table is applied as its thresholds:
+// code = #{i : dC < thr[i]}, weight = code ? 2^(code-1) : 0.
+struct WeightUnit {
+  __m256i thr[kWeightThresholds];
+  __m256i lut;   // code -> weight, in both 128-bit lanes
+  __m256i last;  // zeroes byte 31
+
+  explicit WeightUnit(const WeightThresholds& t) {
+    for (int i = 0; i < kWeightThresholds; ++i) thr[i] = _mm256_set1_epi16(int16_t(t[i]));
+    lut = _mm256_setr_epi8(0, 1, 2, 4, 8, 16, 32, 64, 0, 0, 0, 0, 0, 0, 0, 0,  //
+                           0, 1, 2, 4, 8, 16, 32, 64, 0, 0, 0, 0, 0, 0, 0, 0);
+    last = _mm256_setr_epi8(-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,  //
+                            -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0);
+  }
+
+  __m256i weights(const uint8_t* const* taps, const uint8_t* centre) const {
+    __m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
+    for (int c = 0; c < 3; ++c) {
+      const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps[c]));
+      const __m256i m = _mm256_set1_epi8(char(centre[c]));
+      const __m256i ad = _mm256_or_si256(_mm256_subs_epu8(v, m), _mm256_subs_epu8(m, v));
+      lo = _mm256_add_epi16(lo, _mm256_cvtepu8_epi16(_mm256_castsi256_si128(ad)));
+      hi = _mm256_add_epi16(hi, _mm256_cvtepu8_epi16(_mm256_extracti128_si256(ad, 1)));
+    }
+    __m256i clo = _mm256_setzero_si256(), chi = _mm256_setzero_si256();
+    for (int i = 0; i < kWeightThresholds; ++i) {  // each compare is -1 where dC < thr[i]
+      clo = _mm256_sub_epi16(clo, _mm256_cmpgt_epi16(thr[i], lo));
+      chi = _mm256_sub_epi16(chi, _mm256_cmpgt_epi16(thr[i], hi));
+    }
+    const __m256i code = _mm256_permute4x64_epi64(_mm256_packus_epi16(clo, chi), 0xD8);
+    return _mm256_and_si256(_mm256_shuffle_epi8(lut, code), last);
+  }
+};
+
+// Cost row r, columns 0..W-1, as [x][d]. A 32-d chunk is stored in the order
+// d 0-7, 16-23, 8-15, 24-31 (qwords 0, 2, 1, 3), so that vpunpck{l,h}bw of two
+// rows yields d 0-15 and 16-31 in order; a 16-d tail chunk is stored in order.
+template <int Dp>
+void popcount_row_avx2(const Frame& f, int r, uint8_t* out) {
+  constexpr int kChunks = Dp / 32;
+  const int W = f.W;
+  const __m256i nib = _mm256_set1_epi8(0x0F);
+  const __m256i pc = _mm256_setr_epi8(0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4,  //
+                                      0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4);
+  const auto popcount = [&](__m256i v) {
+    const __m256i lo = _mm256_and_si256(v, nib);
+    const __m256i hi = _mm256_and_si256(_mm256_srli_epi16(v, 4), nib);
+    return _mm256_add_epi8(_mm256_shuffle_epi8(pc, lo), _mm256_shuffle_epi8(pc, hi));
+  };
+  const uint8_t* rr = &f.rrev[size_t(r) * f.rrev_stride];
+  const uint8_t* cl = &f.cl[size_t(r) * W];
+  for (int x = 0; x < W; ++x) {
+    const uint8_t* rx = rr + (W - 1 - x);
+    uint8_t* o = out + size_t(x) * Dp;
+    const __m256i l = _mm256_set1_epi8(char(cl[x]));
+    for (int c = 0; c < kChunks; ++c) {
+      const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(rx + 32 * c));
+      const __m256i cost = _mm256_permute4x64_epi64(popcount(_mm256_xor_si256(v, l)), 0xD8);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(o + 32 * c), cost);
+    }
+    if constexpr (Dp % 32 != 0) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rx + 32 * kChunks));
+      const __m256i cost = popcount(_mm256_castsi128_si256(_mm_xor_si128(v, _mm256_castsi256_si128(l))));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(o + 32 * kChunks), _mm256_castsi256_si128(cost));
+    }
+  }
+}
+
+template <int Dp>
+void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
+  constexpr int kChunks = Dp / 32;           // full 32-d cost chunks
+  constexpr bool kTail = Dp % 32 != 0;       // one 16-d chunk after them
+  constexpr int kEvVecs = Dp / 16;           // Ev: 16 d per vector
+  constexpr int kKeyVecs = Dp / 8;           // keys: 8 d per vector
+  const int W = f.W, H = f.H;
+  const size_t row_bytes = size_t(W) * Dp;
+  s.ring.resize(kRing * row_bytes + 32);
+  s.ev.resize(row_bytes);
+  s.hp.resize(size_t(W + 2 * kRadius) * Dp);
+  const WeightUnit wu(f.thr);
+  __m256i key0[kKeyVecs];  // d, or d + kPadKey for padded lanes
+  for (int a = 0; a < kKeyVecs; ++a) {
+    alignas(32) uint32_t k[8];
+    for (int i = 0; i < 8; ++i) k[i] = uint32_t(8 * a + i) + (8 * a + i < f.D ? 0 : kPadKey);
+    key0[a] = _mm256_load_si256(reinterpret_cast<const __m256i*>(k));
+  }
+  int next = std::max(0, y0 - kRadius);  // next cost row to compute
+  for (int y = y0; y < y1; ++y) {
+    for (; next <= std::min(H - 1, y + kRadius + 1); ++next)
+      popcount_row_avx2<Dp>(f, next, &s.ring[(next % kRing) * row_bytes]);
+    const uint8_t* rows[kTaps];
+    for (int k = 0; k < kTaps; ++k) rows[k] = &s.ring[(clampi(y + k - kRadius, H) % kRing) * row_bytes];
+    const uint8_t* centre[3];
+    for (int c = 0; c < 3; ++c) centre[c] = &f.centre[c][size_t(y) * W];
+
+    // Eq. 3: Ev of every column of row y, two taps per vpmaddubsw. Stored per
+    // 16 d in the order d 0-3, 8-11, 4-7, 12-15 for the vpunpck*wd below.
+    for (int x = 0; x < W; ++x) {
+      const uint8_t* taps[3];
+      for (int c = 0; c < 3; ++c) taps[c] = &f.col[c][size_t(x) * f.col_stride + y];
+      const uint8_t cx[3] = {centre[0][x], centre[1][x], centre[2][x]};
+      alignas(32) uint8_t wv[kTaps];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(wv), wu.weights(taps, cx));
+      __m256i acc[2 * kChunks + 1];
+      for (auto& a : acc) a = _mm256_setzero_si256();
+      __m128i tlo = _mm_setzero_si128(), thi = _mm_setzero_si128();
+      const size_t off = size_t(x) * Dp;
+      for (int i = 0; i < kPairs; ++i) {
+        if ((wv[2 * i] | wv[2 * i + 1]) == 0) continue;
+        int16_t pair;
+        std::memcpy(&pair, &wv[2 * i], 2);
+        const __m256i w = _mm256_set1_epi16(pair);
+        const uint8_t* a = rows[2 * i] + off;
+        const uint8_t* b = rows[2 * i + 1] + off;
+        for (int c = 0; c < kChunks; ++c) {
+          const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + 32 * c));
+          const __m256i vb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + 32 * c));
+          acc[2 * c] = _mm256_add_epi16(acc[2 * c], _mm256_maddubs_epi16(_mm256_unpacklo_epi8(va, vb), w));
+          acc[2 * c + 1] =
+              _mm256_add_epi16(acc[2 * c + 1], _mm256_maddubs_epi16(_mm256_unpackhi_epi8(va, vb), w));
+        }
+        if constexpr (kTail) {
+          const __m128i va = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + 32 * kChunks));
+          const __m128i vb = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + 32 * kChunks));
+          const __m128i w128 = _mm256_castsi256_si128(w);
+          tlo = _mm_add_epi16(tlo, _mm_maddubs_epi16(_mm_unpacklo_epi8(va, vb), w128));
+          thi = _mm_add_epi16(thi, _mm_maddubs_epi16(_mm_unpackhi_epi8(va, vb), w128));
+        }
+      }
+      if constexpr (kTail) acc[2 * kChunks] = _mm256_set_m128i(thi, tlo);
+      uint16_t* ev = &s.ev[off];
+      for (int v = 0; v < kEvVecs; ++v)
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(ev + 16 * v),
+                            _mm256_permute4x64_epi64(acc[v], 0xD8));
+    }
+
+    // Horizontal-pass inputs: hp[x'+R] = (Ev(clamp(x'), d), Ev(clamp(x'+1), d)) as
+    // 16-bit pairs, d in order, for x' = -R .. W+R-1.
+    for (int xp = -kRadius; xp < W + kRadius; ++xp) {
+      const uint16_t* e0 = &s.ev[size_t(clampi(xp, W)) * Dp];
+      const uint16_t* e1 = &s.ev[size_t(clampi(xp + 1, W)) * Dp];
+      uint32_t* h = &s.hp[size_t(xp + kRadius) * Dp];
+      for (int v = 0; v < kEvVecs; ++v) {
+        const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(e0 + 16 * v));
+        const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(e1 + 16 * v));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(h + 16 * v), _mm256_unpacklo_epi16(a, b));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(h + 16 * v + 8), _mm256_unpackhi_epi16(a, b));
+      }
+    }
+
+    // Eq. 4 fused with the WTA, two taps per vpmaddwd, weights scaled by 64.
+    for (int x = 0; x < W; ++x) {
+      const uint8_t* taps[3];
+      for (int c = 0; c < 3; ++c) taps[c] = &f.row[c][size_t(y) * f.row_stride + x];
+      const uint8_t cx[3] = {centre[0][x], centre[1][x], centre[2][x]};
+      const __m256i wb = wu.weights(taps, cx);
+      alignas(32) int16_t wh[kTaps];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(wh),
+                         _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_castsi256_si128(wb)), kKeyShift));
+      _mm256_store_si256(reinterpret_cast<__m256i*>(wh + 16),
+                         _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_extracti128_si256(wb, 1)), kKeyShift));
+      __m256i acc[kKeyVecs];
+      for (int a = 0; a < kKeyVecs; ++a) acc[a] = key0[a];
+      for (int i = 0; i < kPairs; ++i) {
+        int32_t pair;
+        std::memcpy(&pair, &wh[2 * i], 4);
+        if (pair == 0) continue;
+        const __m256i w = _mm256_set1_epi32(pair);
+        const uint32_t* h = &s.hp[size_t(x + 2 * i) * Dp];  // x' = x - R + 2i
+        for (int a = 0; a < kKeyVecs; ++a)
+          acc[a] = _mm256_add_epi32(
+              acc[a], _mm256_madd_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(h + 8 * a)), w));
+      }
+      __m256i m = acc[0];
+      for (int a = 1; a < kKeyVecs; ++a) m = _mm256_min_epu32(m, acc[a]);
+      __m128i m4 = _mm_min_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256(m, 1));
+      m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0x4E));
+      m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0xB1));
+      out[size_t(y) * W + x] = uint8_t(uint32_t(_mm_cvtsi128_si32(m4)) & (kDmax - 1));
+    }
+  }
+}
+
+#endif  // __AVX2__
+
+using BandFn = void (*)(const Frame&, int, int, Scratch&, uint8_t*);
+
+BandFn pick_kernel(int Dp, bool portable) {
+#ifdef __AVX2__
+  if (!portable) switch (Dp) {
+      case 16: return band_avx2<16>;
+      case 32: return band_avx2<32>;
+      case 48: return band_avx2<48>;
+      case 64: return band_avx2<64>;
+      default: break;
+    }
+#else
+  (void)Dp;
+  (void)portable;
+#endif
+  return band_portable;
+}
+
+static_assert(kDmax <= 64, "the AVX2 kernel is instantiated for Dp = 16..64");
+
+}  // namespace
+
+Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                         bool portable) {
+  check_views(left, right);
+  check_config(cfg, left.width(), left.height());
+  const Frame f = make_frame(left, right, cfg);
+  const BandFn band = pick_kernel(f.Dp, portable);
+  Plane disp(f.W, f.H);
+  const int bands = (f.H + kBandRows - 1) / kBandRows;
+  int workers = cfg.threads > 0 ? cfg.threads : int(std::thread::hardware_concurrency());
+  workers = std::clamp(workers, 1, bands);
+  // Bands are taken in order from a shared counter, so a busy core takes fewer.
+  std::atomic<int> next_band{0};
+  auto work = [&] {
+    Scratch s;
+    for (int b; (b = next_band.fetch_add(1)) < bands;)
+      band(f, b * kBandRows, std::min(f.H, (b + 1) * kBandRows), s, disp.px.data());
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  return disp;
+}
+
+}  // namespace mcadsw
