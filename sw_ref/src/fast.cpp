@@ -40,7 +40,7 @@ namespace {
 constexpr int kTaps = 2 * kRadius + 2;  // 32: the 31 taps plus one of weight 0, so taps pair up
 constexpr int kPairs = kTaps / 2;       // 16
 constexpr int kRing = 32;               // cost rows held: y-15 .. y+16 (tap 31 reads y+16)
-constexpr int kBandRows = 16;           // output rows per work item
+constexpr int kBandRows = 32;           // output rows per work item
 constexpr int kKeyShift = kDispBits;    // key = E << 6 | d
 // A padded disparity lane (d >= D) starts at this offset, above every real key.
 constexpr uint32_t kPadKey = 0x60000000u;
@@ -59,28 +59,44 @@ struct Frame {
   int Dp = 0;  // D rounded up to a multiple of 16 (the SIMD lane count of costs)
   WeightTable table;
   WeightThresholds thr{};
-  const uint8_t* centre[3] = {};  // left Y, U, V planes
+  const uint8_t* left[3] = {};  // left Y, U, V planes, W*H each
   std::vector<uint8_t> cl;        // left census, W*H
   // Right census, each row reversed and clamp-padded: rrev[y][t] = cr(clamp(W-1-t), y),
   // t = 0..W+Dp-1, so cr(clamp(x-d), y) = rrev[y][W-1-x+d] for every d < Dp.
   std::vector<uint8_t> rrev;
   int rrev_stride = 0;
-  // Left Y, U, V transposed, rows clamp-padded: col[c][x][t] = P_c(x, clamp(t-R)),
-  // t = 0..H+kTaps-1: the vertical taps of (x, y) are col[c][x][y..y+31].
-  std::vector<uint8_t> col[3];
-  int col_stride = 0;
-  // Left Y, U, V rows, columns clamp-padded: row[c][y][t] = P_c(clamp(t-R), y):
-  // the horizontal taps of (x, y) are row[c][y][x..x+31].
-  std::vector<uint8_t> row[3];
-  int row_stride = 0;
 };
+
+// Y, U, V of left column x, rows clamp(y_begin + t) for t = 0..n-1, into out[c][t].
+void gather_column(const Frame& f, int x, int y_begin, int n, uint8_t* const* out) {
+  for (int t = 0; t < n; ++t) {
+    const size_t i = size_t(clampi(y_begin + t, f.H)) * f.W + x;
+    for (int c = 0; c < 3; ++c) out[c][t] = f.left[c][i];
+  }
+}
+
+// Y, U, V of left row y, clamp-padded: out[c][t] = P_c(clamp(t - R), y) for
+// t = 0..W+kTaps-1, so the horizontal taps of (x, y) are out[c][x..x+31].
+void gather_row(const Frame& f, int y, uint8_t* const* out) {
+  for (int c = 0; c < 3; ++c) {
+    const uint8_t* src = f.left[c] + size_t(y) * f.W;
+    std::fill(out[c], out[c] + kRadius, src[0]);
+    std::copy(src, src + f.W, out[c] + kRadius);
+    std::fill(out[c] + kRadius + f.W, out[c] + f.W + kTaps, src[f.W - 1]);
+  }
+}
 
 // Census of a whole plane through a clamp-padded copy (same codes as census_code).
 std::vector<uint8_t> census_plane(const Plane& p) {
   const int W = p.width, H = p.height, R = kCensusRadius, PW = W + 2 * R;
   std::vector<uint8_t> pad(size_t(PW) * (H + 2 * R));
-  for (int y = 0; y < H + 2 * R; ++y)
-    for (int x = 0; x < PW; ++x) pad[size_t(y) * PW + x] = p.clamped(x - R, y - R);
+  for (int y = 0; y < H + 2 * R; ++y) {
+    const uint8_t* src = &p.px[size_t(clampi(y - R, H)) * W];
+    uint8_t* dst = &pad[size_t(y) * PW];
+    std::fill(dst, dst + R, src[0]);
+    std::copy(src, src + W, dst + R);
+    std::fill(dst + R + W, dst + PW, src[W - 1]);
+  }
   std::vector<uint8_t> out(size_t(W) * H);
   for (int y = 0; y < H; ++y) {
     const uint8_t* c = &pad[size_t(y + R) * PW + R];
@@ -104,36 +120,29 @@ Frame make_frame(const YuvImage& left, const YuvImage& right, const Config& cfg)
   f.thr = weight_thresholds(cfg.table);
   const int W = f.W, H = f.H;
   const Plane* yuv[3] = {&left.y, &left.u, &left.v};
-  for (int c = 0; c < 3; ++c) f.centre[c] = yuv[c]->px.data();
+  for (int c = 0; c < 3; ++c) f.left[c] = yuv[c]->px.data();
   f.cl = census_plane(left.y);
   const std::vector<uint8_t> cr = census_plane(right.y);
   f.rrev_stride = W + f.Dp;
   f.rrev.resize(size_t(f.rrev_stride) * H);
-  for (int y = 0; y < H; ++y)
-    for (int t = 0; t < f.rrev_stride; ++t)
-      f.rrev[size_t(y) * f.rrev_stride + t] = cr[size_t(y) * W + clampi(W - 1 - t, W)];
-  f.col_stride = H + kTaps;
-  f.row_stride = W + kTaps;
-  for (int c = 0; c < 3; ++c) {
-    const Plane& p = *yuv[c];
-    f.col[c].resize(size_t(f.col_stride) * W);
-    for (int t = 0; t < f.col_stride; ++t) {
-      const uint8_t* src = &p.px[size_t(clampi(t - kRadius, H)) * W];
-      for (int x = 0; x < W; ++x) f.col[c][size_t(x) * f.col_stride + t] = src[x];
-    }
-    f.row[c].resize(size_t(f.row_stride) * H);
-    for (int y = 0; y < H; ++y)
-      for (int t = 0; t < f.row_stride; ++t)
-        f.row[c][size_t(y) * f.row_stride + t] = p.px[size_t(y) * W + clampi(t - kRadius, W)];
+  for (int y = 0; y < H; ++y) {
+    const uint8_t* src = &cr[size_t(y) * W];
+    uint8_t* dst = &f.rrev[size_t(y) * f.rrev_stride];
+    std::reverse_copy(src, src + W, dst);
+    std::fill(dst + W, dst + f.rrev_stride, src[0]);
   }
   return f;
 }
 
 // Per-worker buffers.
 struct Scratch {
-  std::vector<uint8_t> ring;  // kRing cost rows of W*Dp, [x][d]
-  std::vector<uint16_t> ev;   // one row of vertical costs, W*Dp
-  std::vector<uint32_t> hp;   // one row of horizontal-pass inputs, (W + 2R)*Dp
+  std::vector<uint8_t> ring;  // portable: kRing cost rows of W*Dp, [x][d]
+  std::vector<uint8_t> cost;  // AVX2: the band's cost rows, [x][row][d]
+  std::vector<uint16_t> ev;   // vertical costs: one row (portable), the band (AVX2)
+  std::vector<uint32_t> hp;   // AVX2: one row of horizontal-pass inputs, (W + 2R)*Dp
+  std::vector<uint8_t> wv;    // AVX2: vertical weights of one column of the band
+  std::vector<int16_t> wh;    // AVX2: horizontal weights * 64 of one row
+  std::vector<uint8_t> line;  // AVX2: Y, U, V of one clamp-padded row or column
 };
 
 // ---- Portable kernel --------------------------------------------------------------
@@ -161,16 +170,18 @@ void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
   s.ring.resize(kRing * row_bytes);
   s.ev.resize(row_bytes);
   std::vector<uint32_t> acc(Dp);
+  std::vector<uint8_t> buf(3 * size_t(W + kTaps));
+  uint8_t* const line[3] = {&buf[0], &buf[size_t(W + kTaps)], &buf[2 * size_t(W + kTaps)]};
   int next = std::max(0, y0 - kRadius);  // next cost row to compute
   for (int y = y0; y < y1; ++y) {
     for (; next <= std::min(H - 1, y + kRadius + 1); ++next)
       popcount_row_portable(f, next, &s.ring[(next % kRing) * row_bytes]);
     // Eq. 3 for every column of row y.
     for (int x = 0; x < W; ++x) {
-      const int centre[3] = {f.centre[0][size_t(y) * W + x], f.centre[1][size_t(y) * W + x],
-                             f.centre[2][size_t(y) * W + x]};
-      const uint8_t* taps[3];
-      for (int c = 0; c < 3; ++c) taps[c] = &f.col[c][size_t(x) * f.col_stride + y];
+      const int centre[3] = {f.left[0][size_t(y) * W + x], f.left[1][size_t(y) * W + x],
+                             f.left[2][size_t(y) * W + x]};
+      gather_column(f, x, y - kRadius, kWindow, line);
+      const uint8_t* taps[3] = {line[0], line[1], line[2]};
       uint16_t* ev = &s.ev[size_t(x) * Dp];
       std::fill(ev, ev + Dp, 0);
       for (int k = 0; k < kWindow; ++k) {
@@ -181,11 +192,11 @@ void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       }
     }
     // Eq. 4 and the WTA.
+    gather_row(f, y, line);
     for (int x = 0; x < W; ++x) {
-      const int centre[3] = {f.centre[0][size_t(y) * W + x], f.centre[1][size_t(y) * W + x],
-                             f.centre[2][size_t(y) * W + x]};
-      const uint8_t* taps[3];
-      for (int c = 0; c < 3; ++c) taps[c] = &f.row[c][size_t(y) * f.row_stride + x];
+      const int centre[3] = {f.left[0][size_t(y) * W + x], f.left[1][size_t(y) * W + x],
+                             f.left[2][size_t(y) * W + x]};
+      const uint8_t* taps[3] = {line[0] + x, line[1] + x, line[2] + x};
       for (int d = 0; d < Dp; ++d) acc[d] = uint32_t(d) + (d < D ? 0 : kPadKey);
       for (int j = 0; j < kWindow; ++j) {
         const uint32_t w = uint32_t(f.table[colour_dist(taps, centre, j)]) << kKeyShift;
@@ -236,11 +247,11 @@ struct WeightUnit {
   }
 };
 
-// Cost row r, columns 0..W-1, as [x][d]. A 32-d chunk is stored in the order
+// Cost row r, columns 0..W-1, the Dp costs of column x at out + x * x_stride. A 32-d chunk is stored in the order
 // d 0-7, 16-23, 8-15, 24-31 (qwords 0, 2, 1, 3), so that vpunpck{l,h}bw of two
 // rows yields d 0-15 and 16-31 in order; a 16-d tail chunk is stored in order.
 template <int Dp>
-void popcount_row_avx2(const Frame& f, int r, uint8_t* out) {
+void popcount_row_avx2(const Frame& f, int r, uint8_t* out, size_t x_stride) {
   constexpr int kChunks = Dp / 32;
   const int W = f.W;
   const __m256i nib = _mm256_set1_epi8(0x0F);
@@ -255,7 +266,7 @@ void popcount_row_avx2(const Frame& f, int r, uint8_t* out) {
   const uint8_t* cl = &f.cl[size_t(r) * W];
   for (int x = 0; x < W; ++x) {
     const uint8_t* rx = rr + (W - 1 - x);
-    uint8_t* o = out + size_t(x) * Dp;
+    uint8_t* o = out + size_t(x) * x_stride;
     const __m256i l = _mm256_set1_epi8(char(cl[x]));
     for (int c = 0; c < kChunks; ++c) {
       const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(rx + 32 * c));
@@ -276,11 +287,17 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
   constexpr bool kTail = Dp % 32 != 0;       // one 16-d chunk after them
   constexpr int kEvVecs = Dp / 16;           // Ev: 16 d per vector
   constexpr int kKeyVecs = Dp / 8;           // keys: 8 d per vector
-  const int W = f.W, H = f.H;
-  const size_t row_bytes = size_t(W) * Dp;
-  s.ring.resize(kRing * row_bytes + 32);
-  s.ev.resize(row_bytes);
+  const int W = f.W, H = f.H, B = y1 - y0;
+  // Cost rows y0-R .. y1+R (clamped), stored column-major [x][row][d], so the
+  // taps of one column are contiguous and stay in L1 while the band's rows use them.
+  const int rows = B + kTaps - 1;
+  const size_t col_bytes = size_t(rows) * Dp;
+  s.cost.resize(col_bytes * W);
+  s.ev.resize(size_t(B) * W * Dp);
   s.hp.resize(size_t(W + 2 * kRadius) * Dp);
+  s.wh.resize(size_t(W) * kTaps);
+  for (int v = 0; v < rows; ++v)
+    popcount_row_avx2<Dp>(f, clampi(y0 - kRadius + v, H), &s.cost[size_t(v) * Dp], col_bytes);
   const WeightUnit wu(f.thr);
   __m256i key0[kKeyVecs];  // d, or d + kPadKey for padded lanes
   for (int a = 0; a < kKeyVecs; ++a) {
@@ -288,34 +305,36 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
     for (int i = 0; i < 8; ++i) k[i] = uint32_t(8 * a + i) + (8 * a + i < f.D ? 0 : kPadKey);
     key0[a] = _mm256_load_si256(reinterpret_cast<const __m256i*>(k));
   }
-  int next = std::max(0, y0 - kRadius);  // next cost row to compute
-  for (int y = y0; y < y1; ++y) {
-    for (; next <= std::min(H - 1, y + kRadius + 1); ++next)
-      popcount_row_avx2<Dp>(f, next, &s.ring[(next % kRing) * row_bytes]);
-    const uint8_t* rows[kTaps];
-    for (int k = 0; k < kTaps; ++k) rows[k] = &s.ring[(clampi(y + k - kRadius, H) % kRing) * row_bytes];
-    const uint8_t* centre[3];
-    for (int c = 0; c < 3; ++c) centre[c] = &f.centre[c][size_t(y) * W];
 
-    // Eq. 3: Ev of every column of row y, two taps per vpmaddubsw. Stored per
-    // 16 d in the order d 0-3, 8-11, 4-7, 12-15 for the vpunpck*wd below.
-    for (int x = 0; x < W; ++x) {
-      const uint8_t* taps[3];
-      for (int c = 0; c < 3; ++c) taps[c] = &f.col[c][size_t(x) * f.col_stride + y];
-      const uint8_t cx[3] = {centre[0][x], centre[1][x], centre[2][x]};
-      alignas(32) uint8_t wv[kTaps];
-      _mm256_store_si256(reinterpret_cast<__m256i*>(wv), wu.weights(taps, cx));
+  // Eq. 3, column by column: Ev of (x, y0..y1-1), two taps per vpmaddubsw.
+  // Stored per 16 d in the order d 0-3, 8-11, 4-7, 12-15 for the vpunpck*wd below.
+  s.wv.resize(size_t(B) * kTaps);
+  const size_t line_len = size_t(std::max(W, B) + kTaps);
+  s.line.resize(3 * line_len);
+  uint8_t* const line[3] = {&s.line[0], &s.line[line_len], &s.line[2 * line_len]};
+  for (int x = 0; x < W; ++x) {
+    const uint8_t* column = &s.cost[size_t(x) * col_bytes];
+    // The weights of the whole column first: reading them back right after the
+    // vector store would stall on store forwarding.
+    gather_column(f, x, y0 - kRadius, B + kTaps - 1, line);
+    for (int yl = 0; yl < B; ++yl) {
+      const int y = y0 + yl;
+      const uint8_t* taps[3] = {line[0] + yl, line[1] + yl, line[2] + yl};
+      const size_t centre = size_t(y) * W + x;
+      const uint8_t cx[3] = {f.left[0][centre], f.left[1][centre], f.left[2][centre]};
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(&s.wv[size_t(yl) * kTaps]), wu.weights(taps, cx));
+    }
+    for (int yl = 0; yl < B; ++yl) {
+      const uint8_t* wv = &s.wv[size_t(yl) * kTaps];
       __m256i acc[2 * kChunks + 1];
       for (auto& a : acc) a = _mm256_setzero_si256();
       __m128i tlo = _mm_setzero_si128(), thi = _mm_setzero_si128();
-      const size_t off = size_t(x) * Dp;
-      for (int i = 0; i < kPairs; ++i) {
-        if ((wv[2 * i] | wv[2 * i + 1]) == 0) continue;
+      const uint8_t* a = column + size_t(yl) * Dp;  // tap k is row y - R + k
+      for (int i = 0; i < kPairs; ++i, a += 2 * Dp) {
         int16_t pair;
         std::memcpy(&pair, &wv[2 * i], 2);
         const __m256i w = _mm256_set1_epi16(pair);
-        const uint8_t* a = rows[2 * i] + off;
-        const uint8_t* b = rows[2 * i + 1] + off;
+        const uint8_t* b = a + Dp;
         for (int c = 0; c < kChunks; ++c) {
           const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + 32 * c));
           const __m256i vb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + 32 * c));
@@ -332,17 +351,21 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
         }
       }
       if constexpr (kTail) acc[2 * kChunks] = _mm256_set_m128i(thi, tlo);
-      uint16_t* ev = &s.ev[off];
+      uint16_t* ev = &s.ev[(size_t(yl) * W + x) * Dp];
       for (int v = 0; v < kEvVecs; ++v)
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(ev + 16 * v),
                             _mm256_permute4x64_epi64(acc[v], 0xD8));
     }
+  }
 
+  for (int yl = 0; yl < B; ++yl) {
+    const int y = y0 + yl;
+    const uint16_t* evrow = &s.ev[size_t(yl) * W * Dp];
     // Horizontal-pass inputs: hp[x'+R] = (Ev(clamp(x'), d), Ev(clamp(x'+1), d)) as
     // 16-bit pairs, d in order, for x' = -R .. W+R-1.
     for (int xp = -kRadius; xp < W + kRadius; ++xp) {
-      const uint16_t* e0 = &s.ev[size_t(clampi(xp, W)) * Dp];
-      const uint16_t* e1 = &s.ev[size_t(clampi(xp + 1, W)) * Dp];
+      const uint16_t* e0 = evrow + size_t(clampi(xp, W)) * Dp;
+      const uint16_t* e1 = evrow + size_t(clampi(xp + 1, W)) * Dp;
       uint32_t* h = &s.hp[size_t(xp + kRadius) * Dp];
       for (int v = 0; v < kEvVecs; ++v) {
         const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(e0 + 16 * v));
@@ -352,25 +375,31 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       }
     }
 
-    // Eq. 4 fused with the WTA, two taps per vpmaddwd, weights scaled by 64.
+    // Horizontal weights of the row, scaled by 64, as 16-bit (tap 2i, tap 2i+1) pairs.
+    gather_row(f, y, line);
     for (int x = 0; x < W; ++x) {
-      const uint8_t* taps[3];
-      for (int c = 0; c < 3; ++c) taps[c] = &f.row[c][size_t(y) * f.row_stride + x];
-      const uint8_t cx[3] = {centre[0][x], centre[1][x], centre[2][x]};
+      const uint8_t* taps[3] = {line[0] + x, line[1] + x, line[2] + x};
+      const size_t centre = size_t(y) * W + x;
+      const uint8_t cx[3] = {f.left[0][centre], f.left[1][centre], f.left[2][centre]};
       const __m256i wb = wu.weights(taps, cx);
-      alignas(32) int16_t wh[kTaps];
-      _mm256_store_si256(reinterpret_cast<__m256i*>(wh),
-                         _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_castsi256_si128(wb)), kKeyShift));
-      _mm256_store_si256(reinterpret_cast<__m256i*>(wh + 16),
-                         _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_extracti128_si256(wb, 1)), kKeyShift));
+      int16_t* wh = &s.wh[size_t(x) * kTaps];
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(wh),
+                          _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_castsi256_si128(wb)), kKeyShift));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(wh + 16),
+                          _mm256_slli_epi16(_mm256_cvtepu8_epi16(_mm256_extracti128_si256(wb, 1)), kKeyShift));
+    }
+
+    // Eq. 4 fused with the WTA, two taps per vpmaddwd.
+    const uint32_t* hp = s.hp.data();
+    for (int x = 0; x < W; ++x) {
+      const int16_t* wh = &s.wh[size_t(x) * kTaps];
       __m256i acc[kKeyVecs];
       for (int a = 0; a < kKeyVecs; ++a) acc[a] = key0[a];
       for (int i = 0; i < kPairs; ++i) {
         int32_t pair;
         std::memcpy(&pair, &wh[2 * i], 4);
-        if (pair == 0) continue;
         const __m256i w = _mm256_set1_epi32(pair);
-        const uint32_t* h = &s.hp[size_t(x + 2 * i) * Dp];  // x' = x - R + 2i
+        const uint32_t* h = hp + size_t(x + 2 * i) * Dp;  // x' = x - R + 2i
         for (int a = 0; a < kKeyVecs; ++a)
           acc[a] = _mm256_add_epi32(
               acc[a], _mm256_madd_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(h + 8 * a)), w));
