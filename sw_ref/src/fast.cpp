@@ -445,15 +445,19 @@ Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Conf
   const Frame f = make_frame(left, right, cfg);
   const BandFn band = pick_kernel(f.Dp, portable);
   Plane disp(f.W, f.H);
-  const int bands = (f.H + kBandRows - 1) / kBandRows;
   int workers = cfg.threads > 0 ? cfg.threads : int(std::thread::hardware_concurrency());
-  workers = std::clamp(workers, 1, bands);
-  // Bands are taken in order from a shared counter, so a busy core takes fewer.
+  workers = std::clamp(workers, 1, (f.H + kBandRows - 1) / kBandRows);
+  // About kBandRows rows per band, and a multiple of `workers` bands so they
+  // finish together. Bands are taken in order from a shared counter, so a
+  // worker on a busy core takes fewer. No pixel depends on the band split.
+  const int per_worker = (f.H + kBandRows * workers - 1) / (kBandRows * workers);
+  const int rows = (f.H + per_worker * workers - 1) / (per_worker * workers);
+  const int bands = (f.H + rows - 1) / rows;
   std::atomic<int> next_band{0};
   auto work = [&] {
     Scratch s;
     for (int b; (b = next_band.fetch_add(1)) < bands;)
-      band(f, b * kBandRows, std::min(f.H, (b + 1) * kBandRows), s, disp.px.data());
+      band(f, b * rows, std::min(f.H, (b + 1) * rows), s, disp.px.data());
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < workers; ++t) pool.emplace_back(work);
