@@ -216,12 +216,18 @@ void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
 // against the centre colour; the weight table is applied as its thresholds:
 // code = #{i : dC < thr[i]}, weight = code ? 2^(code-1) : 0.
 struct WeightUnit {
-  __m256i thr[kWeightThresholds];
+  __m256i thr[kWeightThresholds];    // as 16-bit lanes
+  __m256i thr8[kWeightThresholds];   // as 8-bit lanes, when `bytes`
+  bool bytes = true;                 // every threshold <= 255
   __m256i lut;   // code -> weight, in both 128-bit lanes
   __m256i last;  // zeroes byte 31
 
   explicit WeightUnit(const WeightThresholds& t) {
-    for (int i = 0; i < kWeightThresholds; ++i) thr[i] = _mm256_set1_epi16(int16_t(t[i]));
+    for (int i = 0; i < kWeightThresholds; ++i) {
+      thr[i] = _mm256_set1_epi16(int16_t(t[i]));
+      thr8[i] = _mm256_set1_epi8(char(uint8_t(t[i])));
+      bytes = bytes && t[i] <= 255;
+    }
     lut = _mm256_setr_epi8(0, 1, 2, 4, 8, 16, 32, 64, 0, 0, 0, 0, 0, 0, 0, 0,  //
                            0, 1, 2, 4, 8, 16, 32, 64, 0, 0, 0, 0, 0, 0, 0, 0);
     last = _mm256_setr_epi8(-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,  //
@@ -229,6 +235,19 @@ struct WeightUnit {
   }
 
   __m256i weights(const uint8_t* const* taps, const uint8_t* centre) const {
+    if (bytes) {
+      // dC saturated at 255 compares with a threshold <= 255 as dC does.
+      __m256i dc = _mm256_setzero_si256();
+      for (int c = 0; c < 3; ++c) {
+        const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps[c]));
+        const __m256i m = _mm256_set1_epi8(char(centre[c]));
+        dc = _mm256_adds_epu8(dc, _mm256_or_si256(_mm256_subs_epu8(v, m), _mm256_subs_epu8(m, v)));
+      }
+      __m256i code = _mm256_set1_epi8(kWeightThresholds);
+      for (int i = 0; i < kWeightThresholds; ++i)  // -1 where dC >= thr[i]
+        code = _mm256_add_epi8(code, _mm256_cmpeq_epi8(_mm256_max_epu8(dc, thr8[i]), dc));
+      return _mm256_and_si256(_mm256_shuffle_epi8(lut, code), last);
+    }
     __m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
     for (int c = 0; c < 3; ++c) {
       const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps[c]));
