@@ -275,6 +275,22 @@ module mcadsw_cost_agg #(
   assign mon_fc_grp_o   = h2_grp_q;
   assign mon_fc_o       = fc;
 
+`ifndef SYNTHESIS
+  // Ping-pong ownership (docs/architecture.md section 9), checked in simulation:
+  // the vertical side never writes a bank the horizontal side has still to read
+  // (h0 issues the reads of the following cycles; the read in h1 in the same
+  // cycle as a write returns the word from before it), and a bank is handed over
+  // only when the horizontal side has finished the previous one.
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
+        else $error("cost_agg: ping-pong bank %0d overwritten before it was read", wbank_q);
+      assert (!(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
+        else $error("cost_agg: ping-pong bank handed over before the previous one was read");
+    end
+  end
+`endif
+
 endmodule
 
 `default_nettype wire

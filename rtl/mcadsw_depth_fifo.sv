@@ -112,6 +112,20 @@ module mcadsw_depth_fifo #(
     end
   end
 
+`ifndef SYNTHESIS
+  // Invariants (docs/architecture.md section 9), checked in simulation.
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(desc_push_i && !space_o))
+        else $error("depth_fifo: row descriptor pushed while the queue is full (overflow)");
+      assert (!(disp_valid_i && ready_q == count_q))
+        else $error("depth_fifo: disparities for a row that has no descriptor (underflow)");
+      assert (!(wr_req_o && count_q == '0))
+        else $error("depth_fifo: write request with no row queued (underflow)");
+    end
+  end
+`endif
+
 endmodule
 
 `default_nettype wire

@@ -104,6 +104,22 @@ module mcadsw_mem_ctrl #(
     end
   end
 
+`ifndef SYNTHESIS
+  // Invariants (docs/architecture.md section 9), checked in simulation.
+  logic [NR:0] grants;
+  assign grants = {wr_gnt_o, rd_gnt_o};
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert ((grants & (grants - 1'b1)) == '0)
+        else $error("mem_ctrl: more than one grant in a cycle (%b)", grants);
+      assert ((rd_rvalid_o & (rd_rvalid_o - 1'b1)) == '0)
+        else $error("mem_ctrl: read data routed to more than one reader (%b)", rd_rvalid_o);
+      assert (!(mem_rvalid_i && nids_q == '0))
+        else $error("mem_ctrl: external memory returned read data with no read outstanding");
+    end
+  end
+`endif
+
 endmodule
 
 `default_nettype wire

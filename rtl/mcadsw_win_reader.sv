@@ -198,6 +198,18 @@ module mcadsw_win_reader #(
 
   assign busy_o = busy_q;
 
+`ifndef SYNTHESIS
+  // Invariants (docs/architecture.md section 9), checked in simulation.
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(rvalid_i && !pop && fcount_q == OB'(OUTS)))
+        else $error("win_reader: response FIFO overflow");
+      assert (!(rvalid_i && inflight_q == '0))
+        else $error("win_reader: read data with no request of this reader in flight");
+    end
+  end
+`endif
+
 endmodule
 
 `default_nettype wire

@@ -18,7 +18,7 @@ files=("$pkg" "${mods[@]}")
 run_lint() {
   for f in "${mods[@]}"; do
     top=${f%.sv}
-    out=$(verilator --lint-only -Wall "${waivers[@]}" "${files[@]}" --top-module "$top" 2>&1) || {
+    out=$(verilator --lint-only -Wall --assert "${waivers[@]}" "${files[@]}" --top-module "$top" 2>&1) || {
       echo "$out"; echo "rtl_check: verilator lint FAILED for $top" >&2; return 1; }
     if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
   done

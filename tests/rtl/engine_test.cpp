@@ -3,10 +3,13 @@
 // so that the suite stays fast; `make sim` runs the full-size regression.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <random>
 #include <string>
 #include <vector>
 
+#include "Vmcadsw_top.h"
 #include "engine_bench.hpp"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
@@ -148,6 +151,32 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
     EXPECT_EQ(r.error_code, b.code) << b.what;
     EXPECT_EQ(r.bad_writes, 0) << b.what << ": the engine wrote to memory";
   }
+}
+
+// The RTL's assertions (docs/architecture.md section 9) are compiled in (Verilator
+// --assert) and stop the simulation: read data from the external memory with no
+// read outstanding violates the memory controller's invariant.
+TEST(EngineDeathTest, AssertionStopsTheSimulation) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto spurious_read_data = [] {
+    dup2(2, 1);  // Verilator reports on stdout; the death test reads stderr
+    VerilatedContext ctx;
+    Vmcadsw_top top{&ctx};
+    const auto cycle = [&] {
+      top.clk_i = 0;
+      top.eval();
+      top.clk_i = 1;
+      top.eval();
+    };
+    top.rst_ni = 0;
+    cycle();
+    top.rst_ni = 1;
+    cycle();
+    top.mem_rvalid_i = 1;  // nothing was requested
+    for (int i = 0; i < 4; ++i) cycle();
+    top.final();
+  };
+  EXPECT_DEATH(spurious_read_data(), "mem_ctrl: external memory returned read data with no read outstanding");
 }
 
 }  // namespace
