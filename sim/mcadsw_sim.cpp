@@ -6,6 +6,7 @@
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -26,12 +27,30 @@ const char* kUsage =
 
 constexpr double kClockMHz = 95.0;  // paper, Table III
 
+long to_int(const std::string& s, const std::string& what) {
+  char* end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end) throw std::invalid_argument(what + " must be an integer, got '" + s + "'");
+  return v;
+}
+
+double to_double(const std::string& s, const std::string& what) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end) throw std::invalid_argument(what + " must be a number, got '" + s + "'");
+  return v;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A failing RTL assertion prints on stdout and aborts: keep stdout line-buffered
+  // so its message is not lost in a pipe's buffer.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   std::string left, right, name, gt, masks, out, json, waves;
   cv::Rect crop;
-  int d = 0;
+  constexpr int kNoD = -1000000;
+  int d = kNoD;
   double gamma = mcadsw::kDefaultGamma, scale = 0;
   mcadsw::sim::EngineOptions opt;
   opt.progress = true;
@@ -42,15 +61,15 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
         return argv[++i];
       };
-      if (a == "-d") d = std::stoi(val());
-      else if (a == "--gamma") gamma = std::stod(val());
-      else if (a == "--latency") opt.latency.fixed = std::stoi(val());
+      if (a == "-d") d = int(to_int(val(), "D"));
+      else if (a == "--gamma") gamma = to_double(val(), "gamma");
+      else if (a == "--latency") opt.latency.fixed = int(to_int(val(), "latency"));
       else if (a == "--random-latency") {
         opt.latency.random = true;
-        opt.latency.seed = uint32_t(std::stoul(val()));
+        opt.latency.seed = uint32_t(to_int(val(), "seed"));
       } else if (a == "--name") name = val();
       else if (a == "--gt") gt = val();
-      else if (a == "--scale") scale = std::stod(val());
+      else if (a == "--scale") scale = to_double(val(), "scale");
       else if (a == "--masks") masks = val();
       else if (a == "--out") out = val();
       else if (a == "--json") json = val();
@@ -68,7 +87,14 @@ int main(int argc, char** argv) {
       else if (right.empty()) right = a;
       else throw std::invalid_argument("unexpected argument " + a);
     }
-    if (left.empty() || right.empty() || d == 0) throw std::invalid_argument("need LEFT RIGHT -d D");
+    if (left.empty() || right.empty()) throw std::invalid_argument("need LEFT and RIGHT images");
+    if (d == kNoD) throw std::invalid_argument("need -d D");
+    if (d < 1 || d > mcadsw::kDmax)
+      throw std::invalid_argument("D = " + std::to_string(d) + " out of range 1.." +
+                                  std::to_string(mcadsw::kDmax));
+    if (opt.latency.fixed < 0) throw std::invalid_argument("latency must not be negative");
+    if (!gt.empty() && (masks.empty() || !(scale > 0)))
+      throw std::invalid_argument("--gt needs --scale S > 0 and --masks DIR");
   } catch (const std::exception& e) {
     std::cerr << "mcadsw_sim: " << e.what() << "\n" << kUsage;
     return 2;
@@ -87,12 +113,20 @@ int main(int argc, char** argv) {
       return mcadsw::to_yuv(img);
     };
     const mcadsw::YuvImage l = load(left), r = load(right);
+    if (r.width() != l.width() || r.height() != l.height())
+      throw std::runtime_error("left and right images must have the same size (" +
+                               std::to_string(l.width()) + "x" + std::to_string(l.height()) +
+                               " vs " + std::to_string(r.width()) + "x" +
+                               std::to_string(r.height()) + ")");
     mcadsw::Config cfg;
     cfg.disparities = d;
     cfg.table = mcadsw::make_weight_table(gamma);
     mcadsw::check_config(cfg, l.width(), l.height());
-    if (r.width() != l.width() || r.height() != l.height())
-      throw std::runtime_error("left and right images differ in size");
+    if (!out.empty()) {
+      const auto parent = std::filesystem::path(out).parent_path();
+      if (!parent.empty() && !std::filesystem::is_directory(parent))
+        throw std::runtime_error("output directory '" + parent.string() + "' does not exist");
+    }
 
     const mcadsw::sim::EngineResult res = mcadsw::sim::run_engine(l, r, cfg, opt);
     double err_all = -1;

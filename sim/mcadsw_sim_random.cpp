@@ -123,6 +123,9 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A failing RTL assertion prints on stdout and aborts: keep stdout line-buffered
+  // so its message is not lost in a pipe's buffer.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   int cases = 200, only = -1;
   uint32_t seed = 1;
   std::string data = MCADSW_DATA_DIR;

@@ -1,56 +1,27 @@
 // The mcadsw CLI: results and bad input (one message, non-zero exit, no output left behind).
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
+
+#include "cli_util.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using mcadsw::test::CliRun;
 const fs::path kData = MCADSW_DATA_DIR;
 
-struct CliRun {
-  int status;
-  std::string output;  // stdout and stderr
-};
+CliRun run(const std::string& args) { return mcadsw::test::run_command(MCADSW_CLI, args); }
 
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(MCADSW_CLI) + " " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe.get())) out += buf.data();
-  const int status = pclose(pipe.release());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-class Cli : public ::testing::Test {
+class Cli : public mcadsw::test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("mcadsw_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    out_ = (dir_ / "out.png").string();
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string pair(const char* name = "tsukuba") const {
     const auto d = kData / "middlebury" / name;
     return (d / "left.png").string() + " " + (d / "right.png").string();
   }
-  void expect_failure(const CliRun& r, const std::string& message) {
-    EXPECT_NE(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(out_));
-    EXPECT_FALSE(fs::exists(dir_ / "out_color.png"));
-  }
-  fs::path dir_;
-  std::string out_;
 };
 
 TEST_F(Cli, HelpExitsZero) {
