@@ -40,6 +40,14 @@ TEST_F(SimCli, SmallCropRunsBitExact) {
   EXPECT_TRUE(fs::exists(dir_ / "r.json"));
 }
 
+TEST_F(SimCli, WavesWritesAnFstFile) {
+  const fs::path fst = dir_ / "w.fst";
+  const CliRun r = run(pair() + " -d 4 --crop 100,100,20,10 --waves " + fst.string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  ASSERT_TRUE(fs::exists(fst)) << r.output;
+  EXPECT_GT(fs::file_size(fst), 1000u);
+}
+
 TEST_F(SimCli, MissingFile) {
   expect_failure(run("nonexistent.png " + view("tsukuba", "right.png") + " -d 16" + outputs()),
                  "no such file");
