@@ -10,15 +10,19 @@
 #   make synth   Yosys -> OSU 0.18 um gates, memories as macros, OpenSTA timing
 #                (build/synth/report.md; DMAX=16 for the reduced configuration)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
+#   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
+#                (build-cov/coverage/summary.txt; N=<random cases>, default 40)
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
-#   make bench   Google Benchmark of the reference (MDE/s)
+#   make bench   Google Benchmark of the reference and OpenCV's matchers (MDE/s)
+#   make report  build/report/report.md: Middlebury errors and figures next to the paper and
+#                OpenCV SGBM/BM, software and simulation speed, hardware figures
 #   make sweep   weight-table gamma sweep on the Middlebury pairs (docs/algorithm.md)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim wave sim-random ref-sim synth gls lint rtl-pkg bench sweep clean
+.PHONY: all bootstrap configure build test sim wave sim-random ref-sim coverage synth gls lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -43,6 +47,10 @@ N    ?= 200
 SEED ?= 1
 sim-random: build
 	@$(BUILD_DIR)/bin/mcadsw_sim_random --cases $(N) --seed $(SEED)
+
+# make coverage [N=40]: instrumented model in build-cov (scripts/coverage.sh)
+coverage: bootstrap
+	@N=$(if $(filter command line,$(origin N)),$(N),40) scripts/coverage.sh $(abspath build-cov)
 
 # make wave CASE=<name>: open the waves of `make sim CASE=<name> WAVES=1`
 wave:
@@ -74,6 +82,9 @@ rtl-pkg: configure
 
 bench: build
 	@$(BUILD_DIR)/bin/bench_ref
+
+report: build
+	@scripts/report.sh $(abspath $(BUILD_DIR))
 
 sweep: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -g "6 8 10 12 14 16 18 20 21 22 23 24 28 32 40"

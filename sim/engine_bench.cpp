@@ -13,6 +13,13 @@
 #include <stdexcept>
 
 #include "Vmcadsw_top.h"
+#if VM_COVERAGE
+#include <unistd.h>
+#include <verilated_cov.h>
+
+#include <atomic>
+#include <cstdlib>
+#endif
 #include "vbits.hpp"
 
 namespace mcadsw::sim {
@@ -75,6 +82,15 @@ class Engine {
     if (trace_) trace_->close();
 #endif
     top_->final();
+#if VM_COVERAGE
+    // `make coverage` (scripts/coverage.sh): one coverage file per engine instance.
+    if (const char* dir = std::getenv("MCADSW_COVERAGE_DIR")) {
+      static std::atomic<int> serial{0};
+      const std::string path = std::string(dir) + "/" + std::to_string(getpid()) + "_" +
+                               std::to_string(serial++) + ".dat";
+      ctx_->coveragep()->write(path.c_str());
+    }
+#endif
   }
 
   Vmcadsw_top& top() { return *top_; }

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# make coverage: Verilator line and toggle coverage of the engine RTL under the
+# regression stimulus. Builds a coverage-instrumented model in BUILD_DIR
+# (default build-cov; -DMCADSW_COVERAGE=ON), runs the engine tests (faults, invalid
+# configurations, small pairs), the random differential regression (N cases,
+# default 40, seed 2026) and two bundled pairs through the harness,
+# merges the per-run files and reports line and toggle coverage per module.
+#   scripts/coverage.sh [BUILD_DIR]     N=<cases> to change the random part
+# Outputs BUILD_DIR/coverage/: merged.dat, coverage.info (lcov), annotated/ (sources
+# with per-line counts), summary.txt.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build-cov}
+n=${N:-40}
+out=$build/coverage
+command -v verilator_coverage >/dev/null || { echo "coverage: verilator_coverage not found" >&2; exit 2; }
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_COVERAGE=ON > /dev/null
+echo "coverage: building the instrumented model ($build)"
+cmake --build "$build" --target mcadsw_sim mcadsw_sim_random rtl_engine_test -j "$(nproc)" > "$build/coverage_build.log" 2>&1 || {
+  tail -30 "$build/coverage_build.log"; echo "coverage: build failed" >&2; exit 1; }
+rm -rf "$out"; mkdir -p "$out/runs"
+export MCADSW_COVERAGE_DIR=$out/runs
+echo "coverage: engine tests (faults, invalid configurations)"
+"$build/bin/rtl_engine_test" > "$out/engine_test.log" 2>&1 || {
+  tail -20 "$out/engine_test.log"; echo "coverage: the engine tests failed" >&2; exit 1; }
+echo "coverage: $n random cases (seed 2026)"
+"$build/bin/mcadsw_sim_random" --cases "$n" --seed 2026 > "$out/random.log" || {
+  tail -20 "$out/random.log"; echo "coverage: the random regression failed" >&2; exit 1; }
+data=$root/data
+echo "coverage: Tsukuba D=16 with random latency, CIF Teddy crop D=64"
+"$build/bin/mcadsw_sim" "$data/middlebury/tsukuba/left.png" "$data/middlebury/tsukuba/right.png" -d 16 \
+  --random-latency 3 > "$out/pairs.log"
+"$build/bin/mcadsw_sim" "$data/cif/teddy/left.png" "$data/cif/teddy/right.png" -d 64 \
+  --crop 60,40,120,60 >> "$out/pairs.log"
+
+verilator_coverage --write "$out/merged.dat" "$out"/runs/*.dat > /dev/null
+verilator_coverage --write-info "$out/coverage.info" "$out/merged.dat" > /dev/null
+verilator_coverage --annotate "$out/annotated" "$out/merged.dat" > "$out/annotate.log"
+# Points per module and kind from merged.dat: each C line names its page
+# (v_line/<module>, v_toggle/<module>, v_branch/<module>) and ends with the count.
+awk '
+  /^C / {
+    n = $NF; page = $0; sub(/.*\001page\002/, "", page); sub(/\001.*/, "", page)
+    split(page, p, "/"); kind = p[1]; mod = p[2]
+    if (kind == "v_branch") kind = "v_line"          # branches count as lines (--coverage-line)
+    tot[mod, kind]++; if (n > 0) hit[mod, kind]++; mods[mod] = 1
+    ttot[kind]++; if (n > 0) thit[kind]++
+  }
+  function pct(h, t) { return t ? sprintf("%5.1f %% (%d/%d)", 100 * h / t, h, t) : "      -" }
+  END {
+    printf "%-24s %-24s %s\n", "module", "line", "toggle"
+    for (m in mods) printf "%-24s %-24s %s\n", m, pct(hit[m, "v_line"], tot[m, "v_line"]), pct(hit[m, "v_toggle"], tot[m, "v_toggle"]) | "sort"
+    close("sort")
+    printf "%-24s %-24s %s\n", "TOTAL", pct(thit["v_line"], ttot["v_line"]), pct(thit["v_toggle"], ttot["v_toggle"])
+  }' "$out/merged.dat" > "$out/summary.txt"
+cat "$out/summary.txt"
+echo "coverage: annotated sources in $out/annotated, lcov data $out/coverage.info"
