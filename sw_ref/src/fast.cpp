@@ -26,6 +26,8 @@
 #include <array>
 #include <atomic>
 #include <cstring>
+#include <memory>
+#include <mutex>
 #include <thread>
 
 #ifdef __AVX2__
@@ -65,7 +67,13 @@ struct Frame {
   // t = 0..W+Dp-1, so cr(clamp(x-d), y) = rrev[y][W-1-x+d] for every d < Dp.
   std::vector<uint8_t> rrev;
   int rrev_stride = 0;
+  // AVX2: left Y, U, V transposed and clamp-padded: lt[c][x * lt_stride + kColPad + t] =
+  // P_c(x, clamp(t)) for t = -kColPad .. H + kColPad - 1, so the vertical taps of a
+  // column are contiguous (no per-band gather).
+  std::vector<uint8_t> lt[3];
+  int lt_stride = 0;
 };
+constexpr int kColPad = kTaps;  // >= R rows above, R + 1 below, plus a 32-byte load
 
 // Y, U, V of left column x, rows clamp(y_begin + t) for t = 0..n-1, into out[c][t].
 void gather_column(const Frame& f, int x, int y_begin, int n, uint8_t* const* out) {
@@ -131,13 +139,24 @@ Frame make_frame(const YuvImage& left, const YuvImage& right, const Config& cfg)
     std::reverse_copy(src, src + W, dst);
     std::fill(dst + W, dst + f.rrev_stride, src[0]);
   }
+#ifdef __AVX2__
+  f.lt_stride = H + 2 * kColPad;
+  for (int c = 0; c < 3; ++c) {
+    f.lt[c].resize(size_t(f.lt_stride) * W);
+    uint8_t* dst = f.lt[c].data();
+    for (int t = 0; t < f.lt_stride; ++t) {
+      const uint8_t* src = f.left[c] + size_t(clampi(t - kColPad, H)) * W;
+      for (int x = 0; x < W; ++x) dst[size_t(x) * f.lt_stride + t] = src[x];
+    }
+  }
+#endif
   return f;
 }
 
 // Per-worker buffers.
 struct Scratch {
   std::vector<uint8_t> ring;  // portable: kRing cost rows of W*Dp, [x][d]
-  std::vector<uint8_t> cost;  // AVX2: the band's cost rows, [x][row][d]
+  std::vector<uint8_t> pairs;  // AVX2: one column's cost rows, interleaved in pairs
   std::vector<uint16_t> ev;   // vertical costs: one row (portable), the band (AVX2)
   std::vector<uint32_t> hp;   // AVX2: one row of horizontal-pass inputs, (W + 2R)*Dp
   std::vector<uint8_t> wv;    // AVX2: vertical weights of one column of the band
@@ -266,13 +285,16 @@ struct WeightUnit {
   }
 };
 
-// Cost row r, columns 0..W-1, the Dp costs of column x at out + x * x_stride. A 32-d chunk is stored in the order
-// d 0-7, 16-23, 8-15, 24-31 (qwords 0, 2, 1, 3), so that vpunpck{l,h}bw of two
-// rows yields d 0-15 and 16-31 in order; a 16-d tail chunk is stored in order.
+// Census costs of column x at rows clamp(y_begin + v), v = 0..n-1, interleaved in
+// pairs of consecutive rows for vpmaddubsw: pairs + v * 2 * Dp holds, for v = 0..n-2,
+// per 32-d chunk vpunpcklbw then vpunpckhbw of rows v and v+1, each row's chunk taken
+// in the order d 0-7, 16-23, 8-15, 24-31 (qwords 0, 2, 1, 3), so the 16-bit pair
+// sums come out as d 0-15 and 16-31 in order; a 16-d tail chunk is taken in order.
 template <int Dp>
-void popcount_row_avx2(const Frame& f, int r, uint8_t* out, size_t x_stride) {
+void cost_pairs_avx2(const Frame& f, int x, int y_begin, int n, uint8_t* pairs) {
   constexpr int kChunks = Dp / 32;
-  const int W = f.W;
+  constexpr bool kTail = Dp % 32 != 0;
+  const int W = f.W, H = f.H;
   const __m256i nib = _mm256_set1_epi8(0x0F);
   const __m256i pc = _mm256_setr_epi8(0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4,  //
                                       0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4);
@@ -281,22 +303,32 @@ void popcount_row_avx2(const Frame& f, int r, uint8_t* out, size_t x_stride) {
     const __m256i hi = _mm256_and_si256(_mm256_srli_epi16(v, 4), nib);
     return _mm256_add_epi8(_mm256_shuffle_epi8(pc, lo), _mm256_shuffle_epi8(pc, hi));
   };
-  const uint8_t* rr = &f.rrev[size_t(r) * f.rrev_stride];
-  const uint8_t* cl = &f.cl[size_t(r) * W];
-  for (int x = 0; x < W; ++x) {
-    const uint8_t* rx = rr + (W - 1 - x);
-    uint8_t* o = out + size_t(x) * x_stride;
-    const __m256i l = _mm256_set1_epi8(char(cl[x]));
+  __m256i prev[kChunks + 1] = {}, cur[kChunks + 1] = {};
+  for (int v = 0; v < n; ++v) {
+    const int r = clampi(y_begin + v, H);
+    const uint8_t* rx = &f.rrev[size_t(r) * f.rrev_stride + (W - 1 - x)];
+    const __m256i l = _mm256_set1_epi8(char(f.cl[size_t(r) * W + x]));
     for (int c = 0; c < kChunks; ++c) {
-      const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(rx + 32 * c));
-      const __m256i cost = _mm256_permute4x64_epi64(popcount(_mm256_xor_si256(v, l)), 0xD8);
-      _mm256_storeu_si256(reinterpret_cast<__m256i*>(o + 32 * c), cost);
+      const __m256i cr = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(rx + 32 * c));
+      cur[c] = _mm256_permute4x64_epi64(popcount(_mm256_xor_si256(cr, l)), 0xD8);
     }
-    if constexpr (Dp % 32 != 0) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rx + 32 * kChunks));
-      const __m256i cost = popcount(_mm256_castsi128_si256(_mm_xor_si128(v, _mm256_castsi256_si128(l))));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(o + 32 * kChunks), _mm256_castsi256_si128(cost));
+    if constexpr (kTail) {
+      const __m128i cr = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rx + 32 * kChunks));
+      cur[kChunks] = popcount(_mm256_castsi128_si256(_mm_xor_si128(cr, _mm256_castsi256_si128(l))));
     }
+    if (v > 0) {
+      uint8_t* o = pairs + size_t(v - 1) * 2 * Dp;
+      for (int c = 0; c < kChunks; ++c) {
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(o + 64 * c), _mm256_unpacklo_epi8(prev[c], cur[c]));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(o + 64 * c + 32), _mm256_unpackhi_epi8(prev[c], cur[c]));
+      }
+      if constexpr (kTail) {
+        const __m128i a = _mm256_castsi256_si128(prev[kChunks]), b = _mm256_castsi256_si128(cur[kChunks]);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(o + 64 * kChunks), _mm_unpacklo_epi8(a, b));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(o + 64 * kChunks + 16), _mm_unpackhi_epi8(a, b));
+      }
+    }
+    for (int c = 0; c < kChunks + int(kTail); ++c) prev[c] = cur[c];
   }
 }
 
@@ -306,17 +338,17 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
   constexpr bool kTail = Dp % 32 != 0;       // one 16-d chunk after them
   constexpr int kEvVecs = Dp / 16;           // Ev: 16 d per vector
   constexpr int kKeyVecs = Dp / 8;           // keys: 8 d per vector
-  const int W = f.W, H = f.H, B = y1 - y0;
-  // Cost rows y0-R .. y1+R (clamped), stored column-major [x][row][d], so the
-  // taps of one column are contiguous and stay in L1 while the band's rows use them.
-  const int rows = B + kTaps - 1;
-  const size_t col_bytes = size_t(rows) * Dp;
-  s.cost.resize(col_bytes * W);
+  const int W = f.W, B = y1 - y0;
+  const int rows = B + kTaps - 1;  // cost rows y0-R .. y1+R (clamped), v = 0..rows-1
+  const size_t pair_bytes = 2 * size_t(Dp);
+  s.pairs.resize(size_t(rows - 1) * pair_bytes);
   s.ev.resize(size_t(B) * W * Dp);
   s.hp.resize(size_t(W + 2 * kRadius) * Dp);
   s.wh.resize(size_t(W) * kTaps);
-  for (int v = 0; v < rows; ++v)
-    popcount_row_avx2<Dp>(f, clampi(y0 - kRadius + v, H), &s.cost[size_t(v) * Dp], col_bytes);
+  s.wv.resize(size_t(B) * kTaps);
+  const size_t line_len = size_t(W + kTaps);
+  s.line.resize(3 * line_len);
+  uint8_t* const line[3] = {&s.line[0], &s.line[line_len], &s.line[2 * line_len]};
   const WeightUnit wu(f.thr);
   __m256i key0[kKeyVecs];  // d, or d + kPadKey for padded lanes
   for (int a = 0; a < kKeyVecs; ++a) {
@@ -327,20 +359,16 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
 
   // Eq. 3, column by column: Ev of (x, y0..y1-1), two taps per vpmaddubsw.
   // Stored per 16 d in the order d 0-3, 8-11, 4-7, 12-15 for the vpunpck*wd below.
-  s.wv.resize(size_t(B) * kTaps);
-  const size_t line_len = size_t(std::max(W, B) + kTaps);
-  s.line.resize(3 * line_len);
-  uint8_t* const line[3] = {&s.line[0], &s.line[line_len], &s.line[2 * line_len]};
   for (int x = 0; x < W; ++x) {
-    const uint8_t* column = &s.cost[size_t(x) * col_bytes];
+    // The column's cost rows, already interleaved in pairs, stay in L1 for the band.
+    cost_pairs_avx2<Dp>(f, x, y0 - kRadius, rows, s.pairs.data());
+    const size_t col = size_t(x) * f.lt_stride + kColPad + (y0 - kRadius);
+    const uint8_t* lt[3] = {&f.lt[0][col], &f.lt[1][col], &f.lt[2][col]};
     // The weights of the whole column first: reading them back right after the
     // vector store would stall on store forwarding.
-    gather_column(f, x, y0 - kRadius, B + kTaps - 1, line);
     for (int yl = 0; yl < B; ++yl) {
-      const int y = y0 + yl;
-      const uint8_t* taps[3] = {line[0] + yl, line[1] + yl, line[2] + yl};
-      const size_t centre = size_t(y) * W + x;
-      const uint8_t cx[3] = {f.left[0][centre], f.left[1][centre], f.left[2][centre]};
+      const uint8_t* taps[3] = {lt[0] + yl, lt[1] + yl, lt[2] + yl};
+      const uint8_t cx[3] = {taps[0][kRadius], taps[1][kRadius], taps[2][kRadius]};
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(&s.wv[size_t(yl) * kTaps]), wu.weights(taps, cx));
     }
     for (int yl = 0; yl < B; ++yl) {
@@ -348,25 +376,23 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       __m256i acc[2 * kChunks + 1];
       for (auto& a : acc) a = _mm256_setzero_si256();
       __m128i tlo = _mm_setzero_si128(), thi = _mm_setzero_si128();
-      const uint8_t* a = column + size_t(yl) * Dp;  // tap k is row y - R + k
-      for (int i = 0; i < kPairs; ++i, a += 2 * Dp) {
+      const uint8_t* p = s.pairs.data() + size_t(yl) * pair_bytes;  // pair i: rows yl+2i, yl+2i+1
+      for (int i = 0; i < kPairs; ++i, p += 2 * pair_bytes) {
         int16_t pair;
         std::memcpy(&pair, &wv[2 * i], 2);
         const __m256i w = _mm256_set1_epi16(pair);
-        const uint8_t* b = a + Dp;
         for (int c = 0; c < kChunks; ++c) {
-          const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + 32 * c));
-          const __m256i vb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + 32 * c));
-          acc[2 * c] = _mm256_add_epi16(acc[2 * c], _mm256_maddubs_epi16(_mm256_unpacklo_epi8(va, vb), w));
-          acc[2 * c + 1] =
-              _mm256_add_epi16(acc[2 * c + 1], _mm256_maddubs_epi16(_mm256_unpackhi_epi8(va, vb), w));
+          const __m256i lo = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p + 64 * c));
+          const __m256i hi = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p + 64 * c + 32));
+          acc[2 * c] = _mm256_add_epi16(acc[2 * c], _mm256_maddubs_epi16(lo, w));
+          acc[2 * c + 1] = _mm256_add_epi16(acc[2 * c + 1], _mm256_maddubs_epi16(hi, w));
         }
         if constexpr (kTail) {
-          const __m128i va = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + 32 * kChunks));
-          const __m128i vb = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + 32 * kChunks));
+          const __m128i lo = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 64 * kChunks));
+          const __m128i hi = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 64 * kChunks + 16));
           const __m128i w128 = _mm256_castsi256_si128(w);
-          tlo = _mm_add_epi16(tlo, _mm_maddubs_epi16(_mm_unpacklo_epi8(va, vb), w128));
-          thi = _mm_add_epi16(thi, _mm_maddubs_epi16(_mm_unpackhi_epi8(va, vb), w128));
+          tlo = _mm_add_epi16(tlo, _mm_maddubs_epi16(lo, w128));
+          thi = _mm_add_epi16(thi, _mm_maddubs_epi16(hi, w128));
         }
       }
       if constexpr (kTail) acc[2 * kChunks] = _mm256_set_m128i(thi, tlo);
@@ -435,6 +461,29 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
 
 #endif  // __AVX2__
 
+// Worker buffers are kept between calls (a few MB at most), so repeated calls
+// do not pay for allocating and faulting in fresh pages.
+std::mutex scratch_mutex;
+std::vector<std::unique_ptr<Scratch>> scratch_pool;
+
+std::unique_ptr<Scratch> take_scratch() {
+  {
+    const std::lock_guard<std::mutex> lock(scratch_mutex);
+    if (!scratch_pool.empty()) {
+      std::unique_ptr<Scratch> s = std::move(scratch_pool.back());
+      scratch_pool.pop_back();
+      return s;
+    }
+  }
+  return std::make_unique<Scratch>();
+}
+
+void return_scratch(std::unique_ptr<Scratch> s) {
+  const std::lock_guard<std::mutex> lock(scratch_mutex);
+  if (scratch_pool.size() < std::max(4u, std::thread::hardware_concurrency()))
+    scratch_pool.push_back(std::move(s));
+}
+
 using BandFn = void (*)(const Frame&, int, int, Scratch&, uint8_t*);
 
 BandFn pick_kernel(int Dp, bool portable) {
@@ -474,9 +523,10 @@ Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Conf
   const int bands = (f.H + rows - 1) / rows;
   std::atomic<int> next_band{0};
   auto work = [&] {
-    Scratch s;
+    std::unique_ptr<Scratch> s = take_scratch();
     for (int b; (b = next_band.fetch_add(1)) < bands;)
-      band(f, b * rows, std::min(f.H, (b + 1) * rows), s, disp.px.data());
+      band(f, b * rows, std::min(f.H, (b + 1) * rows), *s, disp.px.data());
+    return_scratch(std::move(s));
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < workers; ++t) pool.emplace_back(work);
