@@ -285,6 +285,25 @@ struct WeightUnit {
   }
 };
 
+// acc += the multiply-add of 32 bytes at p with w, as one vpmaddwd / vpmaddubsw
+// with a memory operand and one add into acc. Written in asm because GCC 12
+// otherwise copies every accumulator each step (or spills the products).
+inline void madd_add_epi32(__m256i& acc, const void* p, __m256i w) {
+  __m256i t;
+  asm("vpmaddwd %2, %3, %1\n\tvpaddd %1, %0, %0"
+      : "+x"(acc), "=&x"(t)
+      : "m"(*static_cast<const __m256i*>(p)), "x"(w));
+}
+// vpmaddubsw multiplies unsigned bytes of its first source by signed bytes of the
+// second; here the weights (0..64) are the first and the costs (0..6) the second,
+// which is the same product since both fit in 7 bits.
+inline void maddubs_add_epi16(__m256i& acc, const void* p, __m256i w) {
+  __m256i t;
+  asm("vpmaddubsw %2, %3, %1\n\tvpaddw %1, %0, %0"
+      : "+x"(acc), "=&x"(t)
+      : "m"(*static_cast<const __m256i*>(p)), "x"(w));
+}
+
 // Census costs of column x at rows clamp(y_begin + v), v = 0..n-1, interleaved in
 // pairs of consecutive rows for vpmaddubsw: pairs + v * 2 * Dp holds, for v = 0..n-2,
 // per 32-d chunk vpunpcklbw then vpunpckhbw of rows v and v+1, each row's chunk taken
@@ -342,6 +361,7 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
   const int rows = B + kTaps - 1;  // cost rows y0-R .. y1+R (clamped), v = 0..rows-1
   const size_t pair_bytes = 2 * size_t(Dp);
   s.pairs.resize(size_t(rows - 1) * pair_bytes);
+  uint8_t* const pairs = s.pairs.data();
   s.ev.resize(size_t(B) * W * Dp);
   s.hp.resize(size_t(W + 2 * kRadius) * Dp);
   s.wh.resize(size_t(W) * kTaps);
@@ -361,7 +381,7 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
   // Stored per 16 d in the order d 0-3, 8-11, 4-7, 12-15 for the vpunpck*wd below.
   for (int x = 0; x < W; ++x) {
     // The column's cost rows, already interleaved in pairs, stay in L1 for the band.
-    cost_pairs_avx2<Dp>(f, x, y0 - kRadius, rows, s.pairs.data());
+    cost_pairs_avx2<Dp>(f, x, y0 - kRadius, rows, pairs);
     const size_t col = size_t(x) * f.lt_stride + kColPad + (y0 - kRadius);
     const uint8_t* lt[3] = {&f.lt[0][col], &f.lt[1][col], &f.lt[2][col]};
     // The weights of the whole column first: reading them back right after the
@@ -376,16 +396,15 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       __m256i acc[2 * kChunks + 1];
       for (auto& a : acc) a = _mm256_setzero_si256();
       __m128i tlo = _mm_setzero_si128(), thi = _mm_setzero_si128();
-      const uint8_t* p = s.pairs.data() + size_t(yl) * pair_bytes;  // pair i: rows yl+2i, yl+2i+1
+      const uint8_t* p = pairs + size_t(yl) * pair_bytes;  // pair i: rows yl+2i, yl+2i+1
+#pragma GCC unroll 4
       for (int i = 0; i < kPairs; ++i, p += 2 * pair_bytes) {
         int16_t pair;
         std::memcpy(&pair, &wv[2 * i], 2);
         const __m256i w = _mm256_set1_epi16(pair);
         for (int c = 0; c < kChunks; ++c) {
-          const __m256i lo = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p + 64 * c));
-          const __m256i hi = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p + 64 * c + 32));
-          acc[2 * c] = _mm256_add_epi16(acc[2 * c], _mm256_maddubs_epi16(lo, w));
-          acc[2 * c + 1] = _mm256_add_epi16(acc[2 * c + 1], _mm256_maddubs_epi16(hi, w));
+          maddubs_add_epi16(acc[2 * c], p + 64 * c, w);
+          maddubs_add_epi16(acc[2 * c + 1], p + 64 * c + 32, w);
         }
         if constexpr (kTail) {
           const __m128i lo = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 64 * kChunks));
@@ -440,14 +459,13 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       const int16_t* wh = &s.wh[size_t(x) * kTaps];
       __m256i acc[kKeyVecs];
       for (int a = 0; a < kKeyVecs; ++a) acc[a] = key0[a];
+#pragma GCC unroll 4
       for (int i = 0; i < kPairs; ++i) {
         int32_t pair;
         std::memcpy(&pair, &wh[2 * i], 4);
         const __m256i w = _mm256_set1_epi32(pair);
         const uint32_t* h = hp + size_t(x + 2 * i) * Dp;  // x' = x - R + 2i
-        for (int a = 0; a < kKeyVecs; ++a)
-          acc[a] = _mm256_add_epi32(
-              acc[a], _mm256_madd_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(h + 8 * a)), w));
+        for (int a = 0; a < kKeyVecs; ++a) madd_add_epi32(acc[a], h + 8 * a, w);
       }
       __m256i m = acc[0];
       for (int a = 1; a < kKeyVecs; ++a) m = _mm256_min_epu32(m, acc[a]);
