@@ -5,12 +5,12 @@
 # on a small crop of Teddy; every disparity is compared with the reference (the
 # harness's scoreboard) and the disparity map with the RTL's, byte for byte.
 #
-#   scripts/gls.sh            netlist of the reduced configuration (DMAX = 16)
-#   DMAX=64 scripts/gls.sh    the full one (build/synth, from `make synth`)
+#   scripts/gls.sh            the netlist of `make synth` (DMAX = 64, build/synth)
+#   DMAX=16 scripts/gls.sh    a reduced configuration (build/synth_dmax16)
 # The netlist is synthesised first if it is missing.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-dmax=${DMAX:-16}
+dmax=${DMAX:-64}
 build=${BUILD_DIR:-$root/build}
 if [ "$dmax" = 64 ]; then synth_dir=$build/synth; else synth_dir=$build/synth_dmax$dmax; fi
 netlist=$synth_dir/mcadsw_top_osu018.v
