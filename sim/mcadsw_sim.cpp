@@ -14,6 +14,7 @@
 #include "engine_bench.hpp"
 #include "mcadsw/eval.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/parse.hpp"
 #include <opencv2/imgcodecs.hpp>
 
 namespace {
@@ -26,20 +27,6 @@ const char* kUsage =
     "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
 
 constexpr double kClockMHz = 95.0;  // paper, Table III
-
-long to_int(const std::string& s, const std::string& what) {
-  char* end = nullptr;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end) throw std::invalid_argument(what + " must be an integer, got '" + s + "'");
-  return v;
-}
-
-double to_double(const std::string& s, const std::string& what) {
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end) throw std::invalid_argument(what + " must be a number, got '" + s + "'");
-  return v;
-}
 
 }  // namespace
 
@@ -61,15 +48,15 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
         return argv[++i];
       };
-      if (a == "-d") d = int(to_int(val(), "D"));
-      else if (a == "--gamma") gamma = to_double(val(), "gamma");
-      else if (a == "--latency") opt.latency.fixed = int(to_int(val(), "latency"));
+      if (a == "-d") d = int(mcadsw::parse_long(val(), "D"));
+      else if (a == "--gamma") gamma = mcadsw::parse_double(val(), "gamma");
+      else if (a == "--latency") opt.latency.fixed = int(mcadsw::parse_long(val(), "latency"));
       else if (a == "--random-latency") {
         opt.latency.random = true;
-        opt.latency.seed = uint32_t(to_int(val(), "seed"));
+        opt.latency.seed = uint32_t(mcadsw::parse_long(val(), "seed"));
       } else if (a == "--name") name = val();
       else if (a == "--gt") gt = val();
-      else if (a == "--scale") scale = to_double(val(), "scale");
+      else if (a == "--scale") scale = mcadsw::parse_double(val(), "scale");
       else if (a == "--masks") masks = val();
       else if (a == "--out") out = val();
       else if (a == "--json") json = val();

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine_bench.hpp"
+#include "mcadsw/parse.hpp"
 #include "mcadsw/image_io.hpp"
 
 namespace {
@@ -136,9 +137,9 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
         return argv[++i];
       };
-      if (a == "--cases") cases = std::stoi(val());
-      else if (a == "--seed") seed = uint32_t(std::stoul(val()));
-      else if (a == "--case") only = std::stoi(val());
+      if (a == "--cases") cases = int(mcadsw::parse_long(val(), "cases"));
+      else if (a == "--seed") seed = uint32_t(mcadsw::parse_long(val(), "seed"));
+      else if (a == "--case") only = int(mcadsw::parse_long(val(), "case"));
       else if (a == "--data") data = val();
       else if (a == "-h" || a == "--help") {
         std::cout << kUsage;

@@ -12,6 +12,7 @@
 
 #include "mcadsw/eval.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/parse.hpp"
 #include "mcadsw/ref.hpp"
 
 namespace {
@@ -65,18 +66,21 @@ struct Args {
   }
 };
 
+// Bad numbers are usage errors (exit status 2).
 long to_int(const std::string& s, const char* what) {
-  char* end = nullptr;
-  long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end) throw UsageError(std::string(what) + " must be an integer, got '" + s + "'");
-  return v;
+  try {
+    return mcadsw::parse_long(s, what);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 }
 
 double to_double(const std::string& s, const char* what) {
-  char* end = nullptr;
-  double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end) throw UsageError(std::string(what) + " must be a number, got '" + s + "'");
-  return v;
+  try {
+    return mcadsw::parse_double(s, what);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 }
 
 int cmd_match(const Args& a) {
