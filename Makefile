@@ -10,6 +10,7 @@
 #   make synth   Yosys -> OSU 0.18 um gates, memories as macros, OpenSTA timing
 #                (build/synth/report.md; DMAX=16 for the reduced configuration)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
+#                (FRAME=1 also a whole Tsukuba frame against the reference)
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
 #                (build-cov/coverage/summary.txt; N=<random cases>, default 40)
 #   make lint    verilator --lint-only -Wall on every RTL module
@@ -70,7 +71,7 @@ synth: bootstrap
 
 # make gls [DMAX=64]: the netlist in the Verilator harness (scripts/gls.sh)
 gls: bootstrap
-	@DMAX=$(DMAX) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
+	@DMAX=$(DMAX) FRAME=$(FRAME) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
 lint: bootstrap
 	@scripts/rtl_check.sh lint
