@@ -12,8 +12,10 @@
 // Read ports are synchronous: data arrive the cycle after the address (the
 // census and weight buffers are RAMs). Pipeline, from the issue cycle c of a
 // column group: c+1 census/weight data and Hamming + vertical sum, c+2 ping-pong
-// write; after the 6th group, c+8 horizontal weight address, c+9 horizontal
-// sum, c+10 WTA, c+11 disparity out.
+// write; after the 6th group, c+8 bank handed to the horizontal side, c+9
+// ping-pong read (registered) and horizontal weight address, c+10 horizontal
+// sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
+// multiplexers out of the horizontal sum's cycle (docs/architecture.md section 10).
 `default_nettype none
 
 module mcadsw_cost_agg #(
@@ -81,7 +83,8 @@ module mcadsw_cost_agg #(
 
   // A tag travels with each column group and output group: valid, first
   // (d == 0), last (d == D - 1), block row, d, group. Stages: v1 data cycle,
-  // v2 ping-pong write, h0 horizontal weight address, h1 horizontal sum, h2 WTA.
+  // v2 ping-pong write, h0 bank handover, h1 ping-pong read and horizontal
+  // weight address, h2 horizontal sum, h3 WTA.
 
   // ---- Vertical side: issue column-group reads ----------------------------
   logic          busy_q;
@@ -173,11 +176,12 @@ module mcadsw_cost_agg #(
   logic          h0_valid_q, h0_first_q, h0_last_q, h0_bank_q;
   logic          h1_valid_q, h1_first_q, h1_last_q, h1_bank_q;
   logic          h2_valid_q, h2_first_q, h2_last_q;
-  logic [RB-1:0] h0_row_q, h1_row_q, h2_row_q;
-  logic [DB-1:0] h0_d_q, h1_d_q, h2_d_q;
-  logic [GB-1:0] h0_grp_q, h1_grp_q, h2_grp_q;
+  logic          h3_valid_q, h3_first_q, h3_last_q;
+  logic [RB-1:0] h0_row_q, h1_row_q, h2_row_q, h3_row_q;
+  logic [DB-1:0] h0_d_q, h1_d_q, h2_d_q, h3_d_q;
+  logic [GB-1:0] h0_grp_q, h1_grp_q, h2_grp_q, h3_grp_q;
   logic [CLB-1:0] h0_lcol_q, h1_lcol_q;
-  logic [(WINDOW+HAGG-1)*VB-1:0] pp_rd;
+  logic [(WINDOW+HAGG-1)*VB-1:0] pp_rd, pp_rd_q;
 
   mcadsw_pingpong #(
     .COLS(GROUPS*LANES), .LANES(LANES), .HAGG(HAGG), .WINDOW(WINDOW), .VB(VB)
@@ -206,19 +210,24 @@ module mcadsw_cost_agg #(
     end
   end
 
-  assign hrd_en_o  = h0_valid_q;
-  assign hrd_row_o = h0_row_q;
-  assign hrd_grp_o = h0_grp_q;
+  assign hrd_en_o  = h1_valid_q;
+  assign hrd_row_o = h1_row_q;
+  assign hrd_grp_o = h1_grp_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <= '0;
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <= '0;
+      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <= '0;
+      pp_rd_q <= '0;
     end else begin
       {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <=
           {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q};
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <=
           {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q};
+      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <=
+          {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q};
+      if (h1_valid_q) pp_rd_q <= pp_rd;
     end
   end
 
@@ -229,8 +238,8 @@ module mcadsw_cost_agg #(
     .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB)
   ) u_horz_agg (
     .clk_i, .rst_ni,
-    .valid_i (h1_valid_q),
-    .ev_i    (pp_rd),
+    .valid_i (h2_valid_q),
+    .ev_i    (pp_rd_q),
     .wh_i,
     .valid_o (fc_valid),
     .fc_o    (fc)
@@ -243,11 +252,11 @@ module mcadsw_cost_agg #(
     .BLOCK(BLOCK), .HAGG(HAGG), .FB(FB), .DB(DB)
   ) u_wta (
     .clk_i, .rst_ni,
-    .valid_i (fc_valid && h2_valid_q),
-    .first_i (h2_first_q),
-    .last_i  (h2_last_q),
-    .d_i     (h2_d_q),
-    .grp_i   (h2_grp_q),
+    .valid_i (fc_valid && h3_valid_q),
+    .first_i (h3_first_q),
+    .last_i  (h3_last_q),
+    .d_i     (h3_d_q),
+    .grp_i   (h3_grp_q),
     .fc_i    (fc),
     .valid_o (disp_valid_o),
     .grp_o   (disp_grp_o),
@@ -256,12 +265,12 @@ module mcadsw_cost_agg #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) disp_row_q <= '0;
-    else if (h2_valid_q) disp_row_q <= h2_row_q;
+    else if (h3_valid_q) disp_row_q <= h3_row_q;
   end
   assign disp_row_o = disp_row_q;
 
   assign busy_o = busy_q || v1_valid_q || v2_valid_q || h0_valid_q || h1_valid_q ||
-                  h2_valid_q || disp_valid_o;
+                  h2_valid_q || h3_valid_q || disp_valid_o;
 
   // ---- Monitor taps ----------------------------------------------------------------
   assign mon_ev_valid_o = ev_valid && v2_valid_q;
@@ -269,10 +278,10 @@ module mcadsw_cost_agg #(
   assign mon_ev_d_o     = v2_d_q;
   assign mon_ev_grp_o   = v2_grp_q;
   assign mon_ev_o       = ev;
-  assign mon_fc_valid_o = fc_valid && h2_valid_q;
-  assign mon_fc_row_o   = h2_row_q;
-  assign mon_fc_d_o     = h2_d_q;
-  assign mon_fc_grp_o   = h2_grp_q;
+  assign mon_fc_valid_o = fc_valid && h3_valid_q;
+  assign mon_fc_row_o   = h3_row_q;
+  assign mon_fc_d_o     = h3_d_q;
+  assign mon_fc_grp_o   = h3_grp_q;
   assign mon_fc_o       = fc;
 
 `ifndef SYNTHESIS

@@ -20,7 +20,11 @@
 //               weights of pixels (c, r+k) against the column centre (c, r+R);
 //   horizontal: centre row r, output pixel x (0..BLOCK-1): the WINDOW weights
 //               of column centres (x+j, r+R) against the window centre (x+R, r+R).
-// BLOCK*COLS + BLOCK*BLOCK = 1188 cycles a block (paper: 1536).
+// BLOCK*COLS + BLOCK*BLOCK = 1188 cycles a block (paper: 1536). The kernel is
+// two stages: the window of WINDOW pixels is selected and registered, the next
+// cycle its distances and codes are written (the input-buffer read and the
+// distance arithmetic in one cycle missed 95 MHz, docs/architecture.md
+// section 10); done_o follows the last write.
 //
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
@@ -96,8 +100,10 @@ module mcadsw_weight_gen #(
   logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
   logic          pix_fire;
 
+  logic          k_vert_q, k_horz_q;   // the kernel's second stage writes a vertical / horizontal entry
+  logic          k_last_q;             // ... the block's last one
   assign cfg_ready_o = state_q == IDLE;
-  assign busy_o      = state_q != IDLE;
+  assign busy_o      = state_q != IDLE || k_vert_q || k_horz_q;
   assign pix_ready_o = state_q == LOAD;
   assign pix_fire    = pix_valid_i && pix_ready_o;
 
@@ -109,9 +115,11 @@ module mcadsw_weight_gen #(
       base_q  <= '0;
       r_q     <= '0;
       c_q     <= '0;
+      k_last_q <= 1'b0;
       done_o  <= 1'b0;
     end else begin
-      done_o <= 1'b0;
+      k_last_q <= 1'b0;
+      done_o   <= k_last_q;
       case (state_q)
         IDLE: if (cfg_valid_i) begin
           state_q <= LOAD;
@@ -141,8 +149,8 @@ module mcadsw_weight_gen #(
           if (c_q == XB'(BLOCK - 1)) begin
             c_q <= '0;
             if (r_q == RB'(BLOCK - 1)) begin
-              state_q <= IDLE;
-              done_o  <= 1'b1;
+              state_q  <= IDLE;
+              k_last_q <= 1'b1;
             end else begin
               r_q <= r_q + RB'(1);
             end
@@ -285,16 +293,44 @@ module mcadsw_weight_gen #(
   logic [LANES*ENTRY-1:0] vbuf_q [BANKS*BLOCK*VGRP];
   logic [HAGG*ENTRY-1:0]  hbuf_q [BANKS*BLOCK*HGRP];
 
+  // Stage 1: the window and where its codes go.
+  logic [WPW-1:0] k_win_q;
+  logic [BB-1:0]  k_bank_q;
+  logic [RB-1:0]  k_r_q;
+  logic [XB-1:0]  k_c_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      k_vert_q <= 1'b0;
+      k_horz_q <= 1'b0;
+      k_bank_q <= '0;
+      k_r_q    <= '0;
+      k_c_q    <= '0;
+    end else begin
+      k_vert_q <= state_q == VERT;
+      k_horz_q <= state_q == HORZ;
+      k_bank_q <= bank_q;
+      k_r_q    <= r_q;
+      k_c_q    <= c_q;
+    end
+  end
+
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT || state_q == HORZ) begin : p_kernel
+    if (state_q == VERT || state_q == HORZ)
+      k_win_q <= state_q == HORZ ? hwindow(hrow, c_q) : vwindow(column, r_q);
+  end
+
+  // Stage 2: distances, codes, one weight-buffer entry.
+  always_ff @(posedge clk_i) begin
+    if (k_vert_q || k_horz_q) begin : p_kernel
       logic [ENTRY-1:0] codes;  // one kernel for both passes
-      codes = weight_codes(state_q == HORZ ? hwindow(hrow, c_q) : vwindow(column, r_q), thr_i);
-      if (state_q == VERT)
-        vbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*VGRP + 32'(c_q) / LANES]
-              [(32'(c_q) % LANES)*ENTRY +: ENTRY] <= codes;
+      codes = weight_codes(k_win_q, thr_i);
+      if (k_vert_q)
+        vbuf_q[(32'(k_bank_q)*BLOCK + 32'(k_r_q))*VGRP + 32'(k_c_q) / LANES]
+              [(32'(k_c_q) % LANES)*ENTRY +: ENTRY] <= codes;
       else
-        hbuf_q[(32'(bank_q)*BLOCK + 32'(r_q))*HGRP + 32'(c_q) / HAGG]
-              [(32'(c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
+        hbuf_q[(32'(k_bank_q)*BLOCK + 32'(k_r_q))*HGRP + 32'(k_c_q) / HAGG]
+              [(32'(k_c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
     end
   end
 

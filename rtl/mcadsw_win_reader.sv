@@ -9,11 +9,12 @@
 // continues its left neighbour reads only the strips its input buffers do not
 // hold yet (partial column reuse, Sec. IV).
 //
-// A strip word needs the aligned memory words holding its 4 clamped columns:
-// one, or two when they straddle a word boundary (only when x0 is not
-// word-aligned). Requests run ahead of the responses (up to OUTS in flight,
-// responses in order); the response side walks the same sequence to know how
-// many responses make each strip word.
+// The window origin x0 is word-aligned (the top starts every window at the
+// aligned word at or left of its first column), so the 4 clamped columns of a
+// strip word always lie in one memory word: clamping moves a column only to
+// column 0 or width-1, inside the strip's own word. One read per strip word.
+// Requests run ahead of the responses (up to OUTS in flight, responses in
+// order).
 `default_nettype none
 
 module mcadsw_win_reader #(
@@ -27,13 +28,14 @@ module mcadsw_win_reader #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  // Window: started by start_i, configuration stable while busy_o
+  // Window: started by start_i, which takes x0_i, y0_i and strips_i; base_i,
+  // stride_i, width_i and height_i are stable while busy_o
   input  logic                 start_i,
   input  logic [PLANES*AW-1:0] base_i,     // byte address of pixel (0,0) of each plane
   input  logic [AW-1:0]        stride_i,   // bytes per image row, multiple of 4
   input  logic [CW-1:0]        width_i,
   input  logic [CW-1:0]        height_i,
-  input  logic signed [CW:0]   x0_i,       // window origin in image coordinates
+  input  logic signed [CW:0]   x0_i,       // window origin in image coordinates, a multiple of 4
   input  logic signed [CW:0]   y0_i,
   input  logic [SB-1:0]        strips_i,   // strips a plane, 1 .. STRIPS
   output logic                 busy_o,
@@ -85,17 +87,22 @@ module mcadsw_win_reader #(
     next_pos = {done, plane, strip, row};
   endfunction
 
+  // The window origin and strip count, registered at start_i: the address
+  // arithmetic starts from flip-flops, not from the block arithmetic in the top
+  // (that path to the external address was critical, docs/architecture.md section 10).
+  logic signed [CW:0]   x0_q, y0_q;
+  logic [SB-1:0]        strips_q;
+
   logic          busy_q;
   logic [QW-1:0] rq_q, rs_q;         // strip word being requested / assembled
   logic          rq_done, rs_done;
-  logic [PB-1:0] rq_plane, rs_plane_unused;
-  logic [SB-1:0] rq_strip, rs_strip;
-  logic [RB-1:0] rq_row, rs_row_unused;
-  assign {rq_done, rq_plane, rq_strip, rq_row} = rq_q;
+  logic [PB-1:0] rq_plane_unused, rs_plane_unused;
+  logic [SB-1:0] rq_strip_unused, rs_strip;
+  logic [RB-1:0] rq_row_unused, rs_row_unused;
+  assign {rq_done, rq_plane_unused, rq_strip_unused, rq_row_unused} = rq_q;
   assign {rs_done, rs_plane_unused, rs_strip, rs_row_unused} = rs_q;
   logic [QW-1:0] rs_next;
-  assign rs_next = next_pos(rs_q, strips_i);
-  logic          req_second_q;       // the first of a pair is requested
+  assign rs_next = next_pos(rs_q, strips_q);
   logic [OB-1:0] inflight_q;         // requested, response not consumed yet
 
   // Clamped image column of byte b of strip s.
@@ -105,81 +112,84 @@ module mcadsw_win_reader #(
   endfunction
 
   // ---- Request side -------------------------------------------------------------
-  int   rq_y, rq_c0, rq_c3;
-  logic rq_pair;
-  assign rq_y    = clampi(32'(y0_i) + 32'(rq_row), 32'(height_i));
-  assign rq_c0   = col_of(rq_strip, 0, x0_i, width_i);
-  assign rq_c3   = col_of(rq_strip, 3, x0_i, width_i);
-  assign rq_pair = (rq_c0 / 4) != (rq_c3 / 4);
+  // The request address is a register (addr_q), computed a cycle ahead: in the
+  // cycle after start_i for the first strip word (no request in that cycle), then
+  // at each grant for the next one.
+  logic          addr_ok_q;          // addr_q holds the address of rq_q
+  logic [AW-1:0] addr_q, addr_next;
+  logic [QW-1:0] apos;               // position whose address is computed
+  logic          a_done_unused;
+  logic [PB-1:0] a_plane;
+  logic [SB-1:0] a_strip;
+  logic [RB-1:0] a_row;
+  assign apos = addr_ok_q ? next_pos(rq_q, strips_q) : rq_q;
+  assign {a_done_unused, a_plane, a_strip, a_row} = apos;
+  assign addr_next = base_i[32'(a_plane)*AW +: AW] +
+                     AW'(clampi(32'(y0_q) + 32'(a_row), 32'(height_i))) * stride_i +
+                     AW'(4 * (col_of(a_strip, 0, x0_q, width_i) / 4));
 
   // The response buffer is the pipeline itself: stop requesting when OUTS
   // responses could be waiting for the block.
-  assign req_o  = busy_q && !rq_done && inflight_q != OB'(OUTS);
-  assign addr_o = base_i[32'(rq_plane)*AW +: AW] + AW'(rq_y) * stride_i +
-                  AW'(4 * ((req_second_q ? rq_c3 : rq_c0) / 4));
+  assign req_o  = busy_q && addr_ok_q && !rq_done && inflight_q != OB'(OUTS);
+  assign addr_o = addr_q;
 
   // ---- Response side ---------------------------------------------------------------
   // Responses wait in a small FIFO until the block takes the strip word.
   logic [OUTS*32-1:0] fifo_q;
   logic [OB-1:0]      fcount_q;
   logic               pop;
-  int   rs_c0;
-  logic rs_pair;
-  assign rs_c0   = col_of(rs_strip, 0, x0_i, width_i);
-  assign rs_pair = (rs_c0 / 4) != (col_of(rs_strip, 3, x0_i, width_i) / 4);
-
-  // A strip word is ready when its one or two responses are available.
-  logic [31:0] head, second;
-  assign head   = fifo_q[31:0];
-  assign second = fifo_q[63:32];
-  assign pix_valid_o = busy_q && !rs_done &&
-                       (rs_pair ? fcount_q >= OB'(2) : fcount_q >= OB'(1));
+  // A strip word is ready when its response is; byte b is column
+  // clamp(x0 + 4s + b), i.e. byte b, or the edge column's byte where clamped.
+  logic [31:0] head;
+  assign head        = fifo_q[31:0];
+  assign pix_valid_o = busy_q && !rs_done && fcount_q != '0;
   for (genvar b = 0; b < 4; b++) begin : g_byte
     int c;
-    assign c = col_of(rs_strip, b, x0_i, width_i);
-    assign pix_data_o[b*8 +: 8] = (rs_pair && c / 4 != rs_c0 / 4) ? second[(c % 4)*8 +: 8]
-                                                                    : head[(c % 4)*8 +: 8];
+    assign c = col_of(rs_strip, b, x0_q, width_i);
+    assign pix_data_o[b*8 +: 8] = head[(c % 4)*8 +: 8];
   end
   assign pop = pix_valid_o && pix_ready_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       busy_q       <= 1'b0;
+      addr_ok_q    <= 1'b0;
+      addr_q       <= '0;
+      x0_q         <= '0;
+      y0_q         <= '0;
+      strips_q     <= '0;
       rq_q         <= '0;
       rs_q         <= '0;
-      req_second_q <= 1'b0;
       inflight_q   <= '0;
       fifo_q       <= '0;
       fcount_q     <= '0;
     end else begin
       if (start_i && !busy_q) begin
         busy_q       <= 1'b1;
+        addr_ok_q    <= 1'b0;
+        x0_q         <= x0_i;
+        y0_q         <= y0_i;
+        strips_q     <= strips_i;
         rq_q         <= '0;
         rs_q         <= '0;
-        req_second_q <= 1'b0;
+      end
+      if (busy_q && !addr_ok_q) begin
+        addr_ok_q <= 1'b1;
+        addr_q    <= addr_next;
       end
       if (req_o && gnt_i) begin
-        if (rq_pair && !req_second_q) begin
-          req_second_q <= 1'b1;
-        end else begin
-          req_second_q <= 1'b0;
-          rq_q         <= next_pos(rq_q, strips_i);
-        end
+        rq_q   <= next_pos(rq_q, strips_q);
+        addr_q <= addr_next;
       end
-      // FIFO: push the response, pop one or two words for a strip word.
+      // FIFO: push the response, pop the strip word.
       begin
         logic [OUTS*32-1:0] f;
         logic [OB-1:0]      n;
         f = fifo_q;
         n = fcount_q;
         if (pop) begin
-          if (rs_pair) begin
-            f = f >> 64;
-            n = n - OB'(2);
-          end else begin
-            f = f >> 32;
-            n = n - OB'(1);
-          end
+          f = f >> 32;
+          n = n - OB'(1);
         end
         if (rvalid_i) begin
           f[32'(n)*32 +: 32] = rdata_i;
@@ -188,7 +198,7 @@ module mcadsw_win_reader #(
         fifo_q   <= f;
         fcount_q <= n;
       end
-      inflight_q <= inflight_q + OB'(req_o && gnt_i) - (pop ? (rs_pair ? OB'(2) : OB'(1)) : OB'(0));
+      inflight_q <= inflight_q + OB'(req_o && gnt_i) - OB'(pop);
       if (pop) begin
         rs_q <= rs_next;
         if (rs_next[QW-1]) busy_q <= 1'b0;
@@ -206,6 +216,8 @@ module mcadsw_win_reader #(
         else $error("win_reader: response FIFO overflow");
       assert (!(rvalid_i && inflight_q == '0))
         else $error("win_reader: read data with no request of this reader in flight");
+      assert (!(start_i && !busy_q && x0_i[1:0] != 2'b00))
+        else $error("win_reader: window origin %0d is not word-aligned", x0_i);
     end
   end
 `endif
