@@ -191,6 +191,21 @@ fi
     echo "Every endpoint meets the clock."
   fi
   echo
+  echo "Memory per module (bits):"
+  echo
+  echo "| module | bits | kB |"
+  echo "|---|---|---|"
+  awk '{m = $1; sub(/^\$paramod[^\\]*\\/, "", m); sub(/\\.*/, "", m); b[m] += $5}
+       END {for (k in b) printf "%s %d\n", k, b[k]}' "$out/memories.txt" | sort -k2 -n -r |
+    awk '{printf "| %s | %d | %.1f |\n", $1, $2, $2 / 8192}'
+  echo
+  if awk -v k="$mem_kb" 'BEGIN {exit !(k > 21.3)}'; then
+    echo "The memory exceeds the paper's 21.3 kB: the weight generator's weight buffers hold the"
+    echo "weights of a whole block, double-banked, and the census buffers are double-banked; what"
+    echo "would close the gap (next-row weights, census buffers refilled row by row):"
+    echo "docs/architecture.md section 10."
+    echo
+  fi
   echo "## Gates per block (Fig. 16)"
   echo
   echo "| block | NAND2 eq | share |"
