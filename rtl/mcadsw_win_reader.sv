@@ -96,10 +96,10 @@ module mcadsw_win_reader #(
   logic          busy_q;
   logic [QW-1:0] rq_q, rs_q;         // strip word being requested / assembled
   logic          rq_done, rs_done;
-  logic [PB-1:0] rq_plane_unused, rs_plane_unused;
-  logic [SB-1:0] rq_strip_unused, rs_strip;
-  logic [RB-1:0] rq_row_unused, rs_row_unused;
-  assign {rq_done, rq_plane_unused, rq_strip_unused, rq_row_unused} = rq_q;
+  logic [PB-1:0] rs_plane_unused;
+  logic [SB-1:0] rs_strip;
+  logic [RB-1:0] rs_row_unused;
+  assign rq_done = rq_q[QW-1];       // the request side needs only done; addresses come from apos
   assign {rs_done, rs_plane_unused, rs_strip, rs_row_unused} = rs_q;
   logic [QW-1:0] rs_next;
   assign rs_next = next_pos(rs_q, strips_q);
