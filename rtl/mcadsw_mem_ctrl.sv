@@ -7,6 +7,11 @@
 // be_o, addr_o, wdata_o; each granted read returns rdata_i with rvalid_i, in
 // order, one or more cycles later; writes return nothing. The requestor of
 // each read in flight is kept in order, so responses are routed back.
+//
+// A request the memory does not grant is presented again, unchanged (req, we,
+// be, addr, wdata), until its grant, as OBI and AXI require: the choice of a
+// stalled cycle is held, so neither a write nor another reader's turn can
+// replace it. The requestors keep their own request stable until granted.
 `default_nettype none
 
 module mcadsw_mem_ctrl #(
@@ -64,30 +69,42 @@ module mcadsw_mem_ctrl #(
   logic               rd_ok;          // room to track another read
   assign rd_ok = nids_q != OB'(OUTS);
 
-  logic write_sel, read_sel;
-  assign write_sel = wr_req_i;                       // fixed highest priority
-  assign read_sel  = !wr_req_i && any_rd && rd_ok;
+  // ---- Held request: last cycle's request was not granted ------------------------
+  logic          hold_q, hold_wr_q;   // held, and whether it is the write
+  logic [IB-1:0] hold_id_q;           // the reader of a held read
+
+  logic          write_sel, read_sel;
+  logic [IB-1:0] rd_id;               // the reader presented
+  assign write_sel = hold_q ? hold_wr_q : wr_req_i;   // the write has fixed highest priority
+  assign read_sel  = hold_q ? !hold_wr_q : !wr_req_i && any_rd && rd_ok;
+  assign rd_id     = hold_q ? hold_id_q : pick;
 
   assign mem_req_o   = write_sel || read_sel;
   assign mem_we_o    = write_sel;
   assign mem_be_o    = write_sel ? wr_be_i : 4'hf;
-  assign mem_addr_o  = write_sel ? wr_addr_i : rd_addr_i[32'(pick)*AW +: AW];
-  assign mem_wdata_o = wr_wdata_i;
+  assign mem_addr_o  = write_sel ? wr_addr_i : rd_addr_i[32'(rd_id)*AW +: AW];
+  assign mem_wdata_o = write_sel ? wr_wdata_i : 32'h0;
   assign wr_gnt_o    = write_sel && mem_gnt_i;
   for (genvar r = 0; r < NR; r++) begin : g_gnt
-    assign rd_gnt_o[r]    = read_sel && mem_gnt_i && pick == IB'(r);
+    assign rd_gnt_o[r]    = read_sel && mem_gnt_i && rd_id == IB'(r);
     assign rd_rvalid_o[r] = mem_rvalid_i && ids_q[IB-1:0] == IB'(r);
   end
   assign rd_rdata_o = mem_rdata_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      last_q <= '0;
-      ids_q  <= '0;
-      nids_q <= '0;
+      last_q    <= '0;
+      ids_q     <= '0;
+      nids_q    <= '0;
+      hold_q    <= 1'b0;
+      hold_wr_q <= 1'b0;
+      hold_id_q <= '0;
     end else begin
       logic [OUTS*IB-1:0] ids;
       logic [OB-1:0]      n;
+      hold_q    <= mem_req_o && !mem_gnt_i;
+      hold_wr_q <= write_sel;
+      hold_id_q <= rd_id;
       ids = ids_q;
       n   = nids_q;
       if (mem_rvalid_i) begin
@@ -95,9 +112,9 @@ module mcadsw_mem_ctrl #(
         n   = n - OB'(1);
       end
       if (read_sel && mem_gnt_i) begin
-        ids[32'(n)*IB +: IB] = pick;
+        ids[32'(n)*IB +: IB] = rd_id;
         n = n + OB'(1);
-        last_q <= pick;
+        last_q <= rd_id;
       end
       ids_q  <= ids;
       nids_q <= n;
@@ -116,6 +133,8 @@ module mcadsw_mem_ctrl #(
         else $error("mem_ctrl: read data routed to more than one reader (%b)", rd_rvalid_o);
       assert (!(mem_rvalid_i && nids_q == '0))
         else $error("mem_ctrl: external memory returned read data with no read outstanding");
+      assert (!(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
+        else $error("mem_ctrl: a requestor withdrew a request that was not granted");
     end
   end
 `endif

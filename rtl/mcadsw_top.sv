@@ -86,7 +86,9 @@ module mcadsw_top #(
              overlaps(cfg_base_out_i, cfg_base_ry_i, size)) check = 3'd6;
   end
 
-  assign accept = start_i && !sched_busy;
+  // A start is taken only while idle: not while the scheduler runs, nor in the
+  // cycle after an accepted start (go_q), when busy_o is already high.
+  assign accept = start_i && !busy_o;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

@@ -60,7 +60,7 @@ printf '%s\n' "${selected[@]}" | xargs -P 2 -I{} bash -c 'run_case "$@"' _ {} ||
 rows=()
 for c in "${selected[@]}"; do
   name=${c%%|*}
-  grep -q MATCH "$out/$name.log" 2>/dev/null && ! grep -q MISMATCH "$out/$name.log" || status=1
+  grep -qw BIT-EXACT "$out/$name.log" 2>/dev/null || status=1
   cat "$out/$name.log" 2>/dev/null || true
   grep -v '^  \.\.\.' "$out/$name.err" 2>/dev/null || true
   [ -f "$out/$name.json" ] && rows+=("$(cat "$out/$name.json")")
@@ -70,8 +70,26 @@ echo "summary: $out/summary.json"
 
 if [ "$waves" = 1 ] && [ -n "$only" ]; then
   gtkw=$out/$only.gtkw
+  # Open on the first block's preparation: from the first prep_start to the
+  # first prep_done (times in ps, fstminer lists first occurrences), a tenth
+  # more on each side, marker at prep_done. gtkwave shows 2^-zoom time units in
+  # 200 pixels (calczoom()): zoom = -log2(span * 200 / 1000) for a 1000-pixel wave pane.
+  first() { fstminer -d "$out/$only.fst" -m 1 2>/dev/null | awk -v s="TOP.mcadsw_top.$1" '!f && $2 == s {sub(/^#/, "", $1); print $1; f = 1}'; }
+  t0=$(first prep_start); t1=$(first prep_done)
+  window=""
+  if [ -n "$t0" ] && [ -n "$t1" ]; then
+    window=$(awk -v a="$t0" -v b="$t1" 'BEGIN {m = (b - a) / 10; s = a - m; if (s < 0) s = 0
+      printf "[timestart] %d\n*%.6f %d\n", s, -log((b - a + 2 * m) / 5) / log(2), b}')
+  fi
+  # Full names as the FST holds them: vectors carry their range (mem_addr_o[31:0]).
+  facs=$( (fst2vcd "$out/$only.fst" 2>/dev/null || true) | awk '$1 == "$enddefinitions" {exit}
+    $1 == "$scope" {p[++n] = $3} $1 == "$upscope" {n--}
+    $1 == "$var" {s = p[1]; for (i = 2; i <= n; i++) s = s "." p[i]; print s "." $5 ($6 != "$end" ? $6 : "")}')
+  fac() { awk -v s="$1" '$0 == s || index($0, s "[") == 1 {print; exit}' <<<"$facs"; }
   {
     echo "[dumpfile] \"$out/$only.fst\""
+    echo "[size] 1600 900"
+    [ -n "$window" ] && echo "$window"
     for grp in "Top:mcadsw_top:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i" \
                "Scheduler:mcadsw_top.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
                "Memory controller:mcadsw_top.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \
@@ -81,12 +99,16 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
                "Cost aggregator:mcadsw_top.u_cost_agg:busy_q row_q d_q grp_q h2_valid_q disp_valid_o disp_grp_o" \
                "Depth FIFO:mcadsw_top.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o"; do
       IFS=: read -r title scope sigs <<<"$grp"
-      echo "@800200"; echo "-$title"; echo "@28"
-      for s in $sigs; do echo "TOP.$scope.$s"; done
+      echo "@800200"; echo "-$title"; echo "@22"   # values in hex
+      for s in $sigs; do
+        f=$(fac "TOP.$scope.$s"); [ -n "$f" ] || { echo "sim_regression: no signal TOP.$scope.$s in the waves" >&2; exit 1; }
+        echo "$f"
+      done
       echo "@1000200"; echo "-$title"
     done
   } > "$gtkw"
-  echo "waves: $out/$only.fst (gtkwave save file $gtkw; open with: make wave CASE=$only)"
+  echo "waves: $out/$only.fst, one cycle = 10.526 ns (95 MHz); gtkwave save file $gtkw opens on the"
+  echo "       first block's preparation${t1:+ (marker at prep_done, $(awk -v t="$t1" 'BEGIN {printf "%.1f us", t / 1e6}'))}; open with: make wave CASE=$only"
 fi
 
 if [ $status -ne 0 ]; then

@@ -26,11 +26,16 @@ namespace mcadsw::sim {
 namespace {
 
 // Memory layout of a frame (docs/memory_map.md): five planes of stride bytes
-// per row, each starting on a 4 KiB boundary after a 4 KiB guard.
+// per row (default: the width rounded up to 4), each starting on a 4 KiB
+// boundary after a 4 KiB guard.
 struct Layout {
   uint32_t stride, plane, ly, lu, lv, ry, out, total;
-  Layout(int w, int h, uint32_t origin = 0) {
-    stride = uint32_t((w + 3) / 4 * 4);
+  int width, height;
+  Layout(int w, int h, uint32_t origin = 0, uint32_t stride_bytes = 0) : width(w), height(h) {
+    stride = stride_bytes ? stride_bytes : uint32_t((w + 3) / 4 * 4);
+    if (stride < uint32_t(w) || stride % 4 != 0)
+      throw std::invalid_argument("stride " + std::to_string(stride) +
+                                  " must be a multiple of 4 and at least the width " + std::to_string(w));
     plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
     ly = origin + 4096;
     lu = ly + plane;
@@ -39,6 +44,12 @@ struct Layout {
     out = ry + plane;
     total = out + plane + 4096;
   }
+  RawConfig raw(int disparities) const {
+    return {ly, lu, lv, ry, out, stride, width, height, disparities};
+  }
+  // What the frame may touch: reads in the four input planes, writes in the
+  // output plane, pixels only.
+  MemoryModel::Regions regions() const { return {{ly, lu, lv, ry}, out, stride, width, height}; }
 };
 
 void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
@@ -49,6 +60,8 @@ void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
 class Engine {
  public:
   Engine(MemoryModel& mem, const EngineOptions& opt) : mem_(mem), opt_(opt) {
+    // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
+    // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
     top_ = std::make_unique<Vmcadsw_top>(ctx_.get());
     if (!opt.waves.empty()) {
@@ -102,12 +115,14 @@ class Engine {
     t.eval();
     mem_.serve(t);
 #if VM_TRACE_FST
-    if (trace_) trace_->dump(2 * time_);
+    // Inputs change at the start of the low phase; the rising edge is half a
+    // period later.
+    if (trace_) trace_->dump(time_ * kClockPeriodPs);
 #endif
     t.clk_i = 1;
     t.eval();
 #if VM_TRACE_FST
-    if (trace_) trace_->dump(2 * time_ + 1);
+    if (trace_) trace_->dump(time_ * kClockPeriodPs + kClockPeriodPs / 2);
 #endif
     mem_.end_cycle();
     ++time_;
@@ -139,9 +154,15 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
     set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
 }
 
-// Runs from start until done_o or the cycle limit; `start_again_at` > 0 pulses
-// start_i again that many cycles after the start.
-void run_frame(Engine& e, EngineResult& r, long limit, bool progress, long start_again_at = 0) {
+// Runs from start until done_o or the cycle limit; `again` > 0 programs
+// `other` and pulses start_i again that many cycles after the start (the
+// configuration ports keep `other` until the frame ends).
+struct StartAgain {
+  long at = 0;
+  RawConfig other{};
+  const WeightTable* table = nullptr;
+};
+void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const StartAgain& again = {}) {
   auto& t = e.top();
   t.start_i = 1;
   e.cycle();
@@ -153,7 +174,8 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, long start
       r.timed_out = true;
       break;
     }
-    t.start_i = n == start_again_at;
+    if (n == again.at) program(t, again.other, *again.table);
+    t.start_i = n == again.at;
     e.cycle();
     t.start_i = 0;
     if (progress && n % 2000000 == 0)
@@ -208,8 +230,8 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
         rep << ", reference d=" << int(want) << " (cost " << keep.final_cost[want][i] << ")\n";
       }
     }
-  if (r.bad_writes) rep << "  " << r.bad_writes << " bytes written outside the disparity plane, first: "
-                        << mem.first_bad_write() << "\n";
+  r.bus = mem.violations();
+  rep << r.bus.describe();
   r.report += rep.str();
 }
 
@@ -258,23 +280,22 @@ void dump_after(const std::string& dir, MemoryModel& mem, uint32_t out, uint32_t
 EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
                         const EngineOptions& opt) {
   const int W = left.width(), H = left.height();
-  const Layout lay(W, H);
+  const Layout lay(W, H, 0, opt.stride);
   MemoryModel mem(lay.total, opt.latency);
   load_frame(mem, lay, left, right);
-  mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
+  mem.set_regions(lay.regions());
 
   EngineResult r;
   r.width = W;
   r.height = H;
   r.disparities = cfg.disparities;
-  const RawConfig raw{lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, cfg.disparities};
+  const RawConfig raw = lay.raw(cfg.disparities);
   if (!opt.dump_dir.empty()) dump_before(opt.dump_dir, mem, raw, cfg.table);
   {
     Engine e(mem, opt);
     program(e.top(), raw, cfg.table);
     run_frame(e, r, frame_limit(W, H, opt), opt.progress);
   }
-  r.bad_writes = mem.bad_writes();
   if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay.out, lay.stride * uint32_t(H), r);
   score(mem, lay, left, right, cfg, opt, r);
   return r;
@@ -285,7 +306,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
   std::vector<Layout> lays;
   uint32_t origin = 0;
   for (const Frame& f : frames) {
-    lays.emplace_back(f.left.width(), f.left.height(), origin);
+    lays.emplace_back(f.left.width(), f.left.height(), origin, opt.stride);
     origin = lays.back().total;
   }
   MemoryModel mem(origin, opt.latency);
@@ -293,7 +314,6 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 
   std::vector<EngineResult> results(frames.size());
   Engine e(mem, opt);
-  long bad_before = 0;
   for (size_t k = 0; k < frames.size(); ++k) {
     const Frame& f = frames[k];
     const Layout& lay = lays[k];
@@ -302,22 +322,21 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
     r.width = W;
     r.height = H;
     r.disparities = f.cfg.disparities;
-    // Only this frame's disparity plane may be written while it runs.
-    mem.allow_writes(lay.out, lay.out + lay.stride * uint32_t(H));
-    program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, f.cfg.disparities},
-            f.cfg.table);
+    // Only this frame's planes may be touched while it runs.
+    mem.set_regions(lay.regions());
+    program(e.top(), lay.raw(f.cfg.disparities), f.cfg.table);
     if (k == 0 && fault.kind == Fault::kResetMidFrame) {
       EngineResult aborted;
       run_frame(e, aborted, fault.at_cycle, false);
       if (!aborted.timed_out) throw std::runtime_error("frame 0 finished before the reset was due");
       e.reset();
-      program(e.top(), {lay.ly, lay.lu, lay.lv, lay.ry, lay.out, lay.stride, W, H, f.cfg.disparities},
-              f.cfg.table);
+      // The aborted frame's writes are not this frame's: checks start again.
+      mem.set_regions(lay.regions());
+      program(e.top(), lay.raw(f.cfg.disparities), f.cfg.table);
     }
-    run_frame(e, r, frame_limit(W, H, opt), opt.progress,
-              fault.kind == Fault::kStartWhileBusy ? fault.at_cycle : 0);
-    r.bad_writes = mem.bad_writes() - bad_before;
-    bad_before = mem.bad_writes();
+    StartAgain again;
+    if (fault.kind == Fault::kStartWhileBusy) again = {fault.at_cycle, fault.other, &f.cfg.table};
+    run_frame(e, r, frame_limit(W, H, opt), opt.progress, again);
     score(mem, lay, f.left, f.right, f.cfg, opt, r);
   }
   return results;
@@ -325,14 +344,14 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles) {
   MemoryModel mem(1 << 20, opt.latency);
-  mem.allow_writes(0, 0);  // a rejected configuration must write nothing
+  mem.set_regions({});  // a rejected configuration must touch nothing
   EngineResult r;
   {
     Engine e(mem, opt);
     program(e.top(), raw, make_weight_table(kDefaultGamma));
     run_frame(e, r, cycles, false);
   }
-  r.bad_writes = mem.writes();
+  r.bus = mem.violations();
   return r;
 }
 

@@ -12,8 +12,13 @@
 
 namespace mcadsw::sim {
 
+// Clock period the waves are written with: 95 MHz, the paper's clock and
+// constraints/mcadsw.sdc's `period` (a test checks they agree).
+constexpr uint64_t kClockPeriodPs = 10526;
+
 struct EngineOptions {
   MemoryModel::Latency latency;
+  uint32_t stride = 0;           // bytes per row of every plane; 0: width rounded up to 4
   long max_cycles = 0;           // 0: derived from the frame size
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
@@ -28,13 +33,16 @@ struct EngineResult {
   long cycles = 0;               // engine's cycle counter
   long words_read = 0, words_written = 0, stall_cycles = 0;
   long mismatches = 0;           // pixels differing from the reference (incl. never written)
-  long bad_writes = 0;           // bytes written outside the disparity plane
+  MemoryModel::Violations bus;   // port and address checks of the memory model
   bool timed_out = false;
   bool error = false;            // engine rejected the configuration
   int error_code = 0;
   double sim_seconds = 0;
   std::string report;            // first mismatches, human-readable
   Plane disparity;               // what the engine wrote
+  // Finished, accepted, every pixel equal to the reference, every check of the
+  // memory model passed.
+  bool clean() const { return !timed_out && !error && mismatches == 0 && bus.total() == 0; }
 };
 
 // Runs one frame. Throws std::runtime_error for harness failures (memory
@@ -47,25 +55,30 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
 // can be injected into every frame at `at_cycle` cycles after its start:
 //   kResetMidFrame   reset (engine and memory system) in the middle of frame 0,
 //                    which is then started again from the beginning;
-//   kStartWhileBusy  start_i pulsed again while the frame runs (must be ignored).
+//   kStartWhileBusy  start_i pulsed again while the frame runs, with the
+//                    configuration `other` on the configuration ports (must be
+//                    ignored: the frame, its status and counters unchanged).
 struct Frame {
   YuvImage left, right;
   Config cfg;
+};
+// A configuration as the engine's ports take it.
+struct RawConfig {
+  uint32_t base_ly, base_lu, base_lv, base_ry, base_out, stride;
+  int width, height, disparities;
 };
 enum class Fault { kNone, kResetMidFrame, kStartWhileBusy };
 struct FaultSpec {
   Fault kind = Fault::kNone;
   long at_cycle = 0;
+  RawConfig other{};  // kStartWhileBusy: programmed just before the second start
 };
 std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const EngineOptions& opt,
                                      FaultSpec fault = {});
 
 // Runs one frame with a raw configuration and reports the engine's status,
-// without comparing (fault tests: rejected configurations).
-struct RawConfig {
-  uint32_t base_ly, base_lu, base_lv, base_ry, base_out, stride;
-  int width, height, disparities;
-};
+// without comparing (fault tests: rejected configurations); any write is
+// counted in bus.bad_writes.
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
 
 }  // namespace mcadsw::sim

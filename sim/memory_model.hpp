@@ -2,11 +2,23 @@
 // req/gnt handshake, writes with byte enables, reads answered in order with
 // rvalid. Latency counts wait cycles beyond the minimum of one (data the cycle
 // after the grant, as a synchronous RAM): 0, a fixed N, or random (seeded),
-// with random grant stalls in the random mode. Counts traffic, and records
-// writes outside the region the engine may write.
+// with random grant stalls in the random mode.
+//
+// Besides serving the port it checks it (docs/memory_map.md, "Harness checks"):
+//   - a request that is not granted stays the same (req, we, be, addr, wdata)
+//     until its grant, checked on every stalled cycle;
+//   - a read touches a pixel of one of the frame's input planes (not the
+//     padding between width and stride, not another plane, not a guard);
+//   - a write enables at least one byte, every enabled byte is a pixel of the
+//     disparity plane (x < width, y < height), and no byte is written twice
+//     in a frame.
+// Violations are counted, the first of each kind described; a word address
+// outside the modelled memory or misaligned is a harness error (exception).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <deque>
 #include <random>
 #include <stdexcept>
@@ -25,15 +37,43 @@ class MemoryModel {
     uint32_t seed = 1;
   };
 
+  // The planes a frame may touch: reads inside the pixels of `inputs`, writes
+  // inside the pixels of `out`; each plane spans width x height bytes at
+  // base + y * stride + x. Width 0: nothing may be read or written.
+  struct Regions {
+    std::vector<uint32_t> inputs;
+    uint32_t out = 0, stride = 0;
+    int width = 0, height = 0;
+  };
+
+  // What the checks found (counts since the last set_regions()).
+  struct Violations {
+    long bad_reads = 0;          // reads that touch no input pixel
+    long bad_writes = 0;         // bytes written outside the output pixels (or writes with no byte)
+    long double_writes = 0;      // output bytes written a second time
+    long unstable_requests = 0;  // stalled requests changed or withdrawn before their grant
+    std::string first_bad_read, first_bad_write, first_double_write, first_unstable;
+    long total() const { return bad_reads + bad_writes + double_writes + unstable_requests; }
+    std::string describe() const;
+  };
+
   MemoryModel(size_t bytes, Latency lat) : mem_(bytes, 0), lat_(lat), rng_(lat.seed) {}
 
   uint8_t* data() { return mem_.data(); }
   size_t size() const { return mem_.size(); }
-  void allow_writes(uint32_t lo, uint32_t hi) { wlo_ = lo; whi_ = hi; }
+  // Starts a frame's checks: new regions, no byte written yet, counts cleared.
+  void set_regions(const Regions& r) {
+    regions_ = r;
+    written_.assign(size_t(r.width) * size_t(r.height), 0);
+    v_ = Violations{};
+  }
+  const Violations& violations() const { return v_; }
 
-  // Drives rvalid/rdata for this cycle; call before evaluating the cycle.
+  // Drives rvalid/rdata for this cycle, and gnt low until serve() decides it;
+  // call before evaluating the cycle.
   template <typename V>
   void drive_response(V& t) {
+    t.mem_gnt_i = 0;
     t.mem_rvalid_i = 0;
     if (!pending_.empty() && pending_.front().due <= cycle_) {
       t.mem_rvalid_i = 1;
@@ -42,50 +82,109 @@ class MemoryModel {
     }
   }
 
-  // Decides the grant for this cycle's request and performs it.
+  // Decides the grant for this cycle's request and performs it. Call with the
+  // request of this cycle settled (clock low, gnt low, evaluated).
   template <typename V>
   void serve(V& t) {
-    t.mem_gnt_i = 0;
-    if (t.mem_req_o) {
+    const auto sample = [&t] {
+      return Request{bool(t.mem_req_o), bool(t.mem_we_o), unsigned(t.mem_be_o),
+                     uint32_t(t.mem_addr_o), uint32_t(t.mem_wdata_o)};
+    };
+    const Request now = sample();
+    if (stalled_ && !(now == held_))
+      unstable("stalled " + held_.str() + " became " +
+               (now.req ? now.str() : std::string("no request")));
+    stalled_ = false;
+    if (now.req) {
       const bool gnt = !lat_.random || std::bernoulli_distribution(lat_.gnt_prob)(rng_);
-      if (!gnt) ++stalls_;
       t.mem_gnt_i = gnt;
       t.eval();
-      if (gnt) access(t.mem_we_o, t.mem_be_o, t.mem_addr_o, t.mem_wdata_o);
+      if (gnt && !(sample() == now))  // a request must not depend on its grant
+        unstable(now.str() + " became " + sample().str() + " when granted");
+      if (gnt) {
+        access(now);
+      } else {
+        stalled_ = true;
+        held_ = now;
+      }
     }
   }
 
   void end_cycle() { ++cycle_; }
   // The memory system is reset with the engine: responses still in flight are
-  // dropped (docs/memory_map.md).
-  void reset() { pending_.clear(); }
+  // dropped (docs/memory_map.md), and a stalled request is forgotten.
+  void reset() {
+    pending_.clear();
+    stalled_ = false;
+  }
 
   long reads() const { return reads_; }
   long writes() const { return writes_; }
-  long bad_writes() const { return bad_writes_; }
-  std::string first_bad_write() const { return first_bad_; }
 
  private:
   struct Pending {
     long due;
     uint32_t data;
   };
+  struct Request {
+    bool req = false, we = false;
+    unsigned be = 0;
+    uint32_t addr = 0, wdata = 0;
+    bool operator==(const Request& o) const {
+      return req == o.req && we == o.we && be == o.be && addr == o.addr && wdata == o.wdata;
+    }
+    std::string str() const {
+      return std::string(we ? "write" : "read") + " addr 0x" + hex(addr) + " be " +
+             std::to_string(be) + " wdata 0x" + hex(wdata);
+    }
+  };
 
-  void access(bool we, unsigned be, uint32_t addr, uint32_t wdata) {
+  void unstable(const std::string& what) {
+    if (v_.unstable_requests++ == 0) v_.first_unstable = "cycle " + std::to_string(cycle_) + ": " + what;
+  }
+
+  // Byte `a` as a pixel of a plane at `base`: its (x, y), or false.
+  bool pixel_of(uint32_t base, uint32_t a, int& x, int& y) const {
+    const Regions& r = regions_;
+    if (r.width <= 0 || a < base || r.stride == 0) return false;
+    const uint32_t off = a - base;
+    if (off / r.stride >= uint32_t(r.height) || off % r.stride >= uint32_t(r.width)) return false;
+    x = int(off % r.stride);
+    y = int(off / r.stride);
+    return true;
+  }
+
+  void access(const Request& q) {
+    const uint32_t addr = q.addr;
     if (addr % 4 != 0 || size_t(addr) + 4 > mem_.size())
       throw std::runtime_error("memory access out of range or misaligned: 0x" + hex(addr));
-    if (we) {
+    if (q.we) {
       ++writes_;
+      if (q.be == 0 && v_.bad_writes++ == 0)
+        v_.first_bad_write = "write with no byte enabled at 0x" + hex(addr);
       for (int b = 0; b < 4; ++b) {
-        if (!((be >> b) & 1)) continue;
-        if (addr + b < wlo_ || addr + b >= whi_) {
-          if (bad_writes_++ == 0) first_bad_ = "byte write to 0x" + hex(addr + b);
+        if (!((q.be >> b) & 1)) continue;
+        int x, y;
+        if (!pixel_of(regions_.out, addr + b, x, y)) {
+          if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
+        } else if (written_[size_t(y) * regions_.width + x]++ && v_.double_writes++ == 0) {
+          v_.first_double_write = "output pixel (" + std::to_string(x) + "," + std::to_string(y) +
+                                  ") written again (word 0x" + hex(addr) + ", be " +
+                                  std::to_string(q.be) + ")";
         }
-        mem_[addr + b] = uint8_t(wdata >> (8 * b));
+        mem_[addr + b] = uint8_t(q.wdata >> (8 * b));
       }
       return;
     }
     ++reads_;
+    bool inside = false;
+    for (uint32_t base : regions_.inputs)
+      for (int b = 0; b < 4 && !inside; ++b) {
+        int x, y;
+        inside = pixel_of(base, addr + b, x, y);
+      }
+    if (!inside && v_.bad_reads++ == 0)
+      v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
     uint32_t v = 0;
     for (int b = 0; b < 4; ++b) v |= uint32_t(mem_[addr + b]) << (8 * b);
     int extra = lat_.fixed;
@@ -106,9 +205,24 @@ class MemoryModel {
   Latency lat_;
   std::mt19937 rng_;
   std::deque<Pending> pending_;
-  long cycle_ = 0, reads_ = 0, writes_ = 0, stalls_ = 0, bad_writes_ = 0;
-  uint32_t wlo_ = 0, whi_ = 0;
-  std::string first_bad_;
+  long cycle_ = 0, reads_ = 0, writes_ = 0;
+  Regions regions_;
+  std::vector<uint8_t> written_;
+  Violations v_;
+  bool stalled_ = false;
+  Request held_;
 };
+
+inline std::string MemoryModel::Violations::describe() const {
+  std::string s;
+  auto line = [&](long n, const char* what, const std::string& first) {
+    if (n) s += "  " + std::to_string(n) + " " + what + ", first: " + first + "\n";
+  };
+  line(bad_reads, "reads outside the input planes' pixels", first_bad_read);
+  line(bad_writes, "bytes written outside the output pixels", first_bad_write);
+  line(double_writes, "output bytes written twice", first_double_write);
+  line(unstable_requests, "stalled requests changed before their grant", first_unstable);
+  return s;
+}
 
 }  // namespace mcadsw::sim

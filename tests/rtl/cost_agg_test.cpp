@@ -135,8 +135,10 @@ class CostAggBench {
       const int x = s_.bx - kRadius + grp * kLanes + l;
       for (int k = 0; k < kWindow; ++k) {
         const int i = l * kWindow + k;
-        if (!en) {  // garbage when not reading: it must not matter
+        if (!en) {  // garbage on every read port when not reading: it must not matter
           set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, rng_() & 63);
+          set_bits(t.cen_r_i, i * kCensusBits, kCensusBits, rng_() & 63);
+          set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits, rng_() & 7);
           continue;
         }
         const int y = s_.by + row - kRadius + k;

@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <cmath>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include "cli_util.hpp"
@@ -32,20 +35,83 @@ class SimCli : public mcadsw::test::CliFixture {
   }
 };
 
+// The verdict word of a result row, surrounded by spaces ("BIT-EXACT" or "FAILED").
+bool has_word(const std::string& out, const std::string& word) {
+  return out.find("  " + word + "  ") != std::string::npos;
+}
+
 TEST_F(SimCli, SmallCropRunsBitExact) {
   const CliRun r = run(pair() + " -d 8 --crop 100,100,30,20" + outputs());
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("MATCH"), std::string::npos) << r.output;
+  EXPECT_TRUE(has_word(r.output, "BIT-EXACT")) << r.output;
+  EXPECT_FALSE(has_word(r.output, "FAILED")) << r.output;
   EXPECT_TRUE(fs::exists(out_));
   EXPECT_TRUE(fs::exists(dir_ / "r.json"));
 }
 
-TEST_F(SimCli, WavesWritesAnFstFile) {
+// Rows 1000 bytes apart in memory: still exact, nothing read or written in the padding.
+TEST_F(SimCli, LargeStrideRunsBitExact) {
+  const CliRun r = run(pair() + " -d 8 --crop 100,100,30,20 --stride 1000" + outputs());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has_word(r.output, "BIT-EXACT")) << r.output;
+  std::ifstream j(dir_ / "r.json");
+  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"stride\": 1000"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"bus_violations\": 0"), std::string::npos) << json;
+}
+
+TEST_F(SimCli, BadStride) {
+  expect_failure(run(pair() + " -d 8 --stride 1002" + outputs()), "must be a multiple of 4");
+  expect_failure(run(pair() + " -d 8 --stride 0" + outputs()), "must be a multiple of 4");
+  expect_failure(run(pair() + " -d 8 --stride x" + outputs()), "must be an integer");
+  expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --stride 28" + outputs()),
+                 "stride 28 is below the width 30");
+}
+
+// The clock period of constraints/mcadsw.sdc, in ps.
+long sdc_period_ps() {
+  std::ifstream sdc(fs::path(MCADSW_SOURCE_DIR) / "constraints" / "mcadsw.sdc");
+  std::string line;
+  while (std::getline(sdc, line))
+    if (line.rfind("set period ", 0) == 0) return std::lround(std::stod(line.substr(11)) * 1000);
+  return 0;
+}
+
+// Waves in real time: a picosecond timescale, value changes only on the half
+// periods of the sdc clock, and the last one about cycles x period after the start.
+TEST_F(SimCli, WavesUseTheRealClockPeriod) {
   const fs::path fst = dir_ / "w.fst";
-  const CliRun r = run(pair() + " -d 4 --crop 100,100,20,10 --waves " + fst.string());
+  const CliRun r = run(pair() + " -d 4 --crop 100,100,20,10 --waves " + fst.string() +
+                       " --json " + (dir_ / "r.json").string());
   EXPECT_EQ(r.status, 0) << r.output;
   ASSERT_TRUE(fs::exists(fst)) << r.output;
-  EXPECT_GT(fs::file_size(fst), 1000u);
+  const long period = sdc_period_ps();
+  ASSERT_GT(period, 0) << "no `set period` in constraints/mcadsw.sdc";
+  std::ifstream j(dir_ / "r.json");
+  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+  const long cycles = std::stol(json.substr(json.find("\"cycles\": ") + 10));
+  const CliRun vcd = mcadsw::test::run_command("fst2vcd", fst.string());
+  ASSERT_EQ(vcd.status, 0) << "fst2vcd (gtkwave) failed";
+  std::istringstream in(vcd.output);
+  std::string line, timescale;
+  long last = -1, odd = 0;
+  bool in_timescale = false;
+  while (std::getline(in, line)) {
+    if (line.find("$timescale") != std::string::npos) in_timescale = true;
+    else if (in_timescale) {
+      timescale = line.substr(line.find_first_not_of(" \t"));
+      in_timescale = false;
+    }
+    if (line.size() > 1 && line[0] == '#') {
+      last = std::stol(line.substr(1));
+      if (last % (period / 2) != 0) ++odd;
+    }
+  }
+  EXPECT_EQ(timescale, "1ps");
+  EXPECT_EQ(odd, 0) << "time stamps off the half periods of " << period << " ps";
+  // Reset (4 cycles) and start come before the counted cycles.
+  EXPECT_GE(last, cycles * period);
+  EXPECT_LE(last, (cycles + 10) * period);
 }
 
 TEST_F(SimCli, MissingFile) {
