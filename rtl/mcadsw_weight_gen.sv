@@ -15,12 +15,13 @@
 // The memory side reads at clamped coordinates, so the weights of positions
 // outside the image are those of the nearest edge pixel (docs/algorithm.md).
 //
-// Kernel, after the window is loaded, one step a cycle:
-//   vertical:   column c (0..COLS-1), centre row r (0..BLOCK-1): the WINDOW
-//               weights of pixels (c, r+k) against the column centre (c, r+R);
-//   horizontal: centre row r, output pixel x (0..BLOCK-1): the WINDOW weights
-//               of column centres (x+j, r+R) against the window centre (x+R, r+R).
-// BLOCK*COLS + BLOCK*BLOCK = 1188 cycles a block (paper: 1536). The kernel is
+// Kernel, after the window is loaded, one step a cycle, row by row (centre
+// row r = 0..BLOCK-1), as the cost aggregator consumes the weights:
+//   vertical:   column c (0..COLS-1) of row r: the WINDOW weights of pixels
+//               (c, r+k) against the column centre (c, r+R);
+//   horizontal: output pixel x (0..BLOCK-1) of row r: the WINDOW weights of
+//               column centres (x+j, r+R) against the window centre (x+R, r+R).
+// BLOCK*(COLS + BLOCK) = 1188 cycles a block (paper: 1536). The kernel is
 // two stages: the window of WINDOW pixels is selected and registered, the next
 // cycle its distances and codes are written (the input-buffer read and the
 // distance arithmetic in one cycle missed 95 MHz, docs/architecture.md
@@ -132,27 +133,23 @@ module mcadsw_weight_gen #(
           r_q     <= '0;
           c_q     <= '0;
         end
-        VERT: begin  // column by column: the BLOCK centre rows of column c
-          if (r_q == RB'(BLOCK - 1)) begin
-            r_q <= '0;
-            if (c_q == XB'(COLS - 1)) begin
-              c_q     <= '0;
-              state_q <= HORZ;
-            end else begin
-              c_q <= c_q + XB'(1);
-            end
+        VERT: begin  // the COLS columns of row r
+          if (c_q == XB'(COLS - 1)) begin
+            c_q     <= '0;
+            state_q <= HORZ;
           end else begin
-            r_q <= r_q + RB'(1);
+            c_q <= c_q + XB'(1);
           end
         end
-        HORZ: begin
+        HORZ: begin  // the BLOCK output pixels of row r, then the next row
           if (c_q == XB'(BLOCK - 1)) begin
             c_q <= '0;
             if (r_q == RB'(BLOCK - 1)) begin
               state_q  <= IDLE;
               k_last_q <= 1'b1;
             end else begin
-              r_q <= r_q + RB'(1);
+              state_q <= VERT;
+              r_q     <= r_q + RB'(1);
             end
           end else begin
             c_q <= c_q + XB'(1);
@@ -217,13 +214,14 @@ module mcadsw_weight_gen #(
   assign column = {bank_word(v_rd, in_col[1:0]), bank_word(u_rd, in_col[1:0]),
                    bank_word(y_rd, in_col[1:0])};
 
-  // ---- Horizontal row buffer (Fig. 11): the centre rows of every column -----------
-  // Written during the vertical pass (row r + RADIUS of column c at position
-  // (r, c)), read during the horizontal pass: no second read of the input buffer.
+  // ---- Horizontal row buffer (Fig. 11): the centre row of the current row ---------
+  // Written during row r's vertical pass (pixel r + RADIUS of column c at
+  // position c), read during its horizontal pass: no second read of the input
+  // buffer. One row (COLS pixels) in flip-flops: the horizontal pass takes a
+  // WINDOW-pixel slice of it each cycle, and the next row's vertical pass
+  // overwrites it only after the last slice was taken (stage 1, below).
   localparam int PW = 24;                   // Y, U, V of one pixel
-  logic [COLS*PW-1:0] hrow_q [BLOCK];
-  logic [COLS*PW-1:0] hrow;
-  assign hrow = hrow_q[r_q];
+  logic [COLS*PW-1:0] hrow_q;
 
   function automatic logic [DCB-1:0] absdiff(input logic [7:0] a, input logic [7:0] b);
     logic [7:0] d;
@@ -282,7 +280,7 @@ module mcadsw_weight_gen #(
   endfunction
 
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT) hrow_q[r_q][32'(c_q)*PW +: PW] <= centre_pixel(column, r_q);
+    if (state_q == VERT) hrow_q[32'(c_q)*PW +: PW] <= centre_pixel(column, r_q);
   end
 
   // ---- Weight buffers: one word per aggregator read ----------------------------------
@@ -317,7 +315,7 @@ module mcadsw_weight_gen #(
 
   always_ff @(posedge clk_i) begin
     if (state_q == VERT || state_q == HORZ)
-      k_win_q <= state_q == HORZ ? hwindow(hrow, c_q) : vwindow(column, r_q);
+      k_win_q <= state_q == HORZ ? hwindow(hrow_q, c_q) : vwindow(column, r_q);
   end
 
   // Stage 2: distances, codes, one weight-buffer entry.
