@@ -25,22 +25,36 @@
 // position (clamp(i, lo_x, hi_x), clamp(j, lo_y, hi_y)): the border rule of
 // docs/algorithm.md, applied once, when the buffer is written.
 //
-// Census buffer: BANKS banks (the next block is prepared while the cost
-// aggregator reads the current one), each 8 sub-banks of column words (column
-// i in sub-bank i % 8), so the read port's LANES consecutive columns come from
-// distinct sub-banks; it delivers LANES columns x WINDOW rows a cycle (Fig. 12).
+// Census buffer: a ring of RING census columns (COLS + BLOCK, rounded up to a
+// multiple of 8), each a column word of ROWS codes, in 8 sub-banks (ring
+// column q in sub-bank q % 8), so the read port's LANES consecutive columns
+// come from distinct sub-banks; it delivers LANES columns x WINDOW rows a
+// cycle (Fig. 12). Each block's window starts BLOCK ring columns after the
+// previous block's. Census codes depend only on the (clamped) image position,
+// so a block that continues its left neighbour (cfg_first_i > 0) shares the
+// neighbour's last COLS - BLOCK columns and the kernel computes only its BLOCK
+// new ones (partial column reuse, Sec. IV), into ring columns the block before
+// the neighbour used: the scheduler prepares a block only after that one has
+// left the aggregator. A block that does not continue its neighbour (the
+// first of a row band) writes all COLS columns, over the neighbour's, so its
+// kernel waits until the neighbour has left the aggregator (ring_free_i).
+// The read port names a block by the bank the scheduler gave it (rd_bank_i,
+// two blocks in flight): the ring position of each bank's window is kept.
 `default_nettype none
 
 module mcadsw_census #(
   parameter int COLS   = mcadsw_pkg::BLOCK_COLS,   // census positions per row
   parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,   // census rows (18 + 30)
   parameter int LANES  = mcadsw_pkg::LANES,
+  parameter int BLOCK  = mcadsw_pkg::BLOCK,
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter int BANKS  = 2,
   parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
   parameter int SB     = $clog2(STRIPS),
   parameter int XB     = $clog2(COLS),             // column index width
+  parameter int RING   = (COLS + BLOCK + 7) / 8 * 8,  // census buffer columns
+  parameter int QB     = $clog2(RING),             // ring column index width
   parameter int YB     = $clog2(ROWS),             // row index width
   parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
 ) (
@@ -56,6 +70,7 @@ module mcadsw_census #(
   input  logic [YB-1:0]              cfg_hi_y_i,
   input  logic [1:0]                 cfg_ofs_i,   // window column 0 is input column cfg_ofs_i
   input  logic [SB-1:0]              cfg_first_i, // first strip delivered (0: whole window)
+  input  logic                       ring_free_i, // the previous block has left the aggregator
   // Luma words of the window
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
@@ -75,11 +90,12 @@ module mcadsw_census #(
   localparam int LROWS  = ROWS + 4;
   localparam int NSTRIP = STRIPS + STRIPS % 2;     // buffer strips: 4 NSTRIP columns, a multiple of SUB
   localparam int LDEPTH = NSTRIP * 4 / SUB;         // luma words per sub-bank
-  localparam int CDEPTH = (COLS + SUB - 1) / SUB;        // census words per sub-bank
+  localparam int CDEPTH = RING / SUB;              // census words per sub-bank
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
 
-  if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < LCOLS + 3) begin : g_bad_param
+  if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < LCOLS + 3 || COLS < BLOCK ||
+      RING % SUB != 0 || RING < COLS + BLOCK) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -89,9 +105,11 @@ module mcadsw_census #(
   endfunction
 
   // ---- Control ----------------------------------------------------------------------
-  typedef enum logic [2:0] {IDLE, LOAD, KERNEL, FLUSH, FLUSH2} state_e;
+  typedef enum logic [2:0] {IDLE, LOAD, WAIT, KERNEL, FLUSH, FLUSH2} state_e;
   state_e        state_q;
-  logic [BB-1:0] bank_q;
+  logic          cont_q;         // the block continues its left neighbour
+  logic [QB-1:0] cpos_q;         // ring column of the block's window column 0
+  logic [BANKS*QB-1:0] bpos_q;   // ... of each bank's block (read port), bank b at QB b
   logic [XB-1:0] lo_x_q, hi_x_q;
   logic [YB-1:0] lo_y_q, hi_y_q;
   logic [1:0]    ofs_q;
@@ -107,7 +125,9 @@ module mcadsw_census #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= IDLE;
-      bank_q  <= '0;
+      cont_q  <= 1'b0;
+      cpos_q  <= '0;
+      bpos_q  <= '0;
       lo_x_q  <= '0;
       hi_x_q  <= '0;
       lo_y_q  <= '0;
@@ -121,7 +141,9 @@ module mcadsw_census #(
       case (state_q)
         IDLE: if (cfg_valid_i) begin
           state_q <= LOAD;
-          bank_q  <= cfg_bank_i;
+          cont_q  <= cfg_first_i != '0;
+          cpos_q  <= QB'(wrap(32'(cpos_q) + BLOCK, RING));
+          bpos_q[32'(cfg_bank_i)*QB +: QB] <= QB'(wrap(32'(cpos_q) + BLOCK, RING));
           lo_x_q  <= cfg_lo_x_i;
           hi_x_q  <= cfg_hi_x_i;
           lo_y_q  <= cfg_lo_y_i;
@@ -130,9 +152,11 @@ module mcadsw_census #(
           base_q  <= SB'(wrap(32'(base_q) + STRIPS - 32'(cfg_first_i), NSTRIP));
         end
         LOAD: if (win_done) begin
-          state_q <= KERNEL;
-          ki_q    <= '0;
+          // A continuing block computes only its BLOCK new columns.
+          state_q <= (cont_q || ring_free_i) ? KERNEL : WAIT;
+          ki_q    <= cont_q ? XB'(COLS - BLOCK) : '0;
         end
+        WAIT: if (ring_free_i) state_q <= KERNEL;
         KERNEL: begin
           if (ki_q == XB'(COLS - 1)) state_q <= FLUSH;
           else ki_q <= ki_q + XB'(1);
@@ -256,18 +280,20 @@ module mcadsw_census #(
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
+  int wq, rq;                   // ring columns of the column written and of the first read
+  assign wq = wrap(32'(cpos_q) + 32'(col_ki_q), RING);
+  assign rq = wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING);
   logic [SUB*CWB-1:0] csub_rd;
   for (genvar b = 0; b < SUB; b++) begin : g_csub
-    logic [CWB-1:0] mem_q [BANKS*CDEPTH];
+    logic [CWB-1:0] mem_q [CDEPTH];
     always_ff @(posedge clk_i) begin
-      if (col_valid_q && 32'(col_ki_q) % SUB == b)
-        mem_q[32'(bank_q)*CDEPTH + 32'(col_ki_q) / SUB] <= col_q;
+      if (col_valid_q && wq % SUB == b) mem_q[wq / SUB] <= col_q;
     end
-    // The lane of rd_col_i .. rd_col_i + 7 that lives in this sub-bank.
+    // The lane of ring columns rq .. rq + 7 that lives in this sub-bank.
     int p;
-    assign p = 32'(rd_col_i) + ((b - 32'(rd_col_i) % SUB + SUB) % SUB);
+    assign p = rq + ((b - rq % SUB + SUB) % SUB);
     always_ff @(posedge clk_i) begin
-      if (rd_en_i) csub_rd[b*CWB +: CWB] <= mem_q[(32'(rd_bank_i)*CDEPTH + p / SUB) % (BANKS*CDEPTH)];
+      if (rd_en_i) csub_rd[b*CWB +: CWB] <= mem_q[(p / SUB) % CDEPTH];
     end
   end
 
@@ -279,11 +305,11 @@ module mcadsw_census #(
       rd_rot_q <= '0;
     end else if (rd_en_i) begin
       rd_row_q <= rd_row_i;
-      rd_rot_q <= rd_col_i[2:0];
+      rd_rot_q <= 3'(rq);
     end
   end
 
-  // Lane l is census column rd_col + l, from sub-bank (rd_col + l) % 8 (an 8:1
+  // Lane l is ring column rq + l, from sub-bank (rq + l) % 8 (an 8:1
   // multiplexer); its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
   // column word (a row shifter).
   function automatic logic [CWB-1:0] sub_word(input logic [SUB*CWB-1:0] w, input logic [2:0] b);

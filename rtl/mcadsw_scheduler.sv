@@ -30,6 +30,8 @@ module mcadsw_scheduler #(
   output logic signed [CW:0] prep_y0_o,      // by - 15
   output logic               prep_cont_o,    // the block continues the previous one (bx > 0)
   input  logic               prep_done_i,    // all three preparers finished (level)
+  output logic               agg_active_o,   // a block is in the aggregator (the one before
+                                             // the block being prepared, while preparing)
   // Cost aggregator
   output logic               agg_bank_o,
   output logic               job_valid_o,
@@ -162,7 +164,8 @@ module mcadsw_scheduler #(
     end
   end
 
-  assign busy_o = run_q;
+  assign busy_o       = run_q;
+  assign agg_active_o = agg_busy_q;
 
 endmodule
 

@@ -149,6 +149,7 @@ module mcadsw_top #(
   logic               prep_start, prep_bank, agg_bank;
   logic signed [CW:0] prep_x0, prep_y0;
   logic               prep_done;
+  logic               agg_active;     // census rings: the previous block still aggregates
   logic               job_valid, job_ready, agg_busy;
   logic [4:0]         job_row;
   logic [5:0]         job_last_col;
@@ -172,6 +173,7 @@ module mcadsw_top #(
     .prep_y0_o      (prep_y0),
     .prep_cont_o    (prep_cont),
     .prep_done_i    (prep_done),
+    .agg_active_o   (agg_active),
     .agg_bank_o     (agg_bank),
     .job_valid_o    (job_valid),
     .job_ready_i    (job_ready),
@@ -325,7 +327,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (lx_in[1:0]), .cfg_first_i (4'(l_first)),
+    .cfg_ofs_i (lx_in[1:0]), .cfg_first_i (4'(l_first)), .ring_free_i (!agg_active),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
     .done_o (cl_done), .busy_o (cl_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -337,7 +339,7 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (rx_in[1:0]), .cfg_first_i (5'(r_first)),
+    .cfg_ofs_i (rx_in[1:0]), .cfg_first_i (5'(r_first)), .ring_free_i (!agg_active),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
