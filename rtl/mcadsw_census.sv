@@ -194,13 +194,17 @@ module mcadsw_census #(
   // Luma input columns the kernel reads: lc .. lc + 4 (mod 4 NSTRIP), where
   // lc = 4 base + ofs + clamp(ki, lo_x, hi_x) (census position i needs window
   // luma columns i .. i+4).
+  // Index arithmetic in narrow unsigned vectors: the sub-bank of a column is
+  // its low 3 bits, its word the rest, wrapped by one compare-subtract (no
+  // division or modulo by a constant that is not a power of two).
+  localparam int LB = $clog2(4 * NSTRIP + SUB);   // luma column index, room for + 7
   logic [XB-1:0]      ic;
-  int                 lc;
+  logic [LB-1:0]      lc;
   logic [SUB*LW-1:0]  lsub_q;         // the word each sub-bank read (synchronous read)
-  int                 wstrip;         // buffer strip of the finished input strip
+  logic [SB-1:0]      wstrip;         // buffer strip of the finished input strip
   assign ic = (ki_q < lo_x_q) ? lo_x_q : (ki_q > hi_x_q) ? hi_x_q : ki_q;
-  assign lc = wrap(4*32'(base_q) + 32'(ofs_q) + 32'(ic), 4*NSTRIP);
-  assign wstrip = wrap(32'(base_q) + 32'(in_strip), NSTRIP);
+  assign lc = LB'(wrap(4*32'(base_q) + 32'(ofs_q) + 32'(ic), 4*NSTRIP));
+  assign wstrip = SB'(wrap(32'(base_q) + 32'(in_strip), NSTRIP));
 
   for (genvar b = 0; b < SUB; b++) begin : g_lsub
     // Buffer strip t holds columns 4t .. 4t+3: sub-bank b receives column
@@ -210,13 +214,20 @@ module mcadsw_census #(
 
     logic [LW-1:0] mem_q [LDEPTH];
     always_ff @(posedge clk_i) begin
-      if (strip_end && wstrip % 2 == b / 4) mem_q[wstrip / 2] <= wr_col;
+      if (strip_end && wstrip[0] == 1'(b / 4)) mem_q[wstrip[SB-1:1]] <= wr_col;
     end
     // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
-    int p;
-    assign p = lc + ((b - lc % SUB + SUB) % SUB);
+    // Its word: that of lc, or the next one when b is below lc's sub-bank.
+    localparam int LWB = $clog2(LDEPTH + 1);
+    logic [LWB-1:0] pw;
+    logic [3:0]     bd;                  // b - (lc mod 8); bit 3: the borrow, b below it
+    logic [2:0]     bd_unused;
+    assign bd = 4'(b) - {1'b0, lc[2:0]};
+    assign bd_unused = bd[2:0];
+    assign pw = LWB'(lc[LB-1:3]) + LWB'(bd[3]);
     always_ff @(posedge clk_i) begin
-      if (state_q == KERNEL) lsub_q[b*LW +: LW] <= mem_q[(p / SUB) % LDEPTH];
+      if (state_q == KERNEL)
+        lsub_q[b*LW +: LW] <= mem_q[$clog2(LDEPTH)'(pw >= LWB'(LDEPTH) ? pw - LWB'(LDEPTH) : pw)];
     end
   end
 
@@ -280,20 +291,27 @@ module mcadsw_census #(
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
-  int wq, rq;                   // ring columns of the column written and of the first read
-  assign wq = wrap(32'(cpos_q) + 32'(col_ki_q), RING);
-  assign rq = wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING);
+  logic [QB-1:0] wq, rq;        // ring columns of the column written and of the first read
+  assign wq = QB'(wrap(32'(cpos_q) + 32'(col_ki_q), RING));
+  assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING));
   logic [SUB*CWB-1:0] csub_rd;
   for (genvar b = 0; b < SUB; b++) begin : g_csub
     logic [CWB-1:0] mem_q [CDEPTH];
     always_ff @(posedge clk_i) begin
-      if (col_valid_q && wq % SUB == b) mem_q[wq / SUB] <= col_q;
+      if (col_valid_q && wq[2:0] == 3'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:3])] <= col_q;
     end
     // The lane of ring columns rq .. rq + 7 that lives in this sub-bank.
-    int p;
-    assign p = rq + ((b - rq % SUB + SUB) % SUB);
+    // Its word: that of rq, or the next one when b is below rq's sub-bank.
+    localparam int CWW = $clog2(CDEPTH + 1);
+    logic [CWW-1:0] pw;
+    logic [3:0]     bd;                  // b - (rq mod 8); bit 3: the borrow, b below it
+    logic [2:0]     bd_unused;
+    assign bd = 4'(b) - {1'b0, rq[2:0]};
+    assign bd_unused = bd[2:0];
+    assign pw = CWW'(rq[QB-1:3]) + CWW'(bd[3]);
     always_ff @(posedge clk_i) begin
-      if (rd_en_i) csub_rd[b*CWB +: CWB] <= mem_q[(p / SUB) % CDEPTH];
+      if (rd_en_i)
+        csub_rd[b*CWB +: CWB] <= mem_q[$clog2(CDEPTH)'(pw >= CWW'(CDEPTH) ? pw - CWW'(CDEPTH) : pw)];
     end
   end
 
