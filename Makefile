@@ -7,8 +7,10 @@
 #   make sim-random N=<cases> SEED=<s>  random pairs, sizes, D, tables and memory timing
 #                against the reference (default 200 cases, seed 1)
 #   make ref-sim the reference model alone: Middlebury error table
-#   make synth   Yosys -> OSU 0.18 um gates, memories as macros, OpenSTA timing
-#                (build/synth/report.md; DMAX=16 for the reduced configuration)
+#   make synth   Yosys -> OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
+#                (build/synth/report.md; DMAX=16 for the reduced configuration; FLAT=1 the
+#                whole engine flattened in one Yosys run, 40 min and 13.5 GB)
+#   make synth-check  make synth, then gates, slack and memory against constraints/budget.json (CI)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
 #                (FRAME=1 also a whole Tsukuba frame against the reference)
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
@@ -23,7 +25,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim wave sim-random ref-sim coverage synth gls lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim wave sim-random ref-sim coverage synth synth-check gls lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -65,9 +67,14 @@ ref-sim: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
 
-# make synth [DMAX=16]: gate count, memory inventory and timing (scripts/synth.sh)
+# make synth [DMAX=16] [FLAT=1]: gate count, memory inventory and timing (scripts/synth.sh;
+# block by block and incremental, FLAT=1 the flattened flow of scripts/synth_flat.sh)
 synth: bootstrap
-	@DMAX=$(DMAX) scripts/synth.sh
+	@DMAX=$(DMAX) FLAT=$(FLAT) scripts/synth.sh
+
+# make synth-check: make synth (DMAX=64), then constraints/budget.json (scripts/synth_check.sh)
+synth-check: bootstrap
+	@scripts/synth_check.sh
 
 # make gls [DMAX=64]: the netlist in the Verilator harness (scripts/gls.sh)
 gls: bootstrap

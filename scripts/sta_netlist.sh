@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # The netlist and macro models OpenSTA reads (called by scripts/synth.sh).
 #   scripts/sta_netlist.sh NETLIST OUT_DIR LIBERTY
-# NETLIST is the hierarchical gate-level netlist of `make synth` (also the one
-# gate-level simulation uses). OpenSTA's Verilog reader takes neither instance
-# parameters nor concatenations on the left of an assign, so this writes
+# NETLIST is the gate-level netlist of `make synth` (also the one gate-level
+# simulation uses): the block netlists assembled by scripts/synth.sh (mcadsw_top
+# instantiating one module per block), or the FLAT=1 netlist (blocks kept as modules
+# too). Every instantiated module must be defined in it, a cell or a macro, with
+# matching port widths (hierarchy -check; a resized port stops here). OpenSTA's
+# Verilog reader takes neither instance parameters nor concatenations on the left
+# of an assign, so this writes
 #   OUT_DIR/mcadsw_top_sta.v  flattened by Yosys, nets split to bits, remaining
 #                             wire-to-wire assigns replaced by BUFX2, every MCADSW_RAM instance renamed to a
 #                             parameter-free cell per shape (MCADSW_RAM_S<words>_W<bits>_A<addr bits>_<SYNC|ASYNC>,
@@ -18,7 +22,7 @@ cat > "$out/sta_netlist.ys" <<YS
 read_verilog -lib $root/sim/gls/mcadsw_ram_model.v
 read_liberty -lib $lib
 read_verilog $netlist
-hierarchy -top mcadsw_top
+hierarchy -check -top mcadsw_top
 flatten
 # Single-bit nets, so that bits of one wire that alias another bit merge
 # instead of becoming buffers (a write enable fanned out to 384 aliases did).
@@ -29,6 +33,10 @@ write_verilog -noattr -noexpr -nohex -nodec $out/mcadsw_top_flat.v
 YS
 yosys -q -l "$out/sta_netlist.log" "$out/sta_netlist.ys" > /dev/null || {
   tail -20 "$out/sta_netlist.log"; echo "sta_netlist: yosys failed" >&2; exit 1; }
+if grep -q "Resizing cell port" "$out/sta_netlist.log"; then
+  grep "Resizing cell port" "$out/sta_netlist.log" | head -5 >&2
+  echo "sta_netlist: port widths of an instance and its module differ in $netlist" >&2; exit 1
+fi
 
 # Parameterised macro instances -> one cell name per shape.
 awk -v shapes="$out/mcadsw_ram_shapes.txt" '
