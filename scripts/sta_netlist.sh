@@ -34,7 +34,7 @@ YS
 yosys -q -l "$out/sta_netlist.log" "$out/sta_netlist.ys" > /dev/null || {
   tail -20 "$out/sta_netlist.log"; echo "sta_netlist: yosys failed" >&2; exit 1; }
 if grep -q "Resizing cell port" "$out/sta_netlist.log"; then
-  grep "Resizing cell port" "$out/sta_netlist.log" | head -5 >&2
+  grep "Resizing cell port" "$out/sta_netlist.log" | awk 'NR <= 5' >&2
   echo "sta_netlist: port widths of an instance and its module differ in $netlist" >&2; exit 1
 fi
 

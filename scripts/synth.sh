@@ -137,7 +137,7 @@ YS
 echo "synth: DMAX=$dmax, clock ${period_ns} ns, liberty $(basename "$lib"); elaborating (log: $out/elab.log)"
 if ! timed "$out/elab_time.txt" "$yosys_bin" -q -l "$out/elab.log" "$out/elab.ys" > /dev/null 2> "$out/elab.err"; then
   { tail -8 "$out/elab.log" 2>/dev/null || cat "$out/elab.err"; } | sed 's/^/  | /' >&2
-  err=$(grep -h -m1 "ERROR" "$out/elab.log" "$out/elab.err" 2>/dev/null | head -1 || true)
+  err=$(grep -h -m1 "ERROR" "$out/elab.log" "$out/elab.err" 2>/dev/null | awk 'NR == 1' || true)
   # The block(s) of the failing file, from the last successful elaboration's list.
   efile=$(echo "$err" | grep -o '^[A-Za-z0-9_./-]*\.sv' || true)
   eblocks=""
@@ -165,7 +165,7 @@ block_modules=$(awk '$1 != "top" {print $2}' "$out/blocks.txt" | tr '\n' ' ')
 flow_files=("$root/scripts/synth_block.sh" "$root/scripts/synth_elab.awk" "$root/constraints/macro_map.v"
             "$root/constraints/abc_osu018.constr" "$root/constraints/abc_osu018.script" "$sdc"
             "$lib" "$root/sim/gls/mcadsw_ram_model.v")
-yosys_version=$("$yosys_bin" -V 2>&1 | head -1)
+yosys_version=$("$yosys_bin" -V 2>&1 | awk 'NR == 1')
 stamp_of() {   # label files
   local label=$1 files=$2 f
   {
@@ -179,7 +179,7 @@ stamp_of() {   # label files
   } | sha256sum | cut -d' ' -f1
 }
 
-declare -A b_module=() b_stamp=() b_est_s=() b_est_mb=()
+declare -A b_module=() b_stamp=() b_est_s=() b_est_mb=() is_cached=()
 queue=()
 cached=()
 while read -r label module inst base files weight; do
@@ -188,7 +188,7 @@ while read -r label module inst base files weight; do
   b_stamp[$label]=$s
   d=$out/blocks/$label
   if [ -f "$d/stamp" ] && [ "$(cat "$d/stamp")" = "$s" ] && [ -s "$d/netlist.v" ] && [ -f "$d/area.txt" ]; then
-    cached+=("$label")
+    cached+=("$label"); is_cached[$label]=1
   else
     rm -f "$d/stamp"
     # Estimates for the schedule: the last run's time and peak when known,
@@ -353,7 +353,7 @@ while read -r label module inst base files weight; do
   read -r s mb < "$d/cost.txt"
   awk -v m="$module" -v a="$nand2_area" -v label="$label" -v inst="$inst" -v base="$base" -v s="$s" -v mb="$mb" \
       -v mem="$(awk '{b += $5} END {print b + 0}' "$d/memories.txt")" \
-      -v cached="$(printf '%s\n' "${cached[@]}" | grep -qx "$label" && echo 1 || echo 0)" '
+      -v cached="${is_cached[$label]:-0}" '
     /^=== / { cur = $2; next }
     cur == m && $1 ~ /^DFF/ && NF == 2 { ff += $2 }
     /Chip area for module/ { n = $5; gsub(/[^A-Za-z0-9_]/, "", n); if (n == m) area = $NF }
@@ -380,12 +380,17 @@ fmax=$(awk -v p="$period_ns" -v w="$slack" 'BEGIN {printf "%.1f", 1000 / (p - w)
 awk '{n[$7] += $3 * $4; f[$7] += $3 * $5; m[$7] += $3 * $6} END {for (g in n) printf "%s %d %d %d\n", g, n[g], f[g], m[g]}' \
   "$out/block_figures.txt" | sort -k2,2nr > "$out/groups.txt"
 # Yosys per block: the largest single process; all processes of the run together (sampled).
-yosys_peak=$(awk 'BEGIN {m = 0} $9 > m {m = $9; l = $1} END {print m + 0, (l == "" ? "-" : l)}' "$out/block_figures.txt")
+# Peak memory of this run's processes (reused blocks ran in an earlier run): the
+# largest single process (GNU time), and all processes together (sampled).
+yosys_peak=$(awk 'BEGIN {m = 0} $10 == 0 && $9 > m {m = $9; l = $1} END {print m + 0, (l == "" ? "-" : l)}' "$out/block_figures.txt")
 read -r yosys_peak_mb yosys_peak_block <<< "$yosys_peak"
 yosys_cpu_s=$(awk '$10 == 0 {s += $8} END {print s + 0}' "$out/block_figures.txt")
-sta_mb=$(( $(peak_mb "$out/sta_netlist_time.txt") > $(peak_mb "$out/sta_time.txt") ? $(peak_mb "$out/sta_netlist_time.txt") : $(peak_mb "$out/sta_time.txt") ))
+stanet_mb=$(peak_mb "$out/sta_netlist_time.txt")
+sta_mb=$(peak_mb "$out/sta_time.txt")
 elab_mb=$(peak_mb "$out/elab_time.txt")
-proc_peak_mb=$(printf '%s\n' "$yosys_peak_mb" "$sta_mb" "$elab_mb" | sort -n | tail -1)
+read -r proc_peak_mb proc_peak_what < <(printf '%s %s\n' "$yosys_peak_mb" "Yosys_of_block_$yosys_peak_block" \
+  "$stanet_mb" "Yosys_preparing_the_STA_netlist" "$sta_mb" "OpenSTA" "$elab_mb" "Yosys_elaboration" | sort -k1,1n | tail -1)
+proc_peak_what=${proc_peak_what//_/ }
 sum_peak_mb=$(cat "$out/mem_peak_sum.txt" 2>/dev/null || echo 0)
 wall_s=$(( $(date +%s) - t_start ))
 
@@ -422,7 +427,8 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo
   echo "Run: ${wall_s} s wall (blocks ${yosys_wall} s incl. elaboration, STA ${sta_s} s); ${#queue[@]} blocks synthesised"
   echo "(${yosys_cpu_s} s of Yosys in all), ${#cached[@]} unchanged and reused. Peak memory: ${proc_peak_mb} MB for the largest"
-  echo "single process (Yosys of block \`$yosys_peak_block\`: ${yosys_peak_mb} MB; STA: ${sta_mb} MB), ${sum_peak_mb} MB for all processes of the run together."
+  echo "single process ($proc_peak_what; $([ ${#queue[@]} -gt 0 ] && echo "largest block run ${yosys_peak_mb} MB" || echo "no block run"), STA netlist preparation ${stanet_mb} MB,"
+  echo "OpenSTA ${sta_mb} MB), ${sum_peak_mb} MB for all processes of the run together (sampled each second)."
   echo
   echo "| figure | this engine | paper (Table III, UMC 90 nm) |"
   echo "|---|---|---|"
@@ -451,7 +457,7 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo
   echo "| net | driver | cell | pins | transition (ns) |"
   echo "|---|---|---|---|---|"
-  sort -k5,5gr "$out/sta_crossing.txt" | head -5 | awk '{printf "| `%s` | `%s` | %s | %d | %.3f |\n", $1, $2, $3, $4, $5}'
+  sort -k5,5gr "$out/sta_crossing.txt" | awk 'NR <= 5 {printf "| `%s` | `%s` | %s | %d | %.3f |\n", $1, $2, $3, $4, $5}'
   echo
   if [ -s "$out/sta_blocks.txt" ]; then
     echo "Endpoints that miss the clock, per block instance (\`sta_endpoints.log\`):"
@@ -531,4 +537,4 @@ mv "$out/summary.json.tmp" "$out/summary.json"
 echo "synth: $nand2_total NAND2 eq (paper 563k), memory $mem_kb kB in $mem_count macros (paper 21.3 kB),"
 echo "       worst slack $slack ns (WNS $wns ns) at $clock_mhz MHz, achievable $fmax MHz (paper 95 MHz)"
 echo "synth: report $out/report.md, summary $out/summary.json, netlist $out/mcadsw_top_osu018.v"
-echo "synth: wall time ${wall_s} s; peak memory ${proc_peak_mb} MB in one process (Yosys ${yosys_peak_mb} MB, block $yosys_peak_block), ${sum_peak_mb} MB all processes together"
+echo "synth: wall time ${wall_s} s (${#queue[@]} blocks synthesised, ${#cached[@]} reused); peak memory ${proc_peak_mb} MB in one process ($proc_peak_what), ${sum_peak_mb} MB all processes together"
