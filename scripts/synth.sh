@@ -503,10 +503,8 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
     awk '{printf "| %s | %d | %.1f |\n", $1, $2, $2 / 8192}'
   echo
   if awk -v k="$mem_kb" 'BEGIN {exit !(k > 21.3)}'; then
-    echo "The memory exceeds the paper's 21.3 kB: the weight generator's weight buffers hold the"
-    echo "weights of a whole block, double-banked, and the census buffers are double-banked; what"
-    echo "would close the gap (next-row weights, census buffers refilled row by row):"
-    echo "docs/architecture.md section 10."
+    echo "The memory exceeds the paper's 21.3 kB; where it stands and what would close the gap:"
+    echo "docs/architecture.md sections 7.1 and 10."
     echo
   fi
   echo "## Memories (black-box macros)"
