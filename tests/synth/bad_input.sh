@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Bad input to the hierarchical `make synth` (scripts/synth.sh) gives one clear
+# message and a non-zero exit, and leaves no summary.json of an earlier run behind
+# as if it were the new result. No synthesis runs: the cases stop at the checks,
+# at elaboration (a few seconds) or at the first block (Yosys replaced by a stub
+# that fails block runs).
+#   tests/synth/bad_input.sh     (about 30 s; needs yosys, sta and the OSU018 liberty)
+set -uo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+synth=$root/scripts/synth.sh
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fails=0
+pkg_dmax=$(awk '/localparam int DMAX / {v = $5; gsub(/[^0-9]/, "", v); print v}' "$root/rtl/mcadsw_pkg.sv")
+
+# expect NAME RC_WANTED REGEX -- ENV... : run synth.sh with a stale summary.json in
+# its OUT and check exit code, message, and that the stale files are gone.
+expect() {
+  local name=$1 want_rc=$2 regex=$3; shift 4
+  local out=$work/out_$name
+  mkdir -p "$out"
+  echo '{"nand2_eq": 1, "stale": true}' > "$out/summary.json"
+  echo "stale" > "$out/mcadsw_top_osu018.v"
+  local t0=$SECONDS rc=0
+  env OUT="$out" "$@" "$synth" > "$work/$name.out" 2> "$work/$name.err" || rc=$?
+  local ok=1
+  if [ "$rc" != "$want_rc" ]; then echo "  exit $rc, wanted $want_rc"; ok=0; fi
+  if ! grep -Eq "$regex" "$work/$name.err"; then echo "  stderr lacks /$regex/"; ok=0; fi
+  if [ -e "$out/summary.json" ] || [ -e "$out/mcadsw_top_osu018.v" ]; then echo "  stale summary.json or netlist left in OUT"; ok=0; fi
+  if [ "$ok" = 1 ]; then
+    echo "ok   $name (exit $rc, $((SECONDS - t0)) s): $(grep -E "$regex" "$work/$name.err" | head -1)"
+  else
+    echo "FAIL $name"; sed 's/^/  stderr: /' "$work/$name.err" | tail -15; fails=$((fails + 1))
+  fi
+}
+
+# Unknown or unsupported DMAX (the RTL supports 1 .. mcadsw_pkg::DMAX).
+expect dmax_zero  2 "DMAX='0' is not supported: an integer from 1 to $pkg_dmax" -- DMAX=0
+expect dmax_text  2 "DMAX='abc' is not supported" -- DMAX=abc
+expect dmax_above 2 "DMAX='$((pkg_dmax + 1))' is not supported" -- DMAX=$((pkg_dmax + 1))
+expect dmax_neg   2 "DMAX='-4' is not supported" -- DMAX=-4
+expect flat_bad   2 "FLAT='yes' is not 0 or 1" -- FLAT=yes
+
+# A missing tool: a PATH with everything the script needs except yosys.
+bin=$work/bin; mkdir -p "$bin"
+for t in bash env dirname date awk cat grep sed tr sort head tail ls mkdir rm mv wc cut sha256sum sta ps sleep setsid; do
+  p=$(command -v "$t") && ln -sf "$p" "$bin/$t"
+done
+expect no_yosys 2 "'yosys' not found in PATH" -- PATH="$bin"
+
+# A broken source: elaboration fails, the message names the file (Yosys's error).
+rtl=$work/rtl; cp -r "$root/rtl" "$rtl"
+sed -i '0,/endmodule/s/endmodule/  this is not verilog;\nendmodule/' "$rtl/mcadsw_depth_fifo.sv"
+expect broken_source 1 "elaboration of mcadsw_top failed" -- RTL_DIR="$rtl"
+grep -q "mcadsw_depth_fifo.sv" "$work/broken_source.err" ||
+  { echo "FAIL broken_source: the message does not name mcadsw_depth_fifo.sv"; fails=$((fails + 1)); }
+
+# A failing block: a Yosys stub that elaborates with the real Yosys and fails every
+# block run with an error in the block's log.
+real_yosys=$(command -v yosys)
+cat > "$work/yosys_stub" <<STUB
+#!/usr/bin/env bash
+case "\$*" in
+  *elab.ys*) exec "$real_yosys" "\$@" ;;
+  -V) exec "$real_yosys" -V ;;
+esac
+log=""; prev=""
+for a in "\$@"; do [ "\$prev" = -l ] && log=\$a; prev=\$a; done
+[ -n "\$log" ] && printf 'reading the design\nERROR: simulated failure of this block (tests/synth/bad_input.sh)\n' > "\$log"
+exit 1
+STUB
+chmod +x "$work/yosys_stub"
+expect failing_block 1 "block '[a-z_]+' \(module mcadsw_[a-z_]+\) failed" -- YOSYS="$work/yosys_stub"
+grep -q "simulated failure of this block" "$work/failing_block.err" ||
+  { echo "FAIL failing_block: the log tail is not in the message"; fails=$((fails + 1)); }
+grep -q "no summary.json written" "$work/failing_block.err" ||
+  { echo "FAIL failing_block: no final line"; fails=$((fails + 1)); }
+
+# synth_check.sh on a summary over budget, and on one within it.
+echo '{"dmax": 64, "nand2_eq": 600000, "memory_kB": 57.0, "clock_mhz": 95.0, "wns_ns": -0.2, "worst_slack_ns": -0.2}' > "$work/over.json"
+rc=0; SUMMARY=$work/over.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 1 ] && grep -q "FAILED  gates" "$work/check.out" && grep -q "FAILED  worst slack" "$work/check.out" &&
+   ! grep -q "FAILED  on-chip memory" "$work/check.out"; then echo "ok   synth_check over budget (exit 1)"
+else echo "FAIL synth_check over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.0, "clock_mhz": 95.0, "wns_ns": 0, "worst_slack_ns": 0.3}' > "$work/within.json"
+rc=0; SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 0 ]; then echo "ok   synth_check within budget"
+else echo "FAIL synth_check within budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+
+if [ "$fails" -ne 0 ]; then echo "bad_input: $fails case(s) failed"; exit 1; fi
+echo "bad_input: all cases passed"
