@@ -358,7 +358,7 @@ while read -r label module inst base files weight; do
     cur == m && $1 ~ /^DFF/ && NF == 2 { ff += $2 }
     /Chip area for module/ { n = $5; gsub(/[^A-Za-z0-9_]/, "", n); if (n == m) area = $NF }
     END {
-      if (base == "mcadsw_census") grp = (label ~ /_r$/) ? "census_right" : "census_left"
+      if (base == "mcadsw_census") grp = (inst > 1) ? "census_left_right" : (label ~ /_r$/) ? "census_right" : "census_left"
       else if (base == "mcadsw_weight_gen") grp = "weight_generator"
       else if (base == "mcadsw_cost_agg") grp = "cost_aggregator_wta"
       else if (base == "mcadsw_mem_ctrl" || base == "mcadsw_win_reader") grp = "memory_controller"
@@ -403,6 +403,7 @@ fi
 grp_name() {
   case $1 in
     census_left) echo "census left (transformer + buffer)" ;; census_right) echo "census right (transformer + buffer)" ;;
+    census_left_right) echo "census left + right (one module at this DMAX)" ;;
     weight_generator) echo "weight generator (+ weight buffers)" ;; cost_aggregator_wta) echo "cost aggregator + WTA" ;;
     memory_controller) echo "memory controller + window readers" ;; block_scheduler) echo "block scheduler" ;;
     depth_fifo) echo "depth FIFO" ;; top_registers_counters) echo "top: configuration, checks, counters" ;; *) echo "$1" ;;
@@ -411,6 +412,7 @@ grp_name() {
 paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers are not in the text)
   case $1 in
     census_left|census_right|cost_aggregator_wta) echo "one of the three that dominate" ;;
+    census_left_right) echo "two of the three that dominate" ;;
     *) echo "not given" ;;
   esac
 }
