@@ -76,14 +76,21 @@ grep -q "simulated failure of this block" "$work/failing_block.err" ||
 grep -q "no summary.json written" "$work/failing_block.err" ||
   { echo "FAIL failing_block: no final line"; fails=$((fails + 1)); }
 
-# synth_check.sh on a summary over budget, and on one within it.
+# synth_check.sh (a budget of its own, independent of constraints/budget.json's
+# figures) on summaries over budget, and on one within it.
+echo '{"nand2_eq_max": 563000, "wns_ns_min": 0, "memory_kB_max": 57.1, "clock_mhz": 95.0}' > "$work/budget.json"
 echo '{"dmax": 64, "nand2_eq": 600000, "memory_kB": 57.0, "clock_mhz": 95.0, "wns_ns": -0.2, "worst_slack_ns": -0.2}' > "$work/over.json"
-rc=0; SUMMARY=$work/over.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+rc=0; BUDGET=$work/budget.json SUMMARY=$work/over.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 1 ] && grep -q "FAILED  gates" "$work/check.out" && grep -q "FAILED  worst slack" "$work/check.out" &&
-   ! grep -q "FAILED  on-chip memory" "$work/check.out"; then echo "ok   synth_check over budget (exit 1)"
-else echo "FAIL synth_check over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+   ! grep -q "FAILED  on-chip memory" "$work/check.out"; then echo "ok   synth_check gates and slack over budget (exit 1)"
+else echo "FAIL synth_check gates and slack over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.2, "clock_mhz": 95.0, "wns_ns": 0, "worst_slack_ns": 0.3}' > "$work/mem.json"
+rc=0; BUDGET=$work/budget.json SUMMARY=$work/mem.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 1 ] && grep -q "FAILED  on-chip memory" "$work/check.out" && ! grep -q "FAILED  gates" "$work/check.out"; then
+  echo "ok   synth_check memory over budget (exit 1)"
+else echo "FAIL synth_check memory over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
 echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.0, "clock_mhz": 95.0, "wns_ns": 0, "worst_slack_ns": 0.3}' > "$work/within.json"
-rc=0; SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+rc=0; BUDGET=$work/budget.json SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 0 ]; then echo "ok   synth_check within budget"
 else echo "FAIL synth_check within budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
 
