@@ -292,16 +292,10 @@ sta_start=$(date +%s)
 timed "$out/sta_netlist_time.txt" "$root/scripts/sta_netlist.sh" "$out/mcadsw_top_osu018.v" "$out" "$lib" > "$out/sta_netlist.out" 2>&1 || {
   tail -20 "$out/sta_netlist.out" | sed 's/^/  | /' >&2; echo "synth: preparing the STA netlist failed (log: $out/sta_netlist.log)" >&2; exit 1; }
 cat > "$out/sta.tcl" <<TCL
-read_liberty $lib
-read_liberty $out/mcadsw_ram.lib
-read_verilog $out/mcadsw_top_sta.v
-link_design mcadsw_top
-read_sdc $sdc
-report_checks -path_delay max -digits 3 -fields {fanout cap slew}
-report_wns -digits 3
-report_tns -digits 3
-report_worst_slack -digits 3
-report_checks -path_delay max -group_count 100000 -format end > $out/sta_endpoints.log
+set lib $lib
+set out $out
+set sdc $sdc
+source $root/constraints/sta_reports.tcl
 # Nets between blocks (pins in more than one block instance, the top's own cells
 # counted as one): driver, its cell, pins, worst transition at the driver. Each
 # block's ABC buffered what it saw (its inputs driven by an INVX1, its outputs

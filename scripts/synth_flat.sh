@@ -84,16 +84,10 @@ fi
 # ---- OpenSTA -------------------------------------------------------------------------
 "$root/scripts/sta_netlist.sh" "$out/mcadsw_top_osu018.v" "$out" "$lib"
 cat > "$out/sta.tcl" <<TCL
-read_liberty $lib
-read_liberty $out/mcadsw_ram.lib
-read_verilog $out/mcadsw_top_sta.v
-link_design mcadsw_top
-read_sdc $sdc
-report_checks -path_delay max -digits 3 -fields {fanout cap slew}
-report_wns -digits 3
-report_tns -digits 3
-report_worst_slack -digits 3
-report_checks -path_delay max -group_count 100000 -format end > $out/sta_endpoints.log
+set lib $lib
+set out $out
+set sdc $sdc
+source $root/constraints/sta_reports.tcl
 TCL
 echo "synth: OpenSTA (log: $out/sta.log)"
 sta -no_splash -exit "$out/sta.tcl" > "$out/sta.log" 2>&1 || { tail -20 "$out/sta.log"; echo "synth: sta failed" >&2; exit 1; }

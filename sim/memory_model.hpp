@@ -118,8 +118,6 @@ class MemoryModel {
     stalled_ = false;
   }
 
-  long reads() const { return reads_; }
-  long writes() const { return writes_; }
 
  private:
   struct Pending {
@@ -159,7 +157,6 @@ class MemoryModel {
     if (addr % 4 != 0 || size_t(addr) + 4 > mem_.size())
       throw std::runtime_error("memory access out of range or misaligned: 0x" + hex(addr));
     if (q.we) {
-      ++writes_;
       if (q.be == 0 && v_.bad_writes++ == 0)
         v_.first_bad_write = "write with no byte enabled at 0x" + hex(addr);
       for (int b = 0; b < 4; ++b) {
@@ -176,7 +173,6 @@ class MemoryModel {
       }
       return;
     }
-    ++reads_;
     bool inside = false;
     for (uint32_t base : regions_.inputs)
       for (int b = 0; b < 4 && !inside; ++b) {
@@ -205,7 +201,7 @@ class MemoryModel {
   Latency lat_;
   std::mt19937 rng_;
   std::deque<Pending> pending_;
-  long cycle_ = 0, reads_ = 0, writes_ = 0;
+  long cycle_ = 0;
   Regions regions_;
   std::vector<uint8_t> written_;
   Violations v_;
