@@ -43,11 +43,13 @@ module mcadsw_cost_agg #(
   input  logic [RB-1:0]                 job_row_i,    // block row 0 .. BLOCK-1
   input  logic [NB-1:0]                 job_disp_i,   // D, 1 .. DMAX
   input  logic [CLB-1:0]                job_last_col_i,  // last Ev column inside the image
+  input  logic                          job_wslot_i,  // weight-buffer row slot of the row
   // Census buffers and vertical weight buffer (data one cycle after address)
   output logic                          vrd_en_o,
   output logic [RB-1:0]                 vrd_row_o,
   output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
   output logic [DB-1:0]                 vrd_d_o,
+  output logic                          vrd_slot_o,   // weight row slot
   input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
   input  logic [LANES*WINDOW*CB-1:0]    cen_r_i,
   input  logic [LANES*WINDOW*WB-1:0]    wv_i,
@@ -55,6 +57,8 @@ module mcadsw_cost_agg #(
   output logic                          hrd_en_o,
   output logic [RB-1:0]                 hrd_row_o,
   output logic [GB-1:0]                 hrd_grp_o,    // pixels HAGG*grp ..
+  output logic                          hrd_slot_o,   // weight row slot
+  output logic                          hrd_rel_o,    // the row's last horizontal read
   input  logic [HAGG*WINDOW*WB-1:0]     wh_i,
   // Disparities, HAGG pixels a cycle; no back-pressure (the scheduler only
   // starts a job when the depth FIFO has room for its row)
@@ -91,6 +95,7 @@ module mcadsw_cost_agg #(
   logic [RB-1:0] row_q;
   logic [DB-1:0] d_q, dlast_q;
   logic [CLB-1:0] last_col_q;
+  logic          slot_q;
   logic [GB-1:0] grp_q;
   logic          issue_last;
   logic          accept;
@@ -107,8 +112,10 @@ module mcadsw_cost_agg #(
       dlast_q <= '0;
       grp_q   <= '0;
       last_col_q <= '0;
+      slot_q  <= 1'b0;
     end else if (accept) begin
       last_col_q <= job_last_col_i;
+      slot_q  <= job_wslot_i;
       busy_q  <= 1'b1;
       row_q   <= job_row_i;
       d_q     <= '0;
@@ -130,22 +137,24 @@ module mcadsw_cost_agg #(
   assign vrd_row_o = row_q;
   assign vrd_grp_o = grp_q;
   assign vrd_d_o   = d_q;
+  assign vrd_slot_o = slot_q;
 
   logic          v1_valid_q, v1_first_q, v1_last_q, v2_valid_q, v2_first_q, v2_last_q;
   logic [RB-1:0] v1_row_q, v2_row_q;
   logic [DB-1:0] v1_d_q, v2_d_q;
   logic [GB-1:0] v1_grp_q, v2_grp_q;
   logic [CLB-1:0] v1_lcol_q, v2_lcol_q;  // last in-image Ev column of the block
+  logic          v1_slot_q, v2_slot_q, h0_slot_q, h1_slot_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q} <= '0;
-      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q} <= '0;
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q} <= '0;
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q} <= '0;
     end else begin
-      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q} <=
-          {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q};
-      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q} <=
-          {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q};
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q} <=
+          {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q};
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q} <=
+          {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q};
     end
   end
 
@@ -200,10 +209,12 @@ module mcadsw_cost_agg #(
   // ---- Horizontal side: 6 output groups per full bank --------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q} <= '0;
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
+       h0_slot_q} <= '0;
     end else if (bank_full) begin
-      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q} <=
-          {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0), v2_lcol_q};
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
+       h0_slot_q} <= {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0), v2_lcol_q,
+                      v2_slot_q};
     end else if (h0_valid_q) begin
       h0_valid_q <= h0_grp_q != GB'(GROUPS - 1);
       h0_grp_q   <= h0_grp_q + GB'(1);
@@ -213,16 +224,20 @@ module mcadsw_cost_agg #(
   assign hrd_en_o  = h1_valid_q;
   assign hrd_row_o = h1_row_q;
   assign hrd_grp_o = h1_grp_q;
+  assign hrd_slot_o = h1_slot_q;
+  assign hrd_rel_o = h1_last_q && h1_grp_q == GB'(GROUPS - 1);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <= '0;
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
+       h1_slot_q} <= '0;
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <= '0;
       {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <= '0;
       pp_rd_q <= '0;
     end else begin
-      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q} <=
-          {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q};
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
+       h1_slot_q} <= {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q,
+                      h0_lcol_q, h0_slot_q};
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <=
           {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q};
       {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <=

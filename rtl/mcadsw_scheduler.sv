@@ -4,7 +4,8 @@
 // aggregated from the other bank; a bank is refilled only after the block that
 // used it has left the cost aggregator. Aggregation of a block issues its row
 // jobs (only rows inside the image; partial blocks at the right and bottom
-// edges compute the whole row and the depth FIFO drops what is outside).
+// edges compute the whole row and the depth FIFO drops what is outside), each
+// once the weight generator has made that row's weights (wrow_ready_i).
 `default_nettype none
 
 module mcadsw_scheduler #(
@@ -29,6 +30,7 @@ module mcadsw_scheduler #(
   output logic signed [CW:0] prep_x0_o,      // left window origin (bx - 15)
   output logic signed [CW:0] prep_y0_o,      // by - 15
   output logic               prep_cont_o,    // the block continues the previous one (bx > 0)
+  output logic [4:0]         prep_rows_o,    // its rows inside the image (1 .. BLOCK)
   input  logic               prep_done_i,    // all three preparers finished (level)
   output logic               agg_active_o,   // a block is in the aggregator (the one before
                                              // the block being prepared, while preparing)
@@ -36,6 +38,7 @@ module mcadsw_scheduler #(
   output logic               agg_bank_o,
   output logic               job_valid_o,
   input  logic               job_ready_i,
+  input  logic               wrow_ready_i,   // the weights of the next row job are made
   output logic [4:0]         job_row_o,
   output logic [5:0]         job_last_col_o,
   input  logic               agg_busy_i,
@@ -83,6 +86,8 @@ module mcadsw_scheduler #(
   assign prep_x0_o    = $signed({1'b0, pbx_q}) - (CW + 1)'(RADIUS);
   assign prep_y0_o    = $signed({1'b0, pby_q}) - (CW + 1)'(RADIUS);
   assign prep_cont_o  = pbx_q != '0;
+  assign prep_rows_o  = ({1'b0, height_i} - {1'b0, pby_q} > (CW + 1)'(BLOCK)) ?
+                        5'(BLOCK) : 5'(height_i - pby_q);
 
   // Aggregation of the prepared block starts when the aggregator has drained.
   logic agg_go;
@@ -91,7 +96,7 @@ module mcadsw_scheduler #(
   // Row jobs.
   logic [CW:0] y_abs;
   assign y_abs       = {1'b0, aby_q} + (CW + 1)'(arow_q);
-  assign job_valid_o = agg_busy_q && !agg_draining_q && fifo_space_i;
+  assign job_valid_o = agg_busy_q && !agg_draining_q && fifo_space_i && wrow_ready_i;
   assign job_row_o   = arow_q;
   assign agg_bank_o  = abank_q;
   logic [CW:0] last_col;  // last Ev column inside the image: W - 1 - (bx - 15)
@@ -144,8 +149,7 @@ module mcadsw_scheduler #(
         aby_q          <= pby_q;
         abank_q        <= pbank_q;
         arow_q         <= '0;
-        arows_q        <= ({1'b0, height_i} - {1'b0, pby_q} > (CW + 1)'(BLOCK)) ?
-                          5'(BLOCK) : 5'(height_i - pby_q);
+        arows_q        <= prep_rows_o;
         pbx_q          <= p_nx;
         pby_q          <= p_ny;
         pbank_q        <= !pbank_q;

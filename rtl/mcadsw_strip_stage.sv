@@ -2,7 +2,8 @@
 // data are first packed into data words"), shared by the census transformer
 // and the weight generator. The memory side delivers a window of PLANES planes
 // in strips of 4 columns, one 32-bit word a row (byte b = column 4s + b),
-// strip by strip, plane by plane. This stage counts the words, collects the
+// strip by strip, and each strip plane by plane (so a strip's Y, U and V are
+// in the buffer together). This stage counts the words, collects the
 // first ROWS - 1 words of a strip, and when the last row arrives presents the
 // 4 complete column words with the strip's plane and index, so the input
 // buffers only ever write whole words. A window may start at strip first_i
@@ -53,8 +54,12 @@ module mcadsw_strip_stage #(
     end else if (wr_i) begin
       row_q <= last_o ? '0 : row_q + RB'(1);
       if (last_o) begin
-        strip_o <= (strip_o == SB'(STRIPS - 1)) ? first_q : strip_o + SB'(1);
-        if (strip_o == SB'(STRIPS - 1)) plane_o <= plane_o + PB'(1);
+        if (plane_o == PB'(PLANES - 1)) begin
+          plane_o <= '0;
+          strip_o <= (strip_o == SB'(STRIPS - 1)) ? first_q : strip_o + SB'(1);
+        end else begin
+          plane_o <= plane_o + PB'(1);
+        end
       end
     end
   end

@@ -149,6 +149,8 @@ module mcadsw_top #(
   logic               prep_start, prep_bank, agg_bank;
   logic signed [CW:0] prep_x0, prep_y0;
   logic               prep_done;
+  logic [4:0]         prep_rows;
+  logic               wrow_ready, wrow_slot;
   logic               agg_active;     // census rings: the previous block still aggregates
   logic               job_valid, job_ready, agg_busy;
   logic [4:0]         job_row;
@@ -172,11 +174,13 @@ module mcadsw_top #(
     .prep_x0_o      (prep_x0),
     .prep_y0_o      (prep_y0),
     .prep_cont_o    (prep_cont),
+    .prep_rows_o    (prep_rows),
     .prep_done_i    (prep_done),
     .agg_active_o   (agg_active),
     .agg_bank_o     (agg_bank),
     .job_valid_o    (job_valid),
     .job_ready_i    (job_ready),
+    .wrow_ready_i   (wrow_ready),
     .job_row_o      (job_row),
     .job_last_col_o (job_last_col),
     .agg_busy_i     (agg_busy),
@@ -229,7 +233,12 @@ module mcadsw_top #(
   logic [5:0]         l_first, r_first, w_first;
   assign l_first = first_strip(lx_in[1:0], prep_cont, LSTRIPS);
   assign r_first = first_strip(rx_in[1:0], prep_cont, RSTRIPS);
-  assign w_first = first_strip(prep_x0[1:0], prep_cont, WSTRIPS);
+  // The weight window of the first block of a row band (x0 = -15) skips the
+  // strips wholly left of the image; the weight generator replicates column 0.
+  logic signed [CW:0] wx_neg;
+  assign wx_neg  = -wx_al;
+  assign w_first = prep_cont ? first_strip(prep_x0[1:0], 1'b1, WSTRIPS) :
+                   (wx_al < 0) ? 6'(wx_neg >>> 2) : 6'd0;
   logic signed [CW:0] lx_rd, rx_rd, wx_rd; // first column each reader reads
   assign lx_rd = lx_al + (CW + 1)'(4 * 32'(l_first));
   assign rx_rd = rx_al + (CW + 1)'(4 * 32'(r_first));
@@ -315,8 +324,9 @@ module mcadsw_top #(
   assign prep_done = cl_done_q && cr_done_q && wg_done_q;
 
   logic                       vrd_en, hrd_en;
-  logic [4:0]                 vrd_row, hrd_row;
+  logic [4:0]                 vrd_row, hrd_row_unused;
   logic [2:0]                 vrd_grp, hrd_grp;
+  logic                       vrd_slot, hrd_slot, hrd_rel;
   logic [DB-1:0]              vrd_d;
   logic [LANES*WINDOW*CB-1:0] cen_l, cen_r;
   logic [LANES*WINDOW*WB-1:0] wv;
@@ -349,14 +359,15 @@ module mcadsw_top #(
   mcadsw_weight_gen u_weight_gen (
     .clk_i, .rst_ni,
     .thr_i (thr_q),
-    .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused),
     .cfg_ofs_i (prep_x0[1:0]), .cfg_first_i (4'(w_first)),
+    .cfg_lo_i (6'(lo_bound(prep_x0))), .cfg_rows_i (prep_rows),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
     .done_o (wg_done), .busy_o (wg_busy_unused),
-    .vrd_en_i (vrd_en), .vrd_bank_i (agg_bank), .vrd_row_i (vrd_row),
-    .vrd_col_i (6'(32'(vrd_grp) * LANES)), .wv_o (wv),
-    .hrd_en_i (hrd_en), .hrd_bank_i (agg_bank), .hrd_row_i (hrd_row),
-    .hrd_col_i (5'(32'(hrd_grp) * HAGG)), .wh_o (wh)
+    .row_ready_o (wrow_ready), .rd_slot_o (wrow_slot), .row_take_i (desc_push),
+    .vrd_en_i (vrd_en), .vrd_slot_i (vrd_slot), .vrd_grp_i (vrd_grp), .wv_o (wv),
+    .hrd_en_i (hrd_en), .hrd_slot_i (hrd_slot), .hrd_grp_i (hrd_grp), .hrd_rel_i (hrd_rel),
+    .wh_o (wh)
   );
 
   // ---- Cost aggregator, WTA and depth FIFO ---------------------------------------------------
@@ -375,10 +386,12 @@ module mcadsw_top #(
   mcadsw_cost_agg u_cost_agg (
     .clk_i, .rst_ni,
     .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
-    .job_disp_i (disp_q), .job_last_col_i (job_last_col),
+    .job_disp_i (disp_q), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),
     .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d),
+    .vrd_slot_o (vrd_slot),
     .cen_l_i (cen_l), .cen_r_i (cen_r), .wv_i (wv),
-    .hrd_en_o (hrd_en), .hrd_row_o (hrd_row), .hrd_grp_o (hrd_grp), .wh_i (wh),
+    .hrd_en_o (hrd_en), .hrd_row_o (hrd_row_unused), .hrd_grp_o (hrd_grp),
+    .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
     .disp_o (disp), .busy_o (agg_busy),
     .mon_ev_valid_o (mon_ev_valid), .mon_ev_row_o (mon_ev_row), .mon_ev_d_o (mon_ev_d),
@@ -390,6 +403,7 @@ module mcadsw_top #(
   assign mon_unused = ^{mon_ev_valid, mon_ev_row, mon_ev_d, mon_ev_grp, mon_ev,
                         mon_fc_valid, mon_fc_row, mon_fc_d, mon_fc_grp, mon_fc,
                         lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
+                        hrd_row_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused};
 

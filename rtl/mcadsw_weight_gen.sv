@@ -1,37 +1,53 @@
-// Weight generator (paper Sec. V-C, Fig. 11): three input buffers (Y, U, V of
-// the left view), a kernel of WINDOW Manhattan colour-distance units and
-// weight-table lookups, and the vertical and horizontal weight buffers.
+// Weight generator (paper Sec. V-C, Fig. 11): the Y, U, V input buffer of the
+// left view, a kernel of WINDOW Manhattan colour-distance units and weight-table
+// lookups, and the vertical and horizontal weight buffers, which hold two
+// aggregation rows: the kernel makes row r + 1 while the cost aggregator works
+// on row r (paper Sec. V-F: the aggregator starts once a row's weights are
+// ready). docs/architecture.md 5.2 and 7.1.
 //
-// Input: the colour of the ROWS x COLS read window (48 x 48), plane by plane
-// (Y, then U, then V), in strips of 4 columns: for strip s, rows 0 .. ROWS-1 of
-// columns 4s .. 4s+3, one 32-bit word a row, byte 0 the leftmost column. The
-// strips start at the aligned memory word left of the window, cfg_ofs_i
-// (0..3) columns early, so each strip word is one memory read: COLS/4 + 1
-// strips a plane. The input buffers are circular over those strips, as the
-// census transformer's (partial column reuse, Sec. IV): cfg_first_i > 0 means
-// the window continues the previous block's 18 columns to the right, the
-// buffers advance by WPR - cfg_first_i strips and only strips cfg_first_i ..
-// WPR-1 of each plane are delivered.
-// The memory side reads at clamped coordinates, so the weights of positions
-// outside the image are those of the nearest edge pixel (docs/algorithm.md).
+// Loader. Input: the colour of the ROWS x COLS read window (48 x 48) in strips
+// of 4 columns, strip by strip, and Y, U, V of each strip in turn: for strip s
+// and plane p, rows 0 .. ROWS-1 of columns 4s .. 4s+3, one 32-bit word a row,
+// byte 0 the leftmost column. The strips start at the aligned memory word left
+// of the window, cfg_ofs_i (0..3) columns early, so each strip word is one
+// memory read: WPR = COLS/4 + 1 strips. The input buffer is a ring of RS = WPR
+// + NEW strips (one synchronous-read RAM a plane, a strip of 4 column words an
+// entry): a window's strip s lives in ring strip (base + s) mod RS, and each
+// window's base is WPR - cfg_first_i strips after the previous one's. Only
+// strips cfg_first_i .. WPR-1 are delivered:
+//  - a block that continues its left neighbour (partial column reuse, Sec. IV)
+//    receives only the NEW or fewer strips the neighbour's window lacks; they
+//    land in ring strips the neighbour does not use;
+//  - the first block of a row band skips the strips wholly left of the image
+//    (cfg_first_i of them; the kernel replicates image column 0, window column
+//    cfg_lo_i, for the columns before it). Its first NEW strips land in free
+//    ring strips; the others overwrite the previous block's window, so the
+//    loader waits for them until the kernel has made that block's last row.
+// done_o pulses when the window is in the buffer (the block is prepared).
 //
-// Kernel, after the window is loaded, one step a cycle, row by row (centre
-// row r = 0..BLOCK-1), as the cost aggregator consumes the weights:
+// Kernel: the rows of a block in order (cfg_rows_i of them, the rows the cost
+// aggregator will ask for), each into a free row slot, one step a cycle:
 //   vertical:   column c (0..COLS-1) of row r: the WINDOW weights of pixels
 //               (c, r+k) against the column centre (c, r+R);
 //   horizontal: output pixel x (0..BLOCK-1) of row r: the WINDOW weights of
 //               column centres (x+j, r+R) against the window centre (x+R, r+R).
-// BLOCK*(COLS + BLOCK) = 1188 cycles a block (paper: 1536). The kernel is
-// two stages: the window of WINDOW pixels is selected and registered, the next
-// cycle its distances and codes are written (the input-buffer read and the
-// distance arithmetic in one cycle missed 95 MHz, docs/architecture.md
-// section 10); done_o follows the last write.
+// COLS + 1 + BLOCK = 67 cycles a row. Pipeline: the input-buffer read
+// (address registered), the window selection (registered), the distances and
+// codes (written). The centre row r+R of every column goes into a row buffer
+// of flip-flops during the vertical pass (Fig. 11); the horizontal pass reads
+// it, one cycle after the vertical pass's last column is in it.
+// Memory side reads at clamped coordinates, so the weights of positions
+// outside the image are those of the nearest edge pixel (docs/algorithm.md).
+//
+// Row slots: row_ready_o says the oldest row not yet handed out is complete,
+// in slot rd_slot_o; row_take_i hands it to the aggregator (a row job). The
+// aggregator reads the slot through vrd_* and hrd_* (data the cycle after the
+// address) and frees it with hrd_rel_i on its last horizontal read.
 //
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
 // from the reference's table by weight_thresholds(), so both sides use the
-// same values. Weight buffers: BANKS banks, so the next block is generated
-// while the cost aggregator reads the current one.
+// same values.
 `default_nettype none
 
 module mcadsw_weight_gen #(
@@ -44,45 +60,55 @@ module mcadsw_weight_gen #(
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
-  parameter int BANKS  = 2,
-  parameter int WPR    = COLS / 4 + 1,              // strips a plane (offset 0..3)
+  parameter int WPR    = COLS / 4 + 1,              // strips a window (offset 0..3)
+  parameter int NEW    = (BLOCK + 3) / 4,           // most strips a continuing block adds (5)
+  parameter int RS     = WPR + NEW,                 // ring strips (18)
   parameter int SB     = $clog2(WPR),
   parameter int XB     = $clog2(COLS),
-  parameter int RB     = $clog2(BLOCK),
-  parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
+  parameter int RB     = $clog2(BLOCK + 1),
+  parameter int VGRP   = COLS / LANES,              // vertical words a row (6)
+  parameter int HGRP   = BLOCK / HAGG,              // horizontal words a row (6)
+  parameter int GB     = $clog2(VGRP > HGRP ? VGRP : HGRP)
 ) (
   input  logic                       clk_i,
   input  logic                       rst_ni,
-  input  logic [NTHR*DCB-1:0]        thr_i,        // stable while busy_o
+  input  logic [NTHR*DCB-1:0]        thr_i,        // stable while a frame runs
+  // Loader: a block's window
   input  logic                       cfg_valid_i,
   output logic                       cfg_ready_o,
-  input  logic [BB-1:0]              cfg_bank_i,
   input  logic [1:0]                 cfg_ofs_i,    // window column 0 is input column cfg_ofs_i
-  input  logic [SB-1:0]              cfg_first_i,  // first strip delivered (0: whole window)
+  input  logic [SB-1:0]              cfg_first_i,  // first strip delivered
+  input  logic [XB-1:0]              cfg_lo_i,     // window column of image column 0 (0 inside)
+  input  logic [RB-1:0]              cfg_rows_i,   // rows to make, 1 .. BLOCK
   input  logic                       pix_valid_i,
   output logic                       pix_ready_o,
   input  logic [31:0]                pix_data_i,
-  output logic                       done_o,
+  output logic                       done_o,       // one cycle: the window is loaded
   output logic                       busy_o,
-  // Vertical weight buffer read: LANES columns from vrd_col_i, centre row vrd_row_i
+  // Row slots
+  output logic                       row_ready_o,
+  output logic                       rd_slot_o,
+  input  logic                       row_take_i,
+  // Vertical weight buffer read: LANES columns of group vrd_grp_i of a slot
   input  logic                       vrd_en_i,
-  input  logic [BB-1:0]              vrd_bank_i,
-  input  logic [RB-1:0]              vrd_row_i,
-  input  logic [XB-1:0]              vrd_col_i,
+  input  logic                       vrd_slot_i,
+  input  logic [GB-1:0]              vrd_grp_i,
   output logic [LANES*WINDOW*WB-1:0] wv_o,          // lane l, tap k at (l*WINDOW + k)*WB
-  // Horizontal weight buffer read: HAGG output pixels from hrd_col_i
+  // Horizontal weight buffer read: HAGG output pixels of group hrd_grp_i of a slot
   input  logic                       hrd_en_i,
-  input  logic [BB-1:0]              hrd_bank_i,
-  input  logic [RB-1:0]              hrd_row_i,
-  input  logic [RB-1:0]              hrd_col_i,
+  input  logic                       hrd_slot_i,
+  input  logic [GB-1:0]              hrd_grp_i,
+  input  logic                       hrd_rel_i,     // this read is the slot's last
   output logic [HAGG*WINDOW*WB-1:0]  wh_o           // pixel m, tap j at (m*WINDOW + j)*WB
 );
 
   localparam int RADIUS = WINDOW / 2;
   localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
+  localparam int RSB    = $clog2(RS);
 
-  if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 || COLS != BLOCK + WINDOW - 1 ||
-      NTHR != (1 << WB) - 1) begin : g_bad_param
+  if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
+      COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
+      HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -91,88 +117,34 @@ module mcadsw_weight_gen #(
     wrap = (v >= n) ? v - n : v;
   endfunction
 
-  // ---- Control ------------------------------------------------------------------
-  typedef enum logic [1:0] {IDLE, LOAD, VERT, HORZ} state_e;
-  state_e        state_q;
-  logic [BB-1:0] bank_q;
-  logic [1:0]    ofs_q;
-  logic [SB-1:0] base_q;       // buffer strip of window strip 0
-  logic [RB-1:0] r_q;
-  logic [XB-1:0] c_q;          // column (vertical) or output pixel (horizontal)
-  logic          pix_fire;
+  // ---- Loader --------------------------------------------------------------------
+  logic           l_busy_q;        // a window is being loaded
+  logic           pend_q;          // a loaded window waits for the kernel
+  logic [RSB-1:0] l_base_q;        // ring strip of window strip 0 (last configured window)
+  logic [SB-1:0]  l_first_q;
+  logic [1:0]     l_ofs_q;
+  logic [XB-1:0]  l_lo_q;
+  logic [RB-1:0]  l_rows_q;
+  logic           gen_busy;        // the kernel still reads a window (the previous block's)
 
-  logic          k_vert_q, k_horz_q;   // the kernel's second stage writes a vertical / horizontal entry
-  logic          k_last_q;             // ... the block's last one
-  assign cfg_ready_o = state_q == IDLE;
-  assign busy_o      = state_q != IDLE || k_vert_q || k_horz_q;
-  assign pix_ready_o = state_q == LOAD;
-  assign pix_fire    = pix_valid_i && pix_ready_o;
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      state_q <= IDLE;
-      bank_q  <= '0;
-      ofs_q   <= '0;
-      base_q  <= '0;
-      r_q     <= '0;
-      c_q     <= '0;
-      k_last_q <= 1'b0;
-      done_o  <= 1'b0;
-    end else begin
-      k_last_q <= 1'b0;
-      done_o   <= k_last_q;
-      case (state_q)
-        IDLE: if (cfg_valid_i) begin
-          state_q <= LOAD;
-          bank_q  <= cfg_bank_i;
-          ofs_q   <= cfg_ofs_i;
-          base_q  <= SB'(wrap(32'(base_q) + WPR - 32'(cfg_first_i), WPR));
-        end
-        LOAD: if (win_done) begin
-          state_q <= VERT;
-          r_q     <= '0;
-          c_q     <= '0;
-        end
-        VERT: begin  // the COLS columns of row r
-          if (c_q == XB'(COLS - 1)) begin
-            c_q     <= '0;
-            state_q <= HORZ;
-          end else begin
-            c_q <= c_q + XB'(1);
-          end
-        end
-        HORZ: begin  // the BLOCK output pixels of row r, then the next row
-          if (c_q == XB'(BLOCK - 1)) begin
-            c_q <= '0;
-            if (r_q == RB'(BLOCK - 1)) begin
-              state_q  <= IDLE;
-              k_last_q <= 1'b1;
-            end else begin
-              state_q <= VERT;
-              r_q     <= r_q + RB'(1);
-            end
-          end else begin
-            c_q <= c_q + XB'(1);
-          end
-        end
-        default: state_q <= IDLE;
-      endcase
-    end
-  end
-
-  // ---- Input buffers: Y, U, V, each 4 banks of column words ----------------------
-  // Column c is word c/4 of bank c%4 and holds the ROWS pixels of the column, so
-  // an input word (4 pixels of a row) writes one byte into each bank, and the
-  // kernel reads a whole column at once ("column by column", Fig. 11).
-  localparam int CW = ROWS * 8;             // column word
   logic [1:0]       in_plane;
   logic [SB-1:0]    in_strip;               // columns 4s .. 4s+3
   logic             strip_end, win_done;    // last row of a strip / of the window
+  localparam int CW = ROWS * 8;             // column word
   logic [4*CW-1:0]  strip_cols;             // the 4 column words of that strip
+  logic             cfg_fire, pix_fire;
+  logic [SB-1:0]    new_idx;                // strip's index among the delivered ones
+
+  assign cfg_ready_o = !l_busy_q && !pend_q;
+  assign cfg_fire    = cfg_valid_i && cfg_ready_o;
+  assign new_idx     = in_strip - l_first_q;
+  // Strips beyond the first NEW land on the previous window's ring strips.
+  assign pix_ready_o = l_busy_q && !(gen_busy && new_idx >= SB'(NEW));
+  assign pix_fire    = pix_valid_i && pix_ready_o;
 
   mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3)) u_stage (
     .clk_i, .rst_ni,
-    .start_i (cfg_valid_i && cfg_ready_o),
+    .start_i (cfg_fire),
     .first_i (cfg_first_i),
     .wr_i    (pix_fire),
     .data_i  (pix_data_i),
@@ -183,44 +155,175 @@ module mcadsw_weight_gen #(
     .cols_o  (strip_cols)
   );
 
+  // ---- Kernel control ------------------------------------------------------------
+  typedef enum logic [2:0] {IDLE, ROW, VERT, GAP, HORZ} state_e;
+  state_e         state_q;
+  logic [RSB-1:0] g_base_q;
+  logic [1:0]     g_ofs_q;
+  logic [XB-1:0]  g_lo_q;
+  logic [RB-1:0]  g_rows_q;
+  logic [RB-1:0]  r_q;
+  logic [XB-1:0]  c_q;             // column (vertical) or output pixel (horizontal)
+  logic [GB-1:0]  hg_q;            // horizontal: word (group of HAGG pixels) ...
+  logic [1:0]     hm_q;            // ... and pixel in it
+  logic           wslot_q;         // slot the kernel fills
+  logic [1:0]     occ_q;           // slot holds a row the aggregator has not released
+  logic [1:0]     rdy_q;           // slot holds a complete row not yet handed out
+  logic           rslot_q;         // oldest row not handed out
+  logic           k_done_q;        // the kernel's last write of a row (stage 2)
+  logic           k_slot2_q;
 
-  logic [3*CW-1:0]   column;                // Y, U, V of the column the kernel reads
-  logic [4*CW-1:0]   y_rd, u_rd, v_rd;      // the word each bank presents
-  logic [XB:0]       in_col;                // its buffer column: 4 base + offset + window column c
-  logic [SB-1:0]     wstrip;                // buffer strip of the finished input strip
-  assign in_col = (XB + 1)'(wrap(4*32'(base_q) + 32'(ofs_q) + 32'(c_q), 4*WPR));
-  assign wstrip = SB'(wrap(32'(base_q) + 32'(in_strip), WPR));
+  assign gen_busy = state_q != IDLE;
 
-  for (genvar b = 0; b < 4; b++) begin : g_ibank
-    logic [CW-1:0] wr_col;                  // column 4s + b
-    assign wr_col = strip_cols[b*CW +: CW];
-
-    logic [CW-1:0] y_q [WPR];
-    logic [CW-1:0] u_q [WPR];
-    logic [CW-1:0] v_q [WPR];
-    always_ff @(posedge clk_i) begin
-      if (strip_end && in_plane == 2'd0) y_q[wstrip] <= wr_col;
-      if (strip_end && in_plane == 2'd1) u_q[wstrip] <= wr_col;
-      if (strip_end && in_plane == 2'd2) v_q[wstrip] <= wr_col;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      l_busy_q  <= 1'b0;
+      pend_q    <= 1'b0;
+      l_base_q  <= '0;
+      l_first_q <= '0;
+      l_ofs_q   <= '0;
+      l_lo_q    <= '0;
+      l_rows_q  <= '0;
+      done_o    <= 1'b0;
+      state_q   <= IDLE;
+      g_base_q  <= '0;
+      g_ofs_q   <= '0;
+      g_lo_q    <= '0;
+      g_rows_q  <= '0;
+      r_q       <= '0;
+      c_q       <= '0;
+      hg_q      <= '0;
+      hm_q      <= '0;
+      wslot_q   <= 1'b0;
+      occ_q     <= '0;
+      rdy_q     <= '0;
+      rslot_q   <= 1'b0;
+    end else begin
+      done_o <= 1'b0;
+      // Loader
+      if (cfg_fire) begin
+        l_busy_q  <= 1'b1;
+        l_base_q  <= RSB'(wrap(32'(l_base_q) + WPR - 32'(cfg_first_i), RS));
+        l_first_q <= cfg_first_i;
+        l_ofs_q   <= cfg_ofs_i;
+        l_lo_q    <= cfg_lo_i;
+        l_rows_q  <= cfg_rows_i;
+      end
+      if (pix_fire && win_done) begin
+        l_busy_q <= 1'b0;
+        pend_q   <= 1'b1;
+        done_o   <= 1'b1;
+      end
+      // Kernel
+      case (state_q)
+        IDLE: if (pend_q) begin       // take the loaded window
+          pend_q   <= 1'b0;
+          state_q  <= ROW;
+          g_base_q <= l_base_q;
+          g_ofs_q  <= l_ofs_q;
+          g_lo_q   <= l_lo_q;
+          g_rows_q <= l_rows_q;
+          r_q      <= '0;
+        end
+        ROW: if (!occ_q[wslot_q]) begin
+          state_q <= VERT;
+          c_q     <= '0;
+        end
+        VERT: begin                   // the COLS columns of row r
+          if (c_q == XB'(COLS - 1)) state_q <= GAP;
+          else c_q <= c_q + XB'(1);
+        end
+        GAP: begin                    // the last centre pixel reaches the row buffer
+          state_q <= HORZ;
+          c_q     <= '0;
+          hg_q    <= '0;
+          hm_q    <= '0;
+        end
+        HORZ: begin                   // the BLOCK output pixels of row r
+          c_q <= c_q + XB'(1);
+          if (hm_q == 2'(HAGG - 1)) begin
+            hm_q <= '0;
+            hg_q <= hg_q + GB'(1);
+          end else begin
+            hm_q <= hm_q + 2'd1;
+          end
+          if (c_q == XB'(BLOCK - 1)) begin
+            wslot_q <= !wslot_q;
+            if (r_q == g_rows_q - RB'(1)) begin
+              state_q <= IDLE;
+            end else begin
+              state_q <= ROW;
+              r_q     <= r_q + RB'(1);
+            end
+          end
+        end
+        default: state_q <= IDLE;
+      endcase
+      // Slots: taken when the kernel starts a row, freed by the aggregator's last read.
+      for (int s = 0; s < 2; s++) begin
+        if (state_q == ROW && !occ_q[wslot_q] && wslot_q == 1'(s)) occ_q[s] <= 1'b1;
+        else if (hrd_en_i && hrd_rel_i && hrd_slot_i == 1'(s)) occ_q[s] <= 1'b0;
+        if (k_done_q && k_slot2_q == 1'(s)) rdy_q[s] <= 1'b1;
+        else if (row_take_i && rslot_q == 1'(s)) rdy_q[s] <= 1'b0;
+      end
+      if (row_take_i) rslot_q <= !rslot_q;
     end
-    assign y_rd[b*CW +: CW] = y_q[SB'(in_col[XB:2])];
-    assign u_rd[b*CW +: CW] = u_q[SB'(in_col[XB:2])];
-    assign v_rd[b*CW +: CW] = v_q[SB'(in_col[XB:2])];
   end
+
+  assign busy_o      = l_busy_q || pend_q || gen_busy || k_done_q;
+  assign row_ready_o = rdy_q[rslot_q];
+  assign rd_slot_o   = rslot_q;
+
+  // ---- Input buffer: a ring of RS strips, one RAM a plane ------------------------
+  // Entry t holds the 4 column words of ring strip t (column b at b*CW, row y at
+  // byte y); the kernel reads a whole strip and takes one column
+  // ("column by column", Fig. 11).
+  localparam int CB = $clog2(4 * RS);        // ring column index
+  logic [CB-1:0]  rcol;                      // ring column of the kernel's column c
+  logic [XB-1:0]  cc;                        // c, with image column 0 replicated to its left
+  logic [RSB-1:0] wstrip;                    // ring strip of the finished input strip
+  assign cc     = (c_q < g_lo_q) ? g_lo_q : c_q;
+  assign rcol   = CB'(wrap(4*32'(g_base_q) + 32'(g_ofs_q) + 32'(cc), 4*RS));
+  assign wstrip = RSB'(wrap(32'(l_base_q) + 32'(in_strip), RS));
+
+  logic [4*CW-1:0] y_mem [RS];
+  logic [4*CW-1:0] u_mem [RS];
+  logic [4*CW-1:0] v_mem [RS];
+  logic [4*CW-1:0] y_rd_q, u_rd_q, v_rd_q;
+  always_ff @(posedge clk_i) begin
+    if (pix_fire && strip_end && in_plane == 2'd0) y_mem[wstrip] <= strip_cols;
+    if (pix_fire && strip_end && in_plane == 2'd1) u_mem[wstrip] <= strip_cols;
+    if (pix_fire && strip_end && in_plane == 2'd2) v_mem[wstrip] <= strip_cols;
+  end
+  always_ff @(posedge clk_i) begin
+    if (state_q == VERT) begin
+      y_rd_q <= y_mem[RSB'(rcol[CB-1:2])];
+      u_rd_q <= u_mem[RSB'(rcol[CB-1:2])];
+      v_rd_q <= v_mem[RSB'(rcol[CB-1:2])];
+    end
+  end
+
   function automatic logic [CW-1:0] bank_word(input logic [4*CW-1:0] w, input logic [1:0] b);
     bank_word = '0;
     for (int i = 0; i < 4; i++) bank_word = bank_word | (w[i*CW +: CW] & {CW{b == 2'(i)}});
   endfunction
-  assign column = {bank_word(v_rd, in_col[1:0]), bank_word(u_rd, in_col[1:0]),
-                   bank_word(y_rd, in_col[1:0])};
 
-  // ---- Horizontal row buffer (Fig. 11): the centre row of the current row ---------
-  // Written during row r's vertical pass (pixel r + RADIUS of column c at
-  // position c), read during its horizontal pass: no second read of the input
-  // buffer. One row (COLS pixels) in flip-flops: the horizontal pass takes a
-  // WINDOW-pixel slice of it each cycle, and the next row's vertical pass
-  // overwrites it only after the last slice was taken (stage 1, below).
-  localparam int PW = 24;                   // Y, U, V of one pixel
+  // ---- Kernel pipeline -------------------------------------------------------------
+  // Stage 1 (vertical only): the column from the input buffer; its window and
+  // centre pixel. Stage 2: distances, codes, one weight-buffer entry.
+  localparam int PW  = 24;                   // Y, U, V of one pixel
+  localparam int WPW = WINDOW * PW;          // a window of pixels
+  logic           s1_q;                      // stage 1 holds a vertical column
+  logic [1:0]     s1_sel_q;                  // its column in the strip
+  logic [RB-1:0]  s1_r_q;
+  logic [XB-1:0]  s1_c_q;
+  logic           s1_slot_q;
+  logic [3*CW-1:0] column;
+  assign column = {bank_word(v_rd_q, s1_sel_q), bank_word(u_rd_q, s1_sel_q),
+                   bank_word(y_rd_q, s1_sel_q)};
+
+  // Horizontal row buffer (Fig. 11): the centre row of the current row, COLS
+  // pixels in flip-flops, written by the vertical pass, read by the horizontal one.
   logic [COLS*PW-1:0] hrow_q;
 
   function automatic logic [DCB-1:0] absdiff(input logic [7:0] a, input logic [7:0] b);
@@ -233,17 +336,11 @@ module mcadsw_weight_gen #(
     cdist = absdiff(a[7:0], b[7:0]) + absdiff(a[15:8], b[15:8]) + absdiff(a[23:16], b[23:16]);
   endfunction
 
-  // ---- Kernel: WINDOW colour distances and table lookups ----------------------------
-  // Vertical (h = 0): pixels (c, r+k) against (c, r+R) from the column word;
-  // horizontal (h = 1): (c+k, r+R) against (c+R, r+R) from the row buffer. The
-  // WINDOW pixels are first selected as a window (one of BLOCK offsets: an
-  // AND-OR multiplexer, not a bit-granular shifter), then taken at constant
-  // positions. A function called only where weights are written, so a simulator
-  // evaluates it in the kernel's cycles only; the hardware is the same.
-  localparam int WPW = WINDOW * PW;          // a window of pixels
-
   // Rows r .. r + WINDOW - 1 of the column, as pixels: each plane's window is
-  // one of BLOCK row offsets, then Y, U, V are interleaved at constant positions.
+  // one of BLOCK row offsets (an AND-OR multiplexer, not a bit-granular
+  // shifter), then Y, U, V are interleaved at constant positions. Functions
+  // called only where their result is written, so a simulator evaluates them in
+  // the kernel's cycles only; the hardware is the same.
   function automatic logic [WPW-1:0] vwindow(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
     logic [3*WINDOW*8-1:0] planes;    // Y, U, V windows
     planes = '0;
@@ -279,68 +376,92 @@ module mcadsw_weight_gen #(
                                       col[(o + RADIUS)*8 +: 8]} & {PW{r == RB'(o)}});
   endfunction
 
-  always_ff @(posedge clk_i) begin
-    if (state_q == VERT) hrow_q[32'(c_q)*PW +: PW] <= centre_pixel(column, r_q);
-  end
-
-  // ---- Weight buffers: one word per aggregator read ----------------------------------
-  // Vertical: word (bank, r, group of LANES columns); horizontal: word (bank, r,
-  // group of HAGG pixels). The kernel writes one entry of a word a cycle.
-  localparam int VGRP = COLS / LANES;
-  localparam int HGRP = BLOCK / HAGG;
-  logic [LANES*ENTRY-1:0] vbuf_q [BANKS*BLOCK*VGRP];
-  logic [HAGG*ENTRY-1:0]  hbuf_q [BANKS*BLOCK*HGRP];
-
-  // Stage 1: the window and where its codes go.
   logic [WPW-1:0] k_win_q;
-  logic [BB-1:0]  k_bank_q;
-  logic [RB-1:0]  k_r_q;
-  logic [XB-1:0]  k_c_q;
+  logic           k_vert_q, k_horz_q;        // stage 2 writes a vertical / horizontal entry
+  logic           k_slot_q;
+  logic [GB-1:0]  k_grp_q;                   // entry: word and position in it
+  logic [2:0]     k_pos_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      k_vert_q <= 1'b0;
-      k_horz_q <= 1'b0;
-      k_bank_q <= '0;
-      k_r_q    <= '0;
-      k_c_q    <= '0;
+      s1_q      <= 1'b0;
+      s1_sel_q  <= '0;
+      s1_r_q    <= '0;
+      s1_c_q    <= '0;
+      s1_slot_q <= 1'b0;
+      k_vert_q  <= 1'b0;
+      k_horz_q  <= 1'b0;
+      k_slot_q  <= 1'b0;
+      k_grp_q   <= '0;
+      k_pos_q   <= '0;
+      k_done_q  <= 1'b0;
+      k_slot2_q <= 1'b0;
     end else begin
-      k_vert_q <= state_q == VERT;
-      k_horz_q <= state_q == HORZ;
-      k_bank_q <= bank_q;
-      k_r_q    <= r_q;
-      k_c_q    <= c_q;
+      s1_q      <= state_q == VERT;
+      s1_sel_q  <= rcol[1:0];
+      s1_r_q    <= r_q;
+      s1_c_q    <= c_q;
+      s1_slot_q <= wslot_q;
+      k_vert_q  <= s1_q;
+      k_horz_q  <= state_q == HORZ;
+      if (s1_q) begin
+        k_slot_q <= s1_slot_q;
+        k_grp_q  <= GB'(s1_c_q[XB-1:3]);
+        k_pos_q  <= s1_c_q[2:0];
+      end else if (state_q == HORZ) begin
+        k_slot_q <= wslot_q;
+        k_grp_q  <= hg_q;
+        k_pos_q  <= 3'(hm_q);
+      end
+      // The row is complete with its last horizontal entry.
+      k_done_q  <= state_q == HORZ && c_q == XB'(BLOCK - 1);
+      k_slot2_q <= wslot_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
-    if (state_q == VERT || state_q == HORZ)
-      k_win_q <= state_q == HORZ ? hwindow(hrow_q, c_q) : vwindow(column, r_q);
+    if (s1_q) hrow_q[32'(s1_c_q)*PW +: PW] <= centre_pixel(column, s1_r_q);
+    if (s1_q) k_win_q <= vwindow(column, s1_r_q);
+    else if (state_q == HORZ) k_win_q <= hwindow(hrow_q, c_q);
   end
 
-  // Stage 2: distances, codes, one weight-buffer entry.
+  // ---- Weight buffers: two row slots, one word per aggregator read -----------------
+  // Vertical: word (slot, group of LANES columns); horizontal: word (slot, group
+  // of HAGG pixels). Stage 2 writes one entry of a word a cycle.
+  logic [LANES*ENTRY-1:0] vbuf_q [2*VGRP];
+  logic [HAGG*ENTRY-1:0]  hbuf_q [2*HGRP];
+  localparam int VAB = $clog2(2 * VGRP);
+  localparam int HAB = $clog2(2 * HGRP);
+
   always_ff @(posedge clk_i) begin
     if (k_vert_q || k_horz_q) begin : p_kernel
       logic [ENTRY-1:0] codes;  // one kernel for both passes
       codes = weight_codes(k_win_q, thr_i);
       if (k_vert_q)
-        vbuf_q[(32'(k_bank_q)*BLOCK + 32'(k_r_q))*VGRP + 32'(k_c_q) / LANES]
-              [(32'(k_c_q) % LANES)*ENTRY +: ENTRY] <= codes;
+        vbuf_q[VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q))][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
       else
-        hbuf_q[(32'(k_bank_q)*BLOCK + 32'(k_r_q))*HGRP + 32'(k_c_q) / HAGG]
-              [(32'(k_c_q) % HAGG)*ENTRY +: ENTRY] <= codes;
+        hbuf_q[HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q))][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      wv_o <= '0;
-      wh_o <= '0;
-    end else begin
-      if (vrd_en_i) wv_o <= vbuf_q[(32'(vrd_bank_i)*BLOCK + 32'(vrd_row_i))*VGRP + 32'(vrd_col_i) / LANES];
-      if (hrd_en_i) wh_o <= hbuf_q[(32'(hrd_bank_i)*BLOCK + 32'(hrd_row_i))*HGRP + 32'(hrd_col_i) / HAGG];
+  always_ff @(posedge clk_i) begin
+    if (vrd_en_i) wv_o <= vbuf_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
+    if (hrd_en_i) wh_o <= hbuf_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
+  end
+
+`ifndef SYNTHESIS
+  // Invariants, checked in simulation.
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(row_take_i && !row_ready_o))
+        else $error("weight_gen: a row was taken before it was ready");
+      assert (!(vrd_en_i && !occ_q[vrd_slot_i]) && !(hrd_en_i && !occ_q[hrd_slot_i]))
+        else $error("weight_gen: read of a free row slot");
+      assert (!(cfg_valid_i && !cfg_ready_o))
+        else $error("weight_gen: a window was configured while the previous one waits");
     end
   end
+`endif
 
 endmodule
 

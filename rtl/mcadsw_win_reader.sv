@@ -1,7 +1,7 @@
 // Window reader: one requestor of the memory controller (Sec. V-E). Streams a
 // read window of PLANES 8-bit planes to a census transformer or the weight
-// generator in the strip order they take (for each plane, for each strip of 4
-// columns, rows 0 .. ROWS-1; byte b = column x0 + 4s + b), reading external
+// generator in the strip order they take (for each strip of 4 columns, for
+// each plane, rows 0 .. ROWS-1; byte b = column x0 + 4s + b), reading external
 // memory at clamped coordinates (docs/algorithm.md section 2): pixel (x, y) of
 // the window is image pixel (clamp(x0 + x), clamp(y0 + y)).
 //
@@ -76,12 +76,12 @@ module mcadsw_win_reader #(
       row = row + RB'(1);
     end else begin
       row = '0;
-      if (strip != strips - SB'(1)) begin
-        strip = strip + SB'(1);
+      if (plane != PB'(PLANES - 1)) begin
+        plane = plane + PB'(1);
       end else begin
-        strip = '0;
-        if (plane == PB'(PLANES - 1)) done = 1'b1;
-        else plane = plane + PB'(1);
+        plane = '0;
+        if (strip != strips - SB'(1)) strip = strip + SB'(1);
+        else done = 1'b1;
       end
     end
     next_pos = {done, plane, strip, row};

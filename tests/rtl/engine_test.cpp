@@ -96,7 +96,7 @@ TEST(Engine, ResetInMidFrameThenCleanFrames) {
   std::vector<sim::Frame> frames;
   frames.push_back({test::random_yuv(41, 23, rng), test::random_yuv(41, 23, rng), cfg});
   frames.push_back({test::random_yuv(20, 30, rng), test::random_yuv(20, 30, rng), cfg});
-  for (long at : {50L, 4000L, 15000L}) {
+  for (long at : {50L, 4000L, 11000L}) {
     SCOPED_TRACE("reset after " + std::to_string(at) + " cycles");
     for (const EngineResult& r :
          sim::run_frames(frames, {}, {sim::Fault::kResetMidFrame, at}))
