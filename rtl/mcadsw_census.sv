@@ -9,35 +9,43 @@
 // start at the aligned memory word left of the window, cfg_ofs_i (0..3)
 // columns early, so that each strip word is one memory read; there are
 // STRIPS = (COLS + 4 + 3 + 3) / 4 of them. The memory side reads at clamped
-// coordinates, so every pixel has a value.
+// coordinates, so every pixel has a value. Only strips cfg_first_i .. STRIPS-1
+// arrive: a block that continues its left neighbour (cfg_cont_i) receives the
+// strips the neighbour's window lacks (partial column reuse, Sec. IV); the
+// first block of a row band skips the strips left of the first one the kernel
+// needs (those wholly left of image column -2).
 //
-// Input buffer: 8 banks of luma column words (column p in bank p % 8), filled
-// through a staging register that collects a strip and writes 4 whole columns.
-// It is circular over NSTRIP strips (partial column reuse, Sec. IV): the
-// window's strip s lives in buffer strip (base + s) mod NSTRIP, and a block
-// that continues the previous one 18 columns to the right (cfg_first_i > 0)
-// advances base by the strips its aligned origin moved (STRIPS - cfg_first_i)
-// and receives only strips cfg_first_i .. STRIPS-1; the others are the
-// previous block's, already in the buffer. cfg_first_i = 0 loads a whole window.
+// Input buffer: a ring of LS strips of luma column words (a power of 2; column
+// p of the ring in sub-bank p % 8, 8 sub-banks), filled through a staging
+// register that collects a strip and writes 4 whole columns. Window strip s
+// lives in ring strip (base + s) mod LS; base advances by the strips the
+// window origin moved, so along a row band the ring is one stream of strips
+// and a continuing block finds the neighbour's last strips in it. The kernel
+// runs while the strips arrive: a strip is written only when the kernel no
+// longer needs the ring strip it replaces, and a census column is computed
+// once its 5 luma columns are in.
 //
-// Kernel: one column of ROWS codes a cycle, COLS + 1 cycles a block. Position
-// (i, j) of the census buffer receives the code of the nearest in-image
-// position (clamp(i, lo_x, hi_x), clamp(j, lo_y, hi_y)): the border rule of
-// docs/algorithm.md, applied once, when the buffer is written.
+// Kernel: one column of ROWS codes a cycle. Position (i, j) of the census
+// buffer receives the code of the nearest in-image position (clamp(i, lo_x,
+// hi_x), clamp(j, lo_y, hi_y)): the border rule of docs/algorithm.md, applied
+// once, when the buffer is written. Columns left of lo_x are computed from the
+// luma of column lo_x; columns right of hi_x repeat the last computed column
+// (column hi_x, or for a continuing block whose new columns are all right of
+// the image, the neighbour's last column, which is column hi_x's code), so the
+// kernel never needs luma strips behind the stream.
 //
 // Census buffer: a ring of RING census columns (COLS + BLOCK, rounded up to a
 // multiple of 8), each a column word of ROWS codes, in 8 sub-banks (ring
 // column q in sub-bank q % 8), so the read port's LANES consecutive columns
 // come from distinct sub-banks; it delivers LANES columns x WINDOW rows a
-// cycle (Fig. 12). Each block's window starts BLOCK ring columns after the
-// previous block's. Census codes depend only on the (clamped) image position,
-// so a block that continues its left neighbour (cfg_first_i > 0) shares the
-// neighbour's last COLS - BLOCK columns and the kernel computes only its BLOCK
-// new ones (partial column reuse, Sec. IV), into ring columns the block before
-// the neighbour used: the scheduler prepares a block only after that one has
-// left the aggregator. A block that does not continue its neighbour (the
-// first of a row band) writes all COLS columns, over the neighbour's, so its
-// kernel waits until the neighbour has left the aggregator (ring_free_i).
+// cycle (Fig. 12). A block that continues its left neighbour starts BLOCK ring
+// columns after it, shares the neighbour's last COLS - BLOCK columns (codes
+// depend only on the clamped image position) and computes only its BLOCK new
+// ones, into ring columns the block before the neighbour used: the scheduler
+// prepares a block only after that one has left the aggregator. The first
+// block of a row band starts COLS ring columns after the previous block, so
+// its first RING - COLS columns land in free ring columns; for the others its
+// kernel waits until the previous block has left the aggregator (ring_free_i).
 // The read port names a block by the bank the scheduler gave it (rd_bank_i,
 // two blocks in flight): the ring position of each bank's window is kept.
 `default_nettype none
@@ -51,7 +59,8 @@ module mcadsw_census #(
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter int BANKS  = 2,
   parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
-  parameter int SB     = $clog2(STRIPS),
+  parameter int LS     = 4,                        // luma ring strips (a power of 2)
+  parameter int SB     = $clog2(STRIPS + 1),
   parameter int XB     = $clog2(COLS),             // column index width
   parameter int RING   = (COLS + BLOCK + 7) / 8 * 8,  // census buffer columns
   parameter int QB     = $clog2(RING),             // ring column index width
@@ -69,7 +78,8 @@ module mcadsw_census #(
   input  logic [YB-1:0]              cfg_lo_y_i,
   input  logic [YB-1:0]              cfg_hi_y_i,
   input  logic [1:0]                 cfg_ofs_i,   // window column 0 is input column cfg_ofs_i
-  input  logic [SB-1:0]              cfg_first_i, // first strip delivered (0: whole window)
+  input  logic                       cfg_cont_i,  // the block continues its left neighbour
+  input  logic [SB-1:0]              cfg_first_i, // first strip delivered
   input  logic                       ring_free_i, // the previous block has left the aggregator
   // Luma words of the window
   input  logic                       pix_valid_i,
@@ -86,16 +96,18 @@ module mcadsw_census #(
 );
 
   localparam int SUB    = 8;                       // sub-banks (columns)
-  localparam int LCOLS  = COLS + 4;                // luma columns of the window
   localparam int LROWS  = ROWS + 4;
-  localparam int NSTRIP = STRIPS + STRIPS % 2;     // buffer strips: 4 NSTRIP columns, a multiple of SUB
-  localparam int LDEPTH = NSTRIP * 4 / SUB;         // luma words per sub-bank
+  localparam int LSB    = $clog2(LS);
+  localparam int LCB    = $clog2(4 * LS);          // ring luma column index
+  localparam int LDEPTH = LS * 4 / SUB;            // luma words per sub-bank
   localparam int CDEPTH = RING / SUB;              // census words per sub-bank
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
+  localparam int KB     = $clog2(COLS + 4);        // luma column index in the window
 
-  if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < LCOLS + 3 || COLS < BLOCK ||
-      RING % SUB != 0 || RING < COLS + BLOCK) begin : g_bad_param
+  if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
+      RING % SUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
+      LDEPTH < 2) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -105,7 +117,7 @@ module mcadsw_census #(
   endfunction
 
   // ---- Control ----------------------------------------------------------------------
-  typedef enum logic [2:0] {IDLE, LOAD, WAIT, KERNEL, FLUSH, FLUSH2} state_e;
+  typedef enum logic [1:0] {IDLE, RUN, FLUSH, FLUSH2} state_e;
   state_e        state_q;
   logic          cont_q;         // the block continues its left neighbour
   logic [QB-1:0] cpos_q;         // ring column of the block's window column 0
@@ -113,53 +125,86 @@ module mcadsw_census #(
   logic [XB-1:0] lo_x_q, hi_x_q;
   logic [YB-1:0] lo_y_q, hi_y_q;
   logic [1:0]    ofs_q;
-  logic [SB-1:0] base_q;         // buffer strip of window strip 0
-  logic [XB-1:0] ki_q;           // census column the kernel writes
+  logic [LSB-1:0] base_q;        // ring strip of window strip 0
+  logic [XB-1:0] ki_q;           // census column the kernel computes next
+  logic          kfin_q;         // the kernel has issued its last column
+  logic          loaded_q;       // the whole window has arrived
+  logic [SB-1:0] wcnt_q;         // window strips in the ring (strips < wcnt_q)
   logic          pix_fire;
 
+  // The kernel's current column and the luma it needs: window luma columns
+  // lk .. lk + 4, lk = ofs + clamp(ki, lo_x, ...), in window strips lk/4 .. lk/4 + 1.
+  logic [XB-1:0] ic;
+  logic [KB-1:0] lk;
+  logic          need_luma;      // ki <= hi_x: the column is computed, not repeated
+  logic          luma_ok, ring_ok, issue;
+  assign ic        = (ki_q < lo_x_q) ? lo_x_q : ki_q;
+  assign lk        = KB'(ofs_q) + KB'(ic);
+  assign need_luma = ki_q <= hi_x_q;
+  assign luma_ok   = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
+  // A band-start block's columns from RING - COLS on are the previous block's.
+  assign ring_ok   = cont_q || ring_free_i || 32'(ki_q) < RING - COLS;
+  assign issue     = state_q == RUN && !kfin_q && luma_ok && ring_ok;
+
+  // A strip may be written when the kernel no longer needs the ring strip it
+  // replaces (window strip s - LS): all strips from lk/4 on are still needed.
+  logic [SB-1:0] in_strip;       // strip of the word being accepted
+  logic          strip_end, win_done;
+  logic          may_write;
+  assign may_write   = kfin_q || !need_luma || 32'(in_strip) < 32'(lk[KB-1:2]) + LS;
   assign cfg_ready_o = state_q == IDLE;
   assign busy_o      = state_q != IDLE;
-  assign pix_ready_o = state_q == LOAD;
+  assign pix_ready_o = state_q == RUN && !loaded_q && may_write;
   assign pix_fire    = pix_valid_i && pix_ready_o;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      state_q <= IDLE;
-      cont_q  <= 1'b0;
-      cpos_q  <= '0;
-      bpos_q  <= '0;
-      lo_x_q  <= '0;
-      hi_x_q  <= '0;
-      lo_y_q  <= '0;
-      hi_y_q  <= '0;
-      ofs_q   <= '0;
-      base_q  <= '0;
-      ki_q    <= '0;
-      done_o  <= 1'b0;
+      state_q  <= IDLE;
+      cont_q   <= 1'b0;
+      cpos_q   <= '0;
+      bpos_q   <= '0;
+      lo_x_q   <= '0;
+      hi_x_q   <= '0;
+      lo_y_q   <= '0;
+      hi_y_q   <= '0;
+      ofs_q    <= '0;
+      base_q   <= '0;
+      ki_q     <= '0;
+      kfin_q   <= 1'b0;
+      loaded_q <= 1'b0;
+      wcnt_q   <= '0;
+      done_o   <= 1'b0;
     end else begin
       done_o <= 1'b0;
       case (state_q)
         IDLE: if (cfg_valid_i) begin
-          state_q <= LOAD;
-          cont_q  <= cfg_first_i != '0;
-          cpos_q  <= QB'(wrap(32'(cpos_q) + BLOCK, RING));
-          bpos_q[32'(cfg_bank_i)*QB +: QB] <= QB'(wrap(32'(cpos_q) + BLOCK, RING));
-          lo_x_q  <= cfg_lo_x_i;
-          hi_x_q  <= cfg_hi_x_i;
-          lo_y_q  <= cfg_lo_y_i;
-          hi_y_q  <= cfg_hi_y_i;
-          ofs_q   <= cfg_ofs_i;
-          base_q  <= SB'(wrap(32'(base_q) + STRIPS - 32'(cfg_first_i), NSTRIP));
-        end
-        LOAD: if (win_done) begin
+          logic [QB-1:0] np;
+          // Continuing: BLOCK columns on; band start: after the previous window.
+          np = QB'(wrap(32'(cpos_q) + (cfg_cont_i ? BLOCK : COLS), RING));
+          state_q  <= RUN;
+          cont_q   <= cfg_cont_i;
+          cpos_q   <= np;
+          bpos_q[32'(cfg_bank_i)*QB +: QB] <= np;
+          lo_x_q   <= cfg_lo_x_i;
+          hi_x_q   <= cfg_hi_x_i;
+          lo_y_q   <= cfg_lo_y_i;
+          hi_y_q   <= cfg_hi_y_i;
+          ofs_q    <= cfg_ofs_i;
+          base_q   <= LSB'(32'(base_q) + STRIPS - 32'(cfg_first_i));
           // A continuing block computes only its BLOCK new columns.
-          state_q <= (cont_q || ring_free_i) ? KERNEL : WAIT;
-          ki_q    <= cont_q ? XB'(COLS - BLOCK) : '0;
+          ki_q     <= cfg_cont_i ? XB'(COLS - BLOCK) : '0;
+          kfin_q   <= 1'b0;
+          loaded_q <= 1'b0;
+          wcnt_q   <= cfg_first_i;
         end
-        WAIT: if (ring_free_i) state_q <= KERNEL;
-        KERNEL: begin
-          if (ki_q == XB'(COLS - 1)) state_q <= FLUSH;
-          else ki_q <= ki_q + XB'(1);
+        RUN: begin
+          if (issue) begin
+            if (ki_q == XB'(COLS - 1)) kfin_q <= 1'b1;
+            else ki_q <= ki_q + XB'(1);
+          end
+          if (pix_fire && strip_end) wcnt_q <= wcnt_q + SB'(1);
+          if (pix_fire && win_done) loaded_q <= 1'b1;
+          if (kfin_q && loaded_q) state_q <= FLUSH;
         end
         FLUSH: state_q <= FLUSH2;  // the last column is read and computed
         FLUSH2: begin              // and written
@@ -172,8 +217,6 @@ module mcadsw_census #(
   end
 
   // ---- Input buffer -------------------------------------------------------------------
-  logic [SB-1:0]     in_strip;         // strip of the word being accepted
-  logic              strip_end, win_done;
   logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
   logic              in_plane_unused;
 
@@ -190,44 +233,33 @@ module mcadsw_census #(
     .cols_o  (strip_cols)
   );
 
-
-  // Luma input columns the kernel reads: lc .. lc + 4 (mod 4 NSTRIP), where
-  // lc = 4 base + ofs + clamp(ki, lo_x, hi_x) (census position i needs window
-  // luma columns i .. i+4).
-  // Index arithmetic in narrow unsigned vectors: the sub-bank of a column is
-  // its low 3 bits, its word the rest, wrapped by one compare-subtract (no
-  // division or modulo by a constant that is not a power of two).
-  localparam int LB = $clog2(4 * NSTRIP + SUB);   // luma column index, room for + 7
-  logic [XB-1:0]      ic;
-  logic [LB-1:0]      lc;
+  // Ring luma columns the kernel reads: lc .. lc + 4 (mod 4 LS), lc = 4 base + lk.
+  // Index arithmetic in narrow unsigned vectors: the ring is a power of 2, the
+  // sub-bank of a column is its low 3 bits, its word the rest.
+  logic [LCB-1:0]     lc;
   logic [SUB*LW-1:0]  lsub_q;         // the word each sub-bank read (synchronous read)
-  logic [SB-1:0]      wstrip;         // buffer strip of the finished input strip
-  assign ic = (ki_q < lo_x_q) ? lo_x_q : (ki_q > hi_x_q) ? hi_x_q : ki_q;
-  assign lc = LB'(wrap(4*32'(base_q) + 32'(ofs_q) + 32'(ic), 4*NSTRIP));
-  assign wstrip = SB'(wrap(32'(base_q) + 32'(in_strip), NSTRIP));
+  logic [LSB-1:0]     wstrip;         // ring strip of the finished input strip
+  assign lc     = LCB'({base_q, 2'b00}) + LCB'(lk);
+  assign wstrip = base_q + LSB'(in_strip);
 
   for (genvar b = 0; b < SUB; b++) begin : g_lsub
-    // Buffer strip t holds columns 4t .. 4t+3: sub-bank b receives column
+    // Ring strip t holds columns 4t .. 4t+3: sub-bank b receives column
     // 4t + (b % 4) when t has the parity of b / 4.
     logic [LW-1:0] wr_col;
     assign wr_col = strip_cols[(b % 4)*LW +: LW];
 
     logic [LW-1:0] mem_q [LDEPTH];
     always_ff @(posedge clk_i) begin
-      if (strip_end && wstrip[0] == 1'(b / 4)) mem_q[wstrip[SB-1:1]] <= wr_col;
+      if (pix_fire && strip_end && wstrip[0] == 1'(b / 4)) mem_q[wstrip[LSB-1:1]] <= wr_col;
     end
     // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
     // Its word: that of lc, or the next one when b is below lc's sub-bank.
-    localparam int LWB = $clog2(LDEPTH + 1);
-    logic [LWB-1:0] pw;
     logic [3:0]     bd;                  // b - (lc mod 8); bit 3: the borrow, b below it
     logic [2:0]     bd_unused;
     assign bd = 4'(b) - {1'b0, lc[2:0]};
     assign bd_unused = bd[2:0];
-    assign pw = LWB'(lc[LB-1:3]) + LWB'(bd[3]);
     always_ff @(posedge clk_i) begin
-      if (state_q == KERNEL)
-        lsub_q[b*LW +: LW] <= mem_q[$clog2(LDEPTH)'(pw >= LWB'(LDEPTH) ? pw - LWB'(LDEPTH) : pw)];
+      if (issue) lsub_q[b*LW +: LW] <= mem_q[(LCB - 3)'(lc[LCB-1:3] + (LCB - 3)'(bd[3]))];
     end
   end
 
@@ -266,20 +298,23 @@ module mcadsw_census #(
   endfunction
 
   // Pipeline: cycle 1 reads the luma columns of census column ki, cycle 2
-  // computes its codes into col_q, cycle 3 writes them.
-  logic           rd_valid_q, col_valid_q;
+  // computes its codes into col_q (or keeps col_q: a column right of hi_x),
+  // cycle 3 writes them.
+  logic           rd_valid_q, rd_fresh_q, col_valid_q;
   logic [XB-1:0]  rd_ki_q, col_ki_q;
   logic [2:0]     rd_lc_q;        // lc mod 8: the sub-bank of the first luma column
   logic [CWB-1:0] col_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rd_valid_q  <= 1'b0;
+      rd_fresh_q  <= 1'b0;
       rd_ki_q     <= '0;
       rd_lc_q     <= '0;
       col_valid_q <= 1'b0;
       col_ki_q    <= '0;
     end else begin
-      rd_valid_q  <= state_q == KERNEL;
+      rd_valid_q  <= issue;
+      rd_fresh_q  <= need_luma;
       rd_ki_q     <= ki_q;
       rd_lc_q     <= 3'(lc);
       col_valid_q <= rd_valid_q;
@@ -287,7 +322,7 @@ module mcadsw_census #(
     end
   end
   always_ff @(posedge clk_i) begin
-    if (rd_valid_q) col_q <= census_column(lsub_q, 32'(rd_lc_q), lo_y_q, hi_y_q);
+    if (rd_valid_q && rd_fresh_q) col_q <= census_column(lsub_q, 32'(rd_lc_q), lo_y_q, hi_y_q);
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
@@ -339,6 +374,17 @@ module mcadsw_census #(
     assign col = sub_word(csub_rd, rd_rot_q + 3'(l));
     assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
   end
+
+`ifndef SYNTHESIS
+  // The kernel never reads a ring strip the stream has overwritten: the
+  // strips it needs, lk/4 .. (lk+4)/4, are the last LS written at most.
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(issue && need_luma && 32'(lk[KB-1:2]) + LS < 32'(wcnt_q)))
+        else $error("census: column %0d needs a luma strip the ring no longer holds", ki_q);
+    end
+  end
+`endif
 
 endmodule
 

@@ -231,8 +231,16 @@ module mcadsw_top #(
   endfunction
   logic               prep_cont;
   logic [5:0]         l_first, r_first, w_first;
-  assign l_first = first_strip(lx_in[1:0], prep_cont, LSTRIPS);
-  assign r_first = first_strip(rx_in[1:0], prep_cont, RSTRIPS);
+  // The census windows of the first block of a row band skip the strips left of
+  // the one holding image column -2, the leftmost luma the codes of column 0
+  // need (the kernels compute the columns left of the image from column 0).
+  logic signed [CW:0] lx_skip, rx_skip;   // image column -2, relative to the aligned origin
+  assign lx_skip = -(CW + 1)'(2) - lx_al;
+  assign rx_skip = -(CW + 1)'(2) - rx_al;
+  assign l_first = prep_cont ? first_strip(lx_in[1:0], 1'b1, LSTRIPS) :
+                   (lx_skip > 0) ? 6'(lx_skip >>> 2) : 6'd0;
+  assign r_first = prep_cont ? first_strip(rx_in[1:0], 1'b1, RSTRIPS) :
+                   (rx_skip > 0) ? 6'(rx_skip >>> 2) : 6'd0;
   // The weight window of the first block of a row band (x0 = -15) skips the
   // strips wholly left of the image; the weight generator replicates column 0.
   logic signed [CW:0] wx_neg;
@@ -337,7 +345,8 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (lx_in[1:0]), .cfg_first_i (4'(l_first)), .ring_free_i (!agg_active),
+    .cfg_ofs_i (lx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (4'(l_first)),
+    .ring_free_i (!agg_active),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
     .done_o (cl_done), .busy_o (cl_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
@@ -349,7 +358,8 @@ module mcadsw_top #(
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
     .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (rx_in[1:0]), .cfg_first_i (5'(r_first)), .ring_free_i (!agg_active),
+    .cfg_ofs_i (rx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (5'(r_first)),
+    .ring_free_i (!agg_active),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),

@@ -40,6 +40,7 @@ class CensusBench {
     top_->pix_valid_i = 0;
     top_->rd_en_i = 0;
     top_->ring_free_i = 1;
+    top_->cfg_cont_i = 0;
     top_->eval();
     tick();
     tick();
@@ -48,9 +49,12 @@ class CensusBench {
 
   // Fills `bank` from `luma` with random input stalls; returns the cycles used.
   // `cont`: the window continues the previous fill's, 18 columns to the right,
-  // and only the strips the input buffer does not hold yet are streamed.
+  // and only the strips the input buffer does not hold yet are streamed;
+  // otherwise (the first block of a row band) the strips left of the first one
+  // the kernel needs are skipped, as the engine does.
   // `expect_done` false: the fill must stop short of done (a band-start block
-  // whose ring is not free yet); the kernel then waits.
+  // whose ring is not free yet); the kernel then waits, and so does the input
+  // once the luma ring is full; finish() streams the rest.
   long fill(const Plane& luma, Window w, int bank, double stall_prob, std::mt19937& rng,
             bool cont = false, bool expect_done = true) {
     auto& t = *top_;
@@ -68,8 +72,13 @@ class CensusBench {
     t.cfg_lo_y_i = lo_y;
     t.cfg_hi_y_i = hi_y;
     const int strips = (cols_ + 4 + 6) / 4;
-    const int first_strip = sim::first_strip(w.x0 - 2, cont, strips);
+    // Band start: the first strip is the one holding image column -2 (the
+    // leftmost luma the codes of column 0 need).
+    const int aligned0 = (w.x0 - 2) - ((((w.x0 - 2) % 4) + 4) % 4);
+    const int skip = aligned0 <= -2 ? (-2 - aligned0) / 4 : 0;
+    const int first_strip = cont ? sim::first_strip(w.x0 - 2, cont, strips) : skip;
     t.cfg_first_i = first_strip;
+    t.cfg_cont_i = cont;
     t.eval();
     EXPECT_TRUE(t.cfg_ready_o);
     tick();
@@ -87,24 +96,26 @@ class CensusBench {
           v |= uint32_t(luma.clamped(aligned + 4 * s + b, w.y0 - 2 + u)) << (8 * b);
         words.push_back(v);
       }
-    const long limit = 20L * kRows * cols_ + 10000;  // never hang
+    const long limit = expect_done ? 20L * kRows * cols_ + 10000 : 5000;  // never hang
     const sim::StreamResult r = sim::stream_words(t, words, stall_prob, rng, limit);
-    EXPECT_EQ(r.consumed, words.size()) << "not every input word was consumed";
     EXPECT_EQ(r.done_pulses, expect_done ? 1 : 0) << "done must pulse exactly once, when the ring is free";
+    if (expect_done) {
+      EXPECT_EQ(r.consumed, words.size()) << "not every input word was consumed";
+    } else {
+      pending_.assign(words.begin() + long(r.consumed), words.end());
+    }
     return r.cycles;
   }
 
-  // Clock cycles until done_o; -1 if it does not come within `limit`.
-  long wait_done(long limit) {
-    for (long n = 0; n < limit; ++n) {
-      top_->clk_i = 0;
-      top_->eval();
-      if (top_->done_o) return n;
-      top_->clk_i = 1;
-      top_->eval();
-    }
-    return -1;
+  // Streams the words a fill with expect_done false left; done must follow.
+  long finish(std::mt19937& rng) {
+    const sim::StreamResult r = sim::stream_words(*top_, pending_, 0.0, rng, 20000);
+    EXPECT_EQ(r.consumed, pending_.size()) << "not every input word was consumed";
+    EXPECT_EQ(r.done_pulses, 1) << "done must pulse exactly once";
+    pending_.clear();
+    return r.cycles;
   }
+
   V& top() { return *top_; }
 
   // Reads every position of `bank` and compares it with the reference.
@@ -140,6 +151,7 @@ class CensusBench {
  private:
   void tick() { sim::tick(*top_); }
   int cols_;
+  std::vector<uint32_t> pending_;
   std::unique_ptr<V> top_ = std::make_unique<V>();
 };
 
@@ -229,23 +241,38 @@ TEST(Census, RightPreviousBlockSurvivesTheNextBlocksColumns) {
 }
 
 // A block that does not continue its neighbour (the first of a row band)
-// rewrites the whole window over the neighbour's ring columns: its kernel waits
-// for ring_free_i, and until then the neighbour's codes stay readable.
-TEST(Census, BandStartWaitsUntilTheRingIsFree) {
-  std::mt19937 rng(12);
+// writes its window after the neighbour's in the ring: its first RING - COLS
+// columns before, the others only after ring_free_i; until then the
+// neighbour's codes stay readable. The neighbour is a band start too here
+// (both at bx = 0), so the ring positions of two band starts in a row count.
+template <typename V>
+void band_start_waits(int cols, Window (*window)(int, int), uint32_t seed) {
+  std::mt19937 rng(seed);
   const Plane a = test::random_plane(80, 60, rng), b = test::random_plane(80, 60, rng);
-  CensusBench<Vcensus_l> bench(kColsLeft);
-  bench.fill(a, left_window(18, 0), 0, 0.0, rng);
-  bench.top().ring_free_i = 0;
-  bench.fill(b, left_window(0, 18), 1, 0.0, rng, false, false);
-  EXPECT_TRUE(bench.top().busy_o) << "the band-start block did not wait for the ring";
-  long compared = 0;
-  std::string err = bench.check(a, left_window(18, 0), 0, &compared);
-  EXPECT_TRUE(err.empty()) << "while waiting: " << err;
-  bench.top().ring_free_i = 1;
-  EXPECT_GE(bench.wait_done(1000), 0) << "no done after the ring became free";
-  err = bench.check(b, left_window(0, 18), 1, &compared);
-  EXPECT_TRUE(err.empty()) << err;
+  CensusBench<V> bench(cols);
+  bench.fill(a, window(0, 0), 0, 0.0, rng);
+  bench.fill(a, window(18, 0), 1, 0.0, rng, true);
+  for (int by : {18, 36}) {
+    const Window prev = by == 18 ? window(18, 0) : window(0, 18);
+    const int bank = by == 18 ? 0 : 1;
+    const Plane& img = by == 18 ? b : a;
+    bench.top().ring_free_i = 0;
+    bench.fill(img, window(0, by), bank, 0.0, rng, false, false);
+    EXPECT_TRUE(bench.top().busy_o) << "the band-start block did not wait for the ring";
+    long compared = 0;
+    std::string err = bench.check(by == 18 ? a : b, prev, 1 - bank, &compared);
+    EXPECT_TRUE(err.empty()) << "while waiting: " << err;
+    bench.top().ring_free_i = 1;
+    bench.finish(rng);
+    err = bench.check(img, window(0, by), bank, &compared);
+    EXPECT_TRUE(err.empty()) << "band start at y " << by << ": " << err;
+  }
+}
+
+TEST(Census, LeftBandStartWaitsUntilTheRingIsFree) { band_start_waits<Vcensus_l>(kColsLeft, left_window, 12); }
+
+TEST(Census, RightBandStartWaitsUntilTheRingIsFree) {
+  band_start_waits<Vcensus_r>(kColsRight, right_window, 13);
 }
 
 // Partial column reuse: a row band of blocks, each block after the first

@@ -96,7 +96,9 @@ TEST(Engine, ResetInMidFrameThenCleanFrames) {
   std::vector<sim::Frame> frames;
   frames.push_back({test::random_yuv(41, 23, rng), test::random_yuv(41, 23, rng), cfg});
   frames.push_back({test::random_yuv(20, 30, rng), test::random_yuv(20, 30, rng), cfg});
-  for (long at : {50L, 4000L, 11000L}) {
+  // Early, in the middle and late in the first frame, whatever its length.
+  const long frame0 = sim::run_frames({frames[0]}, {}).at(0).cycles;
+  for (long at : {50L, frame0 * 2 / 5, frame0 * 9 / 10}) {
     SCOPED_TRACE("reset after " + std::to_string(at) + " cycles");
     for (const EngineResult& r :
          sim::run_frames(frames, {}, {sim::Fault::kResetMidFrame, at}))
