@@ -26,8 +26,8 @@
 # scripts/gls.sh simulates); (4) scripts/sta_netlist.sh and OpenSTA time it;
 # (5) report.md and summary.json, written last (deleted at the start).
 #
-# Outputs in OUT: elab.log, blocks/<block>/{yosys.log,netlist.v,area.txt,memories.txt,stamp},
-# blocks.txt, memories.txt, mcadsw_top_osu018.v, sta.log, sta_endpoints.log,
+# Outputs in OUT: elab.log, blocks/<block>/{yosys.log,netlist.v,area.txt,memories.txt,registers.txt,stamp},
+# blocks.txt, memories.txt, registers.txt, mcadsw_top_osu018.v, sta.log, sta_endpoints.log,
 # report.md, summary.json.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -342,6 +342,7 @@ awk '/VIOLATED/ { e = $1; b = e; sub(/\..*/, "", b); sub(/\[.*/, "", b); if (b ~
 # figures into the totals. Fig. 16 group of each block.
 : > "$out/block_figures.txt"
 : > "$out/memories.txt"
+: > "$out/registers.txt"
 while read -r label module inst base files weight; do
   d=$out/blocks/$label
   read -r s mb < "$d/cost.txt"
@@ -362,13 +363,20 @@ while read -r label module inst base files weight; do
       else grp = "other"
       printf "%s %s %d %d %d %d %s %d %d %d\n", label, m, inst, area / a + 0.5, ff, mem, grp, s, mb, cached
     }' "$d/area.txt" >> "$out/block_figures.txt"
-  for ((i = 0; i < inst; i++)); do awk -v m="$module" '{$1 = m; print}' "$d/memories.txt" >> "$out/memories.txt"; done
+  for ((i = 0; i < inst; i++)); do
+    awk -v m="$module" '{$1 = m; print}' "$d/memories.txt" >> "$out/memories.txt"
+    [ ! -f "$d/registers.txt" ] || awk -v m="$module" '{$1 = m; print}' "$d/registers.txt" >> "$out/registers.txt"
+  done
 done < "$out/blocks.txt"
 # block_figures.txt: label module instances nand2 ff mem_bits group seconds peak_MB cached
 nand2_total=$(awk '{s += $3 * $4} END {print s + 0}' "$out/block_figures.txt")
 ff_count=$(awk '{s += $3 * $5} END {print s + 0}' "$out/block_figures.txt")
 mem_bits=$(awk '{s += $5} END {print s + 0}' "$out/memories.txt")
 mem_count=$(wc -l < "$out/memories.txt")
+# memories.txt: module cell width words bits read_ports write_ports sync|async
+async_count=$(awk '$8 != "sync"' "$out/memories.txt" | wc -l)
+reg_bits=$(awk '{s += $3} END {print s + 0}' "$out/registers.txt")
+reg_count=$(wc -l < "$out/registers.txt")
 mem_kb=$(awk -v b="$mem_bits" 'BEGIN {printf "%.1f", b / 8 / 1024}')
 fmax=$(awk -v p="$period_ns" -v w="$slack" 'BEGIN {printf "%.1f", 1000 / (p - w)}')
 awk '{n[$7] += $3 * $4; f[$7] += $3 * $5; m[$7] += $3 * $6} END {for (g in n) printf "%s %d %d %d\n", g, n[g], f[g], m[g]}' \
@@ -430,6 +438,8 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "|---|---|---|"
   echo "| gates (NAND2 equivalents, memories excluded) | $nand2_total | 563k |"
   echo "| on-chip memory | $mem_bits bits = $mem_kb kB in $mem_count macros | 21.3 kB |"
+  echo "| macros with an asynchronous read port | $async_count (every other read port: address registered, data the next cycle) | |"
+  echo "| data registers of 64 bits or more (flip-flops, in the gate count) | $reg_bits bits in $reg_count registers (listed below) | |"
   echo "| flip-flops (in the gate count) | $ff_count | |"
   echo "| clock target | $clock_mhz MHz | 95 MHz |"
   echo "| worst slack (WNS) | $slack ns ($wns ns) | |"
@@ -505,14 +515,25 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   fi
   echo "## Memories (black-box macros)"
   echo
-  echo "| module | memory | width | words | bits |"
-  echo "|---|---|---|---|---|"
-  awk '{printf "| %s | %s | %d | %d | %d |\n", $1, $2, $3, $4, $5}' "$out/memories.txt"
+  echo "| module | memory | width | words | bits | read ports | write ports | read |"
+  echo "|---|---|---|---|---|---|---|---|"
+  awk '{printf "| %s | %s | %d | %d | %d | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8}' "$out/memories.txt"
+  echo
+  echo "## Data registers (flip-flops of 64 bits or more)"
+  echo
+  echo "Registers that hold image, census, weight or cost words in flip-flops rather than in a macro:"
+  echo "pipeline registers, staging registers and the buffers kept in flip-flops (docs/architecture.md"
+  echo "section 7). Their bits are in the gate count, not in the memory figure."
+  echo
+  echo "| module | register | bits |"
+  echo "|---|---|---|"
+  sort -k3,3nr "$out/registers.txt" | awk '{printf "| %s | %s | %d |\n", $1, $2, $3}'
 } > "$out/report.md.tmp"
 
 {
   printf '{"dmax": %d, "flow": "hierarchical", "nand2_eq": %d, "memory_bits": %d, "memory_kB": %s, "memory_macros": %d, ' \
     "$dmax" "$nand2_total" "$mem_bits" "$mem_kb" "$mem_count"
+  printf '"async_read_macros": %d, "data_register_bits": %d, ' "$async_count" "$reg_bits"
   printf '"flip_flops": %d, "clock_mhz": %s, "wns_ns": %s, "worst_slack_ns": %s, "fmax_mhz": %s, ' \
     "$ff_count" "$clock_mhz" "$wns" "$slack" "$fmax"
   printf '"crossing_nets": %d, "crossing_worst_transition_ns": %s, ' "$cross_n" "$cross_worst"

@@ -14,7 +14,8 @@
 # MODULE is the block module (mcadsw_top for the top's own logic, with the block
 # modules given as BLACKBOX_MODULEs: only their ports are kept). Writes in OUT_DIR:
 # synth.ys, yosys.log, time.txt, netlist.v (the block module alone), area.txt
-# (stat -liberty), memories.txt (module cell width words bits), cost.txt
+# (stat -liberty), memories.txt (module cell width words bits read_ports write_ports
+# sync|async), registers.txt (module register bits: registers of 64 bits or more), cost.txt
 # (seconds peak_MB). The caller writes the stamp after a zero exit.
 # YOSYS=<binary> selects the Yosys executable (default: yosys from PATH).
 set -euo pipefail
@@ -23,7 +24,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 module=$1; elab=$2; out=$3; period_ps=$4; lib=$5; shift 5
 yosys_bin=${YOSYS:-yosys}
 mkdir -p "$out"
-rm -f "$out/netlist.v" "$out/area.txt" "$out/memories.txt" "$out/cost.txt"
+rm -f "$out/netlist.v" "$out/area.txt" "$out/memories.txt" "$out/registers.txt" "$out/cost.txt"
 
 {
   echo "read_rtlil $elab"
@@ -37,6 +38,9 @@ hierarchy -top $module
 # Memories: listed, then replaced by black-box macros.
 tee -q -o $out/memories_list.txt select -list t:\$mem_v2
 tee -q -o $out/memories_dump.txt dump t:\$mem_v2
+# Registers of 64 bits or more (data, not control: image, census, weight and cost
+# words in flip-flops), listed so that no buffer hides in flip-flops.
+tee -q -o $out/registers_dump.txt dump t:\$*dff* r:WIDTH>=64 %i
 techmap -map $root/constraints/macro_map.v t:\$mem_v2
 synth -run fine:
 dfflibmap -liberty $lib
@@ -77,13 +81,27 @@ if grep -Eq "connect .RD_SRST [^1]*[^']1|connect .RD_SRST .[a-zA-Z]" "$out/memor
   exit 1
 fi
 
-# Memories: module/cell from `select -list`, WIDTH x SIZE from `dump` (same order).
+# Memories: module/cell from `select -list`, WIDTH x SIZE from `dump` (same order),
+# read and write ports, and whether every read port is clocked (sync) or not (async:
+# no SRAM offers it).
 awk '
   FNR == NR { if ($0 ~ /\//) { n++; split($0, p, "/"); mod[n] = p[1]; cell[n] = p[2] } next }
   /cell \$mem_v2/ { m++ }
   /parameter .WIDTH / { w[m] = $3 }
   /parameter .SIZE / { s[m] = $3 }
+  /parameter .RD_PORTS / { rp[m] = $3 }
+  /parameter .WR_PORTS / { wp[m] = $3 }
+  /parameter .RD_CLK_ENABLE / { v = $3; sub(/^[0-9]+\047/, "", v); ce[m] = v }
   END {
     if (m != n) { print "synth_block: memory count mismatch " m " " n > "/dev/stderr"; exit 1 }
-    for (i = 1; i <= m; i++) printf "%s %s %d %d %d\n", mod[i], cell[i], w[i], s[i], w[i] * s[i]
+    for (i = 1; i <= m; i++)
+      printf "%s %s %d %d %d %d %d %s\n", mod[i], cell[i], w[i], s[i], w[i] * s[i], rp[i], wp[i],
+             (ce[i] ~ /^1+$/) ? "sync" : "async"
   }' "$out/memories_list.txt" "$out/memories_dump.txt" > "$out/memories.txt"
+# Data registers: module, register (the Q signal), bits.
+awk -v mod="$module" '
+  /cell \$[a-z]*dff/ { k++; q[k] = "?" }
+  /parameter .WIDTH / && k { w[k] = $3 }
+  /connect .Q / && k { v = $3; if (v ~ /^\\/) { sub(/^\\/, "", v); q[k] = v } else q[k] = "(several)" }
+  END { for (i = 1; i <= k; i++) printf "%s %s %d\n", mod, q[i], w[i] }' \
+  "$out/registers_dump.txt" > "$out/registers.txt"

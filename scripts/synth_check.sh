@@ -2,7 +2,8 @@
 # make synth-check (CI, after make test): `make synth` (hierarchical, DMAX = 64),
 # then its summary against constraints/budget.json. Fails when the engine has more
 # NAND2 equivalents than nand2_eq_max, a worst slack at the SDC clock below
-# wns_ns_min (negative: 95 MHz missed), or more on-chip memory than memory_kB_max.
+# wns_ns_min (negative: 95 MHz missed), more on-chip memory than memory_kB_max, or
+# (when the budget sets async_read_macros_max) more macros with an asynchronous read port.
 #
 #   scripts/synth_check.sh              synthesise (incrementally), then check
 #   SUMMARY=file scripts/synth_check.sh check an existing summary only (no synthesis)
@@ -23,7 +24,8 @@ fi
 [ -f "$summary" ] || { echo "synth-check: no summary $summary" >&2; exit 1; }
 
 # Numbers of a flat JSON object ("key": number); the first occurrence is the top level.
-num() { grep -o "\"$1\": *-\?[0-9][0-9.eE+-]*" "$2" | awk 'NR == 1' | sed 's/.*: *//'; }
+# Empty when the key is absent (grep finding nothing is not an error here).
+num() { { grep -o "\"$1\": *-\?[0-9][0-9.eE+-]*" "$2" || true; } | awk 'NR == 1' | sed 's/.*: *//'; }
 nand2=$(num nand2_eq "$summary"); mem=$(num memory_kB "$summary"); slack=$(num worst_slack_ns "$summary")
 clock=$(num clock_mhz "$summary"); dmax=$(num dmax "$summary")
 max_nand2=$(num nand2_eq_max "$budget"); min_slack=$(num wns_ns_min "$budget"); max_mem=$(num memory_kB_max "$budget")
@@ -45,6 +47,13 @@ check() {   # name value op limit unit explanation
 check "gates (NAND2 eq)" "$nand2" "<=" "$max_nand2" "" "the engine exceeds the gate budget (build/synth/report.md lists the blocks)"
 check "worst slack at ${clock:-?} MHz" "$slack" ">=" "$min_slack" "ns" "timing is not met (build/synth/sta.log has the critical path, sta_endpoints.log every endpoint)"
 check "on-chip memory" "$mem" "<=" "$max_mem" "kB" "the memories exceed the budget (build/synth/report.md lists them per module)"
+# Optional: macros with an asynchronous read port (no SRAM offers one).
+max_async=$(num async_read_macros_max "$budget")
+if [ -n "$max_async" ]; then
+  async=$(num async_read_macros "$summary")
+  [ -n "$async" ] || { echo "synth-check: 'async_read_macros' missing from $summary" >&2; exit 2; }
+  check "async-read macros" "$async" "<=" "$max_async" "" "a memory is read asynchronously; real SRAMs register the address (build/synth/report.md, Memories)"
+fi
 if [ -n "$want_clock" ] && [ -n "$clock" ]; then
   awk -v a="$clock" -v b="$want_clock" 'BEGIN {exit !(a - b < 0.05 && b - a < 0.05)}' ||
     { echo "synth-check: FAILED  the SDC clock is $clock MHz, the budget is for $want_clock MHz" >&2; fail=1; }

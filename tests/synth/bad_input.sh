@@ -93,6 +93,22 @@ echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.0, "clock_mhz": 95.0, "wn
 rc=0; BUDGET=$work/budget.json SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 0 ]; then echo "ok   synth_check within budget"
 else echo "FAIL synth_check within budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+# A budget that forbids asynchronous-read macros: a summary with one fails, one
+# without the figure is an error (exit 2), one with none passes.
+echo '{"nand2_eq_max": 563000, "wns_ns_min": 0, "memory_kB_max": 57.1, "async_read_macros_max": 0, "clock_mhz": 95.0}' > "$work/budget_async.json"
+echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.0, "async_read_macros": 1, "clock_mhz": 95.0, "wns_ns": 0, "worst_slack_ns": 0.3}' > "$work/async.json"
+rc=0; BUDGET=$work/budget_async.json SUMMARY=$work/async.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 1 ] && grep -q "FAILED  async-read macros" "$work/check.out" && ! grep -q "FAILED  on-chip memory" "$work/check.out"; then
+  echo "ok   synth_check asynchronous-read macro (exit 1)"
+else echo "FAIL synth_check asynchronous-read macro (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+rc=0; BUDGET=$work/budget_async.json SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 2 ] && grep -q "async_read_macros' missing" "$work/check.out"; then
+  echo "ok   synth_check summary without the asynchronous-read count (exit 2)"
+else echo "FAIL synth_check summary without the asynchronous-read count (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+sed 's/"async_read_macros": 1/"async_read_macros": 0/' "$work/async.json" > "$work/sync.json"
+rc=0; BUDGET=$work/budget_async.json SUMMARY=$work/sync.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 0 ] && grep -q "ok      async-read macros" "$work/check.out"; then echo "ok   synth_check no asynchronous-read macro"
+else echo "FAIL synth_check no asynchronous-read macro (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
 
 if [ "$fails" -ne 0 ]; then echo "bad_input: $fails case(s) failed"; exit 1; fi
 echo "bad_input: all cases passed"
