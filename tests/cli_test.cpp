@@ -81,6 +81,52 @@ TEST_F(Cli, DisparityRangeOutOfRange) {
   expect_failure(run("match " + pair() + " -d abc -o " + out_), "must be an integer");
 }
 
+// docs/algorithm.md section 12: --lr (8-bit map and validity mask), --subpixel
+// (16-bit map of 16 x disparity), both together, and eval of a 16-bit map.
+TEST_F(Cli, LeftRightCheckAndSubpixelOutputs) {
+  const auto d = kData / "middlebury" / "tsukuba";
+  const std::string eval_args = " " + (d / "gt.png").string() + " --scale 16 --masks " + d.string();
+  const std::string mask = (dir_ / "valid.png").string();
+  CliRun m = run("match " + pair() + " -d 16 --lr --valid " + mask + " -o " + out_);
+  ASSERT_EQ(m.status, 0) << m.output;
+  const cv::Mat lr = cv::imread(out_, cv::IMREAD_UNCHANGED), v = cv::imread(mask, cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(lr.type(), CV_8UC1);
+  ASSERT_EQ(v.type(), CV_8UC1);
+  EXPECT_EQ(cv::countNonZero(v == 0) + cv::countNonZero(v == 255), v.rows * v.cols) << "mask is 0 or 255";
+  EXPECT_GT(cv::countNonZero(v == 0), 0);
+  CliRun e = run("eval " + out_ + eval_args);
+  EXPECT_NE(e.output.find("all 3.44"), std::string::npos) << e.output;
+
+  m = run("match " + pair() + " -d 16 --subpixel -o " + out_);
+  ASSERT_EQ(m.status, 0) << m.output;
+  const cv::Mat sub = cv::imread(out_, cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(sub.type(), CV_16UC1);
+  double lo, hi;
+  cv::minMaxLoc(sub, &lo, &hi);
+  EXPECT_LE(hi, 16.0 * 15);
+  e = run("eval " + out_ + eval_args + " --disp-scale 16 --threshold 0.5");
+  ASSERT_EQ(e.status, 0) << e.output;
+  EXPECT_NE(e.output.find("nonocc 9.66"), std::string::npos) << e.output;
+  e = run("eval " + out_ + eval_args);  // read as whole disparities: nearly every pixel bad
+  EXPECT_EQ(e.status, 0);
+  EXPECT_EQ(e.output.find("all 3."), std::string::npos) << e.output;
+
+  m = run("match " + pair() + " -d 16 --lr --subpixel -T 2 -o " + out_);
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_EQ(cv::imread(out_, cv::IMREAD_UNCHANGED).type(), CV_16UC1);
+}
+
+TEST_F(Cli, BadLeftRightAndEvalOptions) {
+  expect_failure(run("match " + pair() + " -d 16 --lr -T 64 -o " + out_), "out of range 0..63");
+  expect_failure(run("match " + pair() + " -d 16 --lr -T -1 -o " + out_), "out of range 0..63");
+  expect_failure(run("match " + pair() + " -d 16 -T 2 -o " + out_), "need --lr");
+  expect_failure(run("match " + pair() + " -d 16 --valid " + out_ + " -o " + out_), "need --lr");
+  const auto d = kData / "middlebury" / "tsukuba";
+  const std::string eval_args = " " + (d / "gt.png").string() + " --scale 16 --masks " + d.string();
+  expect_failure(run("eval " + (d / "gt.png").string() + eval_args + " --disp-scale 0"), "positive");
+  expect_failure(run("eval " + (d / "gt.png").string() + eval_args + " --threshold -1"), "positive");
+}
+
 TEST_F(Cli, MissingArgumentsAndUnknownOptions) {
   expect_failure(run("match " + pair() + " -o " + out_), "needs -d");
   expect_failure(run("match " + pair() + " -d 16"), "needs -o");

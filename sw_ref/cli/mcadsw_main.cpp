@@ -1,6 +1,7 @@
 // mcadsw: command-line front end of the bit-exact reference model.
-//   mcadsw match LEFT RIGHT -d D [--gamma G] [--threads N] -o OUT.png
-//   mcadsw eval DISP.png GT.png --scale S --masks DIR
+//   mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]
+//                [--gamma G] [--threads N] -o OUT.png
+//   mcadsw eval DISP.png GT.png --scale S --masks DIR [--disp-scale S] [--threshold T]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,20 +20,28 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  mcadsw match LEFT RIGHT -d D [--gamma G] [--threads N] -o OUT.png\n"
+    "  mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]\n"
+    "               [--gamma G] [--threads N] -o OUT.png\n"
     "      Disparity map of the left view (MCADSW, bit-exact with the RTL).\n"
     "      Writes the raw 8-bit map (pixel value = disparity) to OUT.png and a\n"
     "      colour-mapped view to OUT_color.png. 1 <= D <= 64; default gamma 22.\n"
-    "  mcadsw eval DISP.png GT.png --scale S --masks DIR\n"
-    "      Middlebury v2 error rates (% of pixels with |d - gt/S| > 1) over\n"
-    "      DIR/nonocc.png, DIR/all.png and DIR/disc.png.\n"
+    "      --lr: left-right check (tolerance T, 0..63, default 1), fill, 3x3 median;\n"
+    "      --valid writes the check's mask (255 valid, 0 filled). --subpixel: a\n"
+    "      16-bit map of 16 x disparity (parabolic). docs/algorithm.md section 12.\n"
+    "  mcadsw eval DISP.png GT.png --scale S --masks DIR [--disp-scale S] [--threshold T]\n"
+    "      Middlebury v2 error rates (% of pixels with |d/disp-scale - gt/S| > T,\n"
+    "      T = 1 by default) over DIR/nonocc.png, DIR/all.png and DIR/disc.png.\n"
+    "      --disp-scale 16 for the 16-bit maps of --subpixel.\n"
     "  mcadsw --help\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Splits argv into positionals and --options; every option takes one value.
+// Flags: options without a value.
+bool is_flag(const std::string& a) { return a == "--lr" || a == "--subpixel"; }
+
+// Splits argv into positionals and --options; every option but a flag takes one value.
 struct Args {
   std::vector<std::string> pos;
   std::vector<std::pair<std::string, std::string>> opts;
@@ -40,7 +49,9 @@ struct Args {
   Args(int argc, char** argv, int first) {
     for (int i = first; i < argc; ++i) {
       std::string a = argv[i];
-      if (a.size() > 1 && a[0] == '-') {
+      if (is_flag(a)) {
+        opts.emplace_back(a, "");
+      } else if (a.size() > 1 && a[0] == '-') {
         if (i + 1 >= argc) throw UsageError("option " + a + " needs a value");
         opts.emplace_back(a, argv[++i]);
       } else {
@@ -84,7 +95,8 @@ double to_double(const std::string& s, const char* what) {
 }
 
 int cmd_match(const Args& a) {
-  a.only({"-d", "--disparities", "--gamma", "--threads", "-o", "--output"});
+  a.only({"-d", "--disparities", "--gamma", "--threads", "-o", "--output", "--lr", "--subpixel",
+          "-T", "--tolerance", "--valid"});
   if (a.pos.size() != 2) throw UsageError("match needs LEFT and RIGHT images");
   const std::string* d = a.get({"-d", "--disparities"});
   const std::string* out = a.get({"-o", "--output"});
@@ -96,27 +108,58 @@ int cmd_match(const Args& a) {
   if (const std::string* g = a.get({"--gamma"}))
     cfg.table = mcadsw::make_weight_table(to_double(*g, "gamma"));
   if (const std::string* t = a.get({"--threads"})) cfg.threads = int(to_int(*t, "threads"));
+  mcadsw::DepthOptions post;
+  post.lr = a.get({"--lr"}) != nullptr;
+  post.subpixel = a.get({"--subpixel"}) != nullptr;
+  const std::string* tol = a.get({"-T", "--tolerance"});
+  const std::string* valid = a.get({"--valid"});
+  if ((tol || valid) && !post.lr) throw UsageError("-T and --valid need --lr");
+  if (tol) post.tolerance = int(to_int(*tol, "T"));
+  mcadsw::check_config(cfg, 1, 1);
+  mcadsw::check_lr_tolerance(post.tolerance);
 
   const mcadsw::YuvImage left = mcadsw::load_yuv(a.pos[0]);
   const mcadsw::YuvImage right = mcadsw::load_yuv(a.pos[1]);
-  const auto parent = std::filesystem::path(*out).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent))
-    throw std::runtime_error("output directory '" + parent.string() + "' does not exist");
+  for (const std::string* o : {out, valid}) {
+    if (!o) continue;
+    const auto parent = std::filesystem::path(*o).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+      throw std::runtime_error("output directory '" + parent.string() + "' does not exist");
+  }
 
   const auto t0 = std::chrono::steady_clock::now();
-  const mcadsw::Plane disp = mcadsw::disparity_map(left, right, cfg);
+  mcadsw::DepthResult r;
+  if (post.lr || post.subpixel) {
+    r = mcadsw::depth_map(left, right, cfg, post);
+  } else {
+    r.raw = mcadsw::disparity_map(left, right, cfg);  // the paper's raw mode
+  }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const std::string color = mcadsw::colormap_path_for(*out);
-  mcadsw::write_disparity(disp, cfg.disparities, *out, color);
-  std::printf("%dx%d D=%d: %.3f s (%.1f MDE/s) -> %s, %s\n", disp.width, disp.height,
-              cfg.disparities, s, double(disp.width) * disp.height * cfg.disparities / s / 1e6,
-              out->c_str(), color.c_str());
+  if (post.subpixel) {
+    mcadsw::write_disparity16(r.disp16, cfg.disparities, *out, color);
+  } else {
+    mcadsw::write_disparity(post.lr ? r.disp8() : r.raw, cfg.disparities, *out, color);
+  }
+  if (valid) {
+    try {
+      mcadsw::write_mask(r.valid, *valid);
+    } catch (...) {
+      std::remove(out->c_str());
+      std::remove(color.c_str());
+      throw;
+    }
+  }
+  std::printf("%dx%d D=%d%s%s: %.3f s (%.1f MDE/s) -> %s, %s%s%s\n", r.raw.width, r.raw.height,
+              cfg.disparities, post.lr ? " lr" : "", post.subpixel ? " subpixel" : "", s,
+              double(r.raw.width) * r.raw.height * cfg.disparities / s / 1e6, out->c_str(),
+              color.c_str(), valid ? ", " : "", valid ? valid->c_str() : "");
   return 0;
 }
 
 int cmd_eval(const Args& a) {
-  a.only({"--scale", "--masks"});
+  a.only({"--scale", "--masks", "--disp-scale", "--threshold"});
   if (a.pos.size() != 2) throw UsageError("eval needs DISP and GT images");
   const std::string* scale = a.get({"--scale"});
   const std::string* masks = a.get({"--masks"});
@@ -124,7 +167,12 @@ int cmd_eval(const Args& a) {
   if (!masks) throw UsageError("eval needs --masks DIR");
   const double s = to_double(*scale, "scale");
   if (!(s > 0)) throw UsageError("scale must be positive");
-  const mcadsw::ErrorRates e = mcadsw::evaluate_files(a.pos[0], a.pos[1], s, *masks);
+  mcadsw::EvalOptions opt;
+  if (const std::string* ds = a.get({"--disp-scale"})) opt.disp_scale = to_double(*ds, "disp-scale");
+  if (const std::string* th = a.get({"--threshold"})) opt.threshold = to_double(*th, "threshold");
+  if (!(opt.disp_scale > 0)) throw UsageError("disp-scale must be positive");
+  if (!(opt.threshold > 0)) throw UsageError("threshold must be positive");
+  const mcadsw::ErrorRates e = mcadsw::evaluate_files(a.pos[0], a.pos[1], s, *masks, opt);
   std::printf("nonocc %.2f\nall %.2f\ndisc %.2f\n", e.nonocc, e.all, e.disc);
   return 0;
 }

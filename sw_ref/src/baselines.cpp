@@ -26,6 +26,10 @@ cv::Ptr<cv::StereoMatcher> make_matcher(Baseline b, int d) {
   }
   const int area = 3 * kSgbmBlock * kSgbmBlock;  // 3 channels
   const int mode = b == Baseline::kSgbmHH ? cv::StereoSGBM::MODE_HH : cv::StereoSGBM::MODE_SGBM_3WAY;
+  if (b == Baseline::kSgbmLr)
+    return cv::StereoSGBM::create(0, n, kSgbmBlock, 8 * area, 32 * area, /*disp12MaxDiff=*/1,
+                                  /*preFilterCap=*/63, /*uniquenessRatio=*/10,
+                                  /*speckleWindowSize=*/100, /*speckleRange=*/2, mode);
   return cv::StereoSGBM::create(0, n, kSgbmBlock, 8 * area, 32 * area, /*disp12MaxDiff=*/-1,
                                 /*preFilterCap=*/63, /*uniquenessRatio=*/0,
                                 /*speckleWindowSize=*/0, /*speckleRange=*/0, mode);
@@ -38,6 +42,7 @@ const char* baseline_name(Baseline b) {
     case Baseline::kSgbm3Way: return "OpenCV SGBM 3WAY";
     case Baseline::kSgbmHH: return "OpenCV SGBM HH";
     case Baseline::kBm: return "OpenCV BM";
+    case Baseline::kSgbmLr: return "OpenCV SGBM 3WAY + LR check";
   }
   return "?";
 }
@@ -49,13 +54,16 @@ std::string baseline_params(Baseline b, int d) {
            ", grayscale input (BGR2GRAY), textureThreshold 0, uniquenessRatio 0, speckle filter off, "
            "disp12MaxDiff -1";
   const int area = 3 * kSgbmBlock * kSgbmBlock;
-  return range + ", blockSize " + std::to_string(kSgbmBlock) + ", P1 " + std::to_string(8 * area) +
-         ", P2 " + std::to_string(32 * area) +
-         ", colour input, preFilterCap 63, uniquenessRatio 0, speckle filter off, disp12MaxDiff -1";
+  const std::string common = range + ", blockSize " + std::to_string(kSgbmBlock) + ", P1 " +
+                             std::to_string(8 * area) + ", P2 " + std::to_string(32 * area) +
+                             ", colour input, preFilterCap 63";
+  if (b == Baseline::kSgbmLr)
+    return common + ", uniquenessRatio 10, speckleWindowSize 100, speckleRange 2, disp12MaxDiff 1";
+  return common + ", uniquenessRatio 0, speckle filter off, disp12MaxDiff -1";
 }
 
-cv::Mat baseline_disparity(Baseline b, const cv::Mat& left_bgr, const cv::Mat& right_bgr,
-                           int d) {
+cv::Mat baseline_disparity16(Baseline b, const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                             int d) {
   if (left_bgr.type() != CV_8UC3 || right_bgr.type() != CV_8UC3)
     throw std::invalid_argument("baseline views must be 8-bit BGR");
   if (left_bgr.size() != right_bgr.size() || left_bgr.empty())
@@ -73,10 +81,11 @@ cv::Mat baseline_disparity(Baseline b, const cv::Mat& left_bgr, const cv::Mat& r
   make_matcher(b, d)->compute(l, r, raw);
   raw = raw(cv::Rect(pad, 0, left_bgr.cols, left_bgr.rows));
 
-  cv::Mat out(raw.size(), CV_8UC1);
+  cv::Mat out(raw.size(), CV_16UC1);
+  const int top = 16 * (d - 1);
   for (int y = 0; y < raw.rows; ++y) {
     const int16_t* s = raw.ptr<int16_t>(y);
-    uint8_t* o = out.ptr<uint8_t>(y);
+    uint16_t* o = out.ptr<uint16_t>(y);
     int first_valid = -1;
     for (int x = 0; x < raw.cols; ++x) {
       if (s[x] >= 0) {
@@ -85,12 +94,21 @@ cv::Mat baseline_disparity(Baseline b, const cv::Mat& left_bgr, const cv::Mat& r
       }
     }
     int last = 0;
-    if (first_valid >= 0) last = std::min((s[first_valid] + 8) >> 4, d - 1);
+    if (first_valid >= 0) last = std::min<int>(s[first_valid], top);
     for (int x = 0; x < raw.cols; ++x) {
-      if (s[x] >= 0) last = std::min((s[x] + 8) >> 4, d - 1);
-      o[x] = uint8_t(last);
+      if (s[x] >= 0) last = std::min<int>(s[x], top);
+      o[x] = uint16_t(last);
     }
   }
+  return out;
+}
+
+cv::Mat baseline_disparity(Baseline b, const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                           int d) {
+  const cv::Mat s = baseline_disparity16(b, left_bgr, right_bgr, d);
+  cv::Mat out(s.size(), CV_8UC1);
+  for (int y = 0; y < s.rows; ++y)
+    for (int x = 0; x < s.cols; ++x) out.at<uint8_t>(y, x) = uint8_t(std::min((s.at<uint16_t>(y, x) + 8) >> 4, d - 1));
   return out;
 }
 

@@ -153,6 +153,12 @@ Frame make_frame(const YuvImage& left, const YuvImage& right, const Config& cfg)
   return f;
 }
 
+// Section 12.6 from the fused keys (E << kKeyShift | d) of every real d.
+uint16_t subpixel_from_keys(const uint32_t* keys, int d, int D) {
+  const auto cost = [&](int e) { return (e >= 0 && e < D) ? keys[e] >> kKeyShift : 0u; };
+  return uint16_t(subpixel_value(d, D, cost(d - 1), cost(d), cost(d + 1)));
+}
+
 // Per-worker buffers.
 struct Scratch {
   std::vector<uint8_t> ring;  // portable: kRing cost rows of W*Dp, [x][d]
@@ -183,7 +189,7 @@ int colour_dist(const uint8_t* const* taps, const int* centre, int i) {
   return s;
 }
 
-void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
+void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out, uint16_t* sub) {
   const int W = f.W, H = f.H, Dp = f.Dp, D = f.D;
   const size_t row_bytes = size_t(W) * Dp;
   s.ring.resize(kRing * row_bytes);
@@ -223,7 +229,9 @@ void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
         const uint16_t* ev = &s.ev[size_t(clampi(x + j - kRadius, W)) * Dp];
         for (int d = 0; d < Dp; ++d) acc[d] += ev[d] * w;
       }
-      out[size_t(y) * W + x] = uint8_t(*std::min_element(acc.begin(), acc.end()) & (kDmax - 1));
+      const int d = int(*std::min_element(acc.begin(), acc.end()) & (kDmax - 1));
+      out[size_t(y) * W + x] = uint8_t(d);
+      if (sub) sub[size_t(y) * W + x] = subpixel_from_keys(acc.data(), d, D);
     }
   }
 }
@@ -352,7 +360,7 @@ void cost_pairs_avx2(const Frame& f, int x, int y_begin, int n, uint8_t* pairs) 
 }
 
 template <int Dp>
-void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
+void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out, uint16_t* sub) {
   constexpr int kChunks = Dp / 32;           // full 32-d cost chunks
   constexpr bool kTail = Dp % 32 != 0;       // one 16-d chunk after them
   constexpr int kEvVecs = Dp / 16;           // Ev: 16 d per vector
@@ -472,7 +480,14 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out) {
       __m128i m4 = _mm_min_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256(m, 1));
       m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0x4E));
       m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0xB1));
-      out[size_t(y) * W + x] = uint8_t(uint32_t(_mm_cvtsi128_si32(m4)) & (kDmax - 1));
+      const int d = int(uint32_t(_mm_cvtsi128_si32(m4)) & (kDmax - 1));
+      out[size_t(y) * W + x] = uint8_t(d);
+      if (sub) {
+        alignas(32) uint32_t keys[Dp];
+        for (int a = 0; a < kKeyVecs; ++a)
+          _mm256_store_si256(reinterpret_cast<__m256i*>(keys + 8 * a), acc[a]);
+        sub[size_t(y) * W + x] = subpixel_from_keys(keys, d, f.D);
+      }
     }
   }
 }
@@ -502,7 +517,7 @@ void return_scratch(std::unique_ptr<Scratch> s) {
     scratch_pool.push_back(std::move(s));
 }
 
-using BandFn = void (*)(const Frame&, int, int, Scratch&, uint8_t*);
+using BandFn = void (*)(const Frame&, int, int, Scratch&, uint8_t*, uint16_t*);
 
 BandFn pick_kernel(int Dp, bool portable) {
 #ifdef __AVX2__
@@ -525,12 +540,14 @@ static_assert(kDmax <= 64, "the AVX2 kernel is instantiated for Dp = 16..64");
 }  // namespace
 
 Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Config& cfg,
-                         bool portable) {
+                         bool portable, Plane16* subpixel) {
   check_views(left, right);
   check_config(cfg, left.width(), left.height());
   const Frame f = make_frame(left, right, cfg);
   const BandFn band = pick_kernel(f.Dp, portable);
   Plane disp(f.W, f.H);
+  if (subpixel) *subpixel = Plane16(f.W, f.H);
+  uint16_t* sub = subpixel ? subpixel->px.data() : nullptr;
   int workers = cfg.threads > 0 ? cfg.threads : int(std::thread::hardware_concurrency());
   workers = std::clamp(workers, 1, (f.H + kBandRows - 1) / kBandRows);
   // About kBandRows rows per band, and a multiple of `workers` bands so they
@@ -543,7 +560,7 @@ Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Conf
   auto work = [&] {
     std::unique_ptr<Scratch> s = take_scratch();
     for (int b; (b = next_band.fetch_add(1)) < bands;)
-      band(f, b * rows, std::min(f.H, (b + 1) * rows), *s, disp.px.data());
+      band(f, b * rows, std::min(f.H, (b + 1) * rows), *s, disp.px.data(), sub);
     return_scratch(std::move(s));
   };
   std::vector<std::thread> pool;

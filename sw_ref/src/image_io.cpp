@@ -65,11 +65,13 @@ std::string colormap_path_for(const std::string& path) {
   return (p.parent_path() / (p.stem().string() + "_color" + p.extension().string())).string();
 }
 
-void write_disparity(const Plane& disp, int disparities, const std::string& path,
-                     const std::string& colormap_path) {
-  const cv::Mat raw = to_mat(disp);
+namespace {
+
+// Writes `raw` (8 or 16 bits) and its colour view (raw * scale, JET), both or neither.
+void write_map(const cv::Mat& raw, double scale, const std::string& path,
+               const std::string& colormap_path) {
   cv::Mat scaled, color;
-  raw.convertTo(scaled, CV_8U, disparities > 1 ? 255.0 / (disparities - 1) : 0.0);
+  raw.convertTo(scaled, CV_8U, scale);
   cv::applyColorMap(scaled, color, cv::COLORMAP_JET);
   bool ok = false;
   try {
@@ -81,6 +83,39 @@ void write_disparity(const Plane& disp, int disparities, const std::string& path
     std::remove(path.c_str());
     std::remove(colormap_path.c_str());
     throw std::runtime_error("cannot write '" + path + "' / '" + colormap_path + "'");
+  }
+}
+
+}  // namespace
+
+void write_disparity(const Plane& disp, int disparities, const std::string& path,
+                     const std::string& colormap_path) {
+  write_map(to_mat(disp), disparities > 1 ? 255.0 / (disparities - 1) : 0.0, path, colormap_path);
+}
+
+cv::Mat to_mat(const Plane16& p) {
+  cv::Mat m(p.height, p.width, CV_16UC1);
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) m.at<uint16_t>(y, x) = p.at(x, y);
+  return m;
+}
+
+void write_disparity16(const Plane16& disp, int disparities, const std::string& path,
+                       const std::string& colormap_path) {
+  write_map(to_mat(disp), disparities > 1 ? 255.0 / (kSubpixelScale * (disparities - 1)) : 0.0,
+            path, colormap_path);
+}
+
+void write_mask(const Plane& mask, const std::string& path) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path, to_mat(mask));
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (!ok) {
+    std::remove(path.c_str());
+    throw std::runtime_error("cannot write '" + path + "'");
   }
 }
 

@@ -30,6 +30,12 @@ Plane from_mat(const cv::Mat& gray8);
 // left behind: on failure, whatever was written is removed and it throws.
 void write_disparity(const Plane& disp, int disparities, const std::string& path,
                      const std::string& colormap_path);
+// 16-bit map (value = 16 x disparity, docs/algorithm.md 12.6) and its colour view.
+void write_disparity16(const Plane16& disp, int disparities, const std::string& path,
+                       const std::string& colormap_path);
+cv::Mat to_mat(const Plane16& p);  // CV_16UC1 copy
+// 8-bit mask (validity: 255 / 0). Removes a partial file and throws on failure.
+void write_mask(const Plane& mask, const std::string& path);
 std::string colormap_path_for(const std::string& path);  // out.png -> out_color.png
 
 }  // namespace mcadsw

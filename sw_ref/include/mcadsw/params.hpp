@@ -88,4 +88,10 @@ inline constexpr int kDispBits = bits_for(kDmax - 1);           // 6
 static_assert(kVertCostBits <= 16, "vertical costs are held in uint16_t");
 static_assert(kFinalCostBits <= 32, "final costs are held in uint32_t");
 
+// ---- Post-processing beyond the paper (docs/algorithm.md section 12) ---------
+inline constexpr int kLrToleranceMax = 63;     // T of the left-right check: 0..63
+inline constexpr int kLrToleranceDefault = 1;
+inline constexpr int kSubpixelScale = 16;      // sub-pixel value = 16 d + offset (OpenCV's scale)
+inline constexpr int kSubpixelOffsetMax = kSubpixelScale / 2;  // |offset| <= 8 (section 12.6)
+
 }  // namespace mcadsw

@@ -29,6 +29,18 @@ struct Plane {
   uint8_t clamped(int x, int y) const;
 };
 
+// A 16-bit plane: sub-pixel disparities, value = 16 d + offset (docs/algorithm.md 12.6).
+struct Plane16 {
+  int width = 0;
+  int height = 0;
+  std::vector<uint16_t> px;
+
+  Plane16() = default;
+  Plane16(int w, int h, uint16_t fill = 0) : width(w), height(h), px(size_t(w) * h, fill) {}
+  uint16_t at(int x, int y) const { return px[size_t(y) * width + x]; }
+  uint16_t& at(int x, int y) { return px[size_t(y) * width + x]; }
+};
+
 // YUV 4:4:4 planes of one view, as the engine reads them from external memory.
 struct YuvImage {
   Plane y, u, v;
@@ -126,7 +138,45 @@ Plane disparity_map_blocks(const YuvImage& left, const YuvImage& right, const Co
 // Whole frame at once, all disparities of a pixel together (sw_ref/src/fast.cpp,
 // docs/algorithm.md section 11). `portable` selects the plain C++ kernel even
 // where the SIMD one is compiled in, so tests can check both.
+// `subpixel`, when given, receives the sub-pixel map of section 12.6.
 Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Config& cfg,
-                         bool portable = false);
+                         bool portable = false, Plane16* subpixel = nullptr);
+
+// ---- Post-processing beyond the paper (docs/algorithm.md section 12) ----------------
+// Right view as the base (12.1): mirror(raw(mirror(right), mirror(left))). Throws
+// std::invalid_argument unless the right view's Y, U and V have the left view's size.
+Plane disparity_map_right(const YuvImage& left, const YuvImage& right, const Config& cfg);
+void check_views_lr(const YuvImage& left, const YuvImage& right);
+// 12.6: 16 d + offset from E(d-1), E(d), E(d+1) of the winner d of D disparities
+// (the costs of absent neighbours are ignored).
+int subpixel_value(int d, int disparities, uint32_t cost_minus, uint32_t cost_best,
+                   uint32_t cost_plus);
+// 12.6 from the block path's final costs (keep->final_cost[d][y*W+x]) and its map.
+Plane16 subpixel_from_costs(const Intermediates& keep, const Plane& disp, int disparities);
+// 12.2: 255 where the left pixel passes the check with tolerance T, else 0.
+// Throws std::invalid_argument for T outside 0..kLrToleranceMax or maps of different sizes.
+Plane lr_check(const Plane& disp_left, const Plane& disp_right, int tolerance);
+void check_lr_tolerance(int tolerance);
+// 12.3: invalid pixels (valid == 0) take the smaller of the nearest valid values left
+// and right in their row; 0 when the row has none.
+Plane16 fill_invalid(const Plane16& disp, const Plane& valid);
+// 12.4: 3x3 median, edges replicated.
+Plane16 median3x3(const Plane16& in);
+
+// The engine's outputs in every mode: raw (the paper), LR (12.2-12.5), sub-pixel (12.6).
+struct DepthOptions {
+  bool lr = false;
+  bool subpixel = false;
+  int tolerance = kLrToleranceDefault;
+};
+struct DepthResult {
+  Plane16 disp16;  // 16 x disparity (+ offset with subpixel), after LR processing if lr
+  Plane valid;     // lr: 255 valid, 0 filled (before the median); otherwise empty
+  Plane raw;       // the raw left map (section 6)
+  Plane right;     // lr: the right-reference map (12.1); otherwise empty
+  Plane disp8() const;  // disp16 / 16
+};
+DepthResult depth_map(const YuvImage& left, const YuvImage& right, const Config& cfg,
+                      const DepthOptions& opt);
 
 }  // namespace mcadsw
