@@ -33,7 +33,8 @@ module mcadsw_cost_agg #(
   parameter int RB     = $clog2(BLOCK),    // block row index width
   parameter int GB     = $clog2(GROUPS),   // group index width
   parameter int NB     = $clog2(DMAX + 1), // width of D
-  parameter int CLB    = $clog2(GROUPS * LANES)  // Ev column index width
+  parameter int CLB    = $clog2(GROUPS * LANES), // Ev column index width
+  parameter int SPB    = DB + 4                  // sub-pixel value: 16 d + offset
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -66,7 +67,13 @@ module mcadsw_cost_agg #(
   output logic [RB-1:0]                 disp_row_o,
   output logic [GB-1:0]                 disp_grp_o,
   output logic [HAGG*DB-1:0]            disp_o,
-  output logic                          busy_o,
+  output logic                          busy_o,       // disparities still to come
+  // Sub-pixel values (docs/algorithm.md 12.6), two cycles after the disparities
+  output logic                          sub_valid_o,
+  output logic [RB-1:0]                 sub_row_o,
+  output logic [GB-1:0]                 sub_grp_o,
+  output logic [HAGG*SPB-1:0]           sub_o,
+  output logic                          sub_busy_o,   // sub-pixel values still to come
   // Monitor taps for verification: vertical and final costs with their tags
   output logic                          mon_ev_valid_o,
   output logic [RB-1:0]                 mon_ev_row_o,
@@ -275,17 +282,35 @@ module mcadsw_cost_agg #(
     .fc_i    (fc),
     .valid_o (disp_valid_o),
     .grp_o   (disp_grp_o),
-    .disp_o  (disp_o)
+    .disp_o  (disp_o),
+    .sub_valid_o,
+    .sub_grp_o,
+    .sub_o
   );
 
+  logic [RB-1:0] sub_row1_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) disp_row_q <= '0;
-    else if (h3_valid_q) disp_row_q <= h3_row_q;
+    if (!rst_ni) begin
+      disp_row_q <= '0;
+      sub_row1_q <= '0;
+      sub_row_o  <= '0;
+    end else begin
+      if (h3_valid_q) disp_row_q <= h3_row_q;
+      sub_row1_q <= disp_row_q;
+      sub_row_o  <= sub_row1_q;
+    end
   end
   assign disp_row_o = disp_row_q;
 
   assign busy_o = busy_q || v1_valid_q || v2_valid_q || h0_valid_q || h1_valid_q ||
                   h2_valid_q || h3_valid_q || disp_valid_o;
+  // The sub-pixel stages follow the disparities by two cycles.
+  logic sub_d1_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) sub_d1_q <= 1'b0;
+    else sub_d1_q <= disp_valid_o;
+  end
+  assign sub_busy_o = busy_o || sub_d1_q || sub_valid_o;
 
   // ---- Monitor taps ----------------------------------------------------------------
   assign mon_ev_valid_o = ev_valid && v2_valid_q;

@@ -386,6 +386,11 @@ module mcadsw_top #(
   logic [2:0]           disp_grp;
   logic [HAGG*DB-1:0]   disp;
   logic                 mon_unused;
+  // Sub-pixel values: not used by the raw engine yet (docs/algorithm.md 12.6).
+  logic                 sub_valid_unused, sub_busy_unused;
+  logic [4:0]           sub_row_unused;
+  logic [2:0]           sub_grp_unused;
+  logic [HAGG*(DB+4)-1:0] sub_unused;
   logic                 mon_ev_valid, mon_fc_valid;
   logic [4:0]           mon_ev_row, mon_fc_row;
   logic [DB-1:0]        mon_ev_d, mon_fc_d;
@@ -404,6 +409,8 @@ module mcadsw_top #(
     .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
     .disp_o (disp), .busy_o (agg_busy),
+    .sub_valid_o (sub_valid_unused), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp_unused),
+    .sub_o (sub_unused), .sub_busy_o (sub_busy_unused),
     .mon_ev_valid_o (mon_ev_valid), .mon_ev_row_o (mon_ev_row), .mon_ev_d_o (mon_ev_d),
     .mon_ev_grp_o (mon_ev_grp), .mon_ev_o (mon_ev),
     .mon_fc_valid_o (mon_fc_valid), .mon_fc_row_o (mon_fc_row), .mon_fc_d_o (mon_fc_d),
@@ -413,7 +420,8 @@ module mcadsw_top #(
   assign mon_unused = ^{mon_ev_valid, mon_ev_row, mon_ev_d, mon_ev_grp, mon_ev,
                         mon_fc_valid, mon_fc_row, mon_fc_d, mon_fc_grp, mon_fc,
                         lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
-                        hrd_row_unused,
+                        hrd_row_unused, sub_valid_unused, sub_busy_unused, sub_row_unused,
+                        sub_grp_unused, sub_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused};
 

@@ -2,7 +2,15 @@
 // its disparity for each of the BLOCK pixels of the row being aggregated,
 // HAGG pixels a cycle. Disparities arrive in increasing order and only a
 // strictly smaller cost replaces the best, so ties keep the smallest d.
-// On the last disparity the winners leave, HAGG a cycle.
+// On the last disparity the winners leave, HAGG a cycle (disp_o).
+//
+// Sub-pixel (docs/algorithm.md 12.6): the WTA also keeps, per pixel, the cost
+// of the previous disparity, the cost just before the best (E(d-1)) and the
+// first cost after it (E(d+1)). Two more stages after the winners leave turn
+// them into 16 d + offset (sub_o, two cycles after disp_o): the first forms
+// num = E(d-1) - E(d+1) and den = E(d-1) + E(d+1) - 2 E(d), the second counts
+// the k = 1..8 with 16 |num| >= (2k - 1) den, which is the rounded |offset|.
+// The offset is 0 when the best is at d = 0 or has no later disparity (d = D-1).
 `default_nettype none
 
 module mcadsw_wta #(
@@ -10,35 +18,50 @@ module mcadsw_wta #(
   parameter int HAGG  = mcadsw_pkg::HAGG,
   parameter int FB    = mcadsw_pkg::FCOST_BITS,
   parameter int DB    = mcadsw_pkg::DISP_BITS,
+  parameter int SPB   = DB + 4,                  // sub-pixel value: 16 d + offset
   parameter int GB    = $clog2(BLOCK / HAGG)
 ) (
-  input  logic               clk_i,
-  input  logic               rst_ni,
-  input  logic               valid_i,
-  input  logic               first_i,    // d == 0: take the cost unconditionally
-  input  logic               last_i,     // d == D - 1: emit the winners
-  input  logic [DB-1:0]      d_i,
-  input  logic [GB-1:0]      grp_i,      // pixels HAGG*grp .. HAGG*grp + HAGG - 1
-  input  logic [HAGG*FB-1:0] fc_i,
-  output logic               valid_o,
-  output logic [GB-1:0]      grp_o,
-  output logic [HAGG*DB-1:0] disp_o
+  input  logic                clk_i,
+  input  logic                rst_ni,
+  input  logic                valid_i,
+  input  logic                first_i,    // d == 0: take the cost unconditionally
+  input  logic                last_i,     // d == D - 1: emit the winners
+  input  logic [DB-1:0]       d_i,
+  input  logic [GB-1:0]       grp_i,      // pixels HAGG*grp .. HAGG*grp + HAGG - 1
+  input  logic [HAGG*FB-1:0]  fc_i,
+  output logic                valid_o,
+  output logic [GB-1:0]       grp_o,
+  output logic [HAGG*DB-1:0]  disp_o,
+  output logic                sub_valid_o,
+  output logic [GB-1:0]       sub_grp_o,
+  output logic [HAGG*SPB-1:0] sub_o
 );
 
-  logic [BLOCK*FB-1:0] best_cost_q;
+  logic [BLOCK*FB-1:0] best_cost_q, prev_q, cm_q, cp_q;
   logic [BLOCK*DB-1:0] best_d_q;
-  logic [HAGG*FB-1:0]  win_cost;
+  logic [BLOCK-1:0]    cpok_q;             // E(d+1) of the best has arrived
+  logic [HAGG*FB-1:0]  win_cost, win_cm, win_cp;
   logic [HAGG*DB-1:0]  win_d;
+  logic [HAGG-1:0]     win_cpok;
 
   for (genvar m = 0; m < HAGG; m++) begin : g_cmp
-    logic [FB-1:0] old_cost;
+    logic [FB-1:0] old_cost, c;
     logic [DB-1:0] old_d;
     assign old_cost = best_cost_q[(32'(grp_i)*HAGG + m)*FB +: FB];
     assign old_d    = best_d_q[(32'(grp_i)*HAGG + m)*DB +: DB];
+    assign c        = fc_i[m*FB +: FB];
     logic take;
-    assign take = first_i || fc_i[m*FB +: FB] < old_cost;
-    assign win_cost[m*FB +: FB] = take ? fc_i[m*FB +: FB] : old_cost;
+    assign take = first_i || c < old_cost;
+    assign win_cost[m*FB +: FB] = take ? c : old_cost;
     assign win_d[m*DB +: DB]    = take ? d_i : old_d;
+    // E(d-1) of a new best is the previous disparity's cost; E(d+1) is the first
+    // cost after the best.
+    logic old_cpok;
+    assign old_cpok = cpok_q[32'(grp_i)*HAGG + m];
+    assign win_cm[m*FB +: FB] = take ? prev_q[(32'(grp_i)*HAGG + m)*FB +: FB] :
+                                       cm_q[(32'(grp_i)*HAGG + m)*FB +: FB];
+    assign win_cp[m*FB +: FB] = (!take && !old_cpok) ? c : cp_q[(32'(grp_i)*HAGG + m)*FB +: FB];
+    assign win_cpok[m]        = !take;   // after this cost: the best has a later cost unless it is new
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -55,6 +78,80 @@ module mcadsw_wta #(
         best_d_q[32'(grp_i)*HAGG*DB +: HAGG*DB]    <= win_d;
         grp_o  <= grp_i;
         disp_o <= win_d;
+      end
+    end
+  end
+
+  // ---- Sub-pixel ----------------------------------------------------------------------
+  // Per-pixel state (no reset needed: written at d = 0 before it is read).
+  always_ff @(posedge clk_i) begin
+    if (valid_i) begin
+      prev_q[32'(grp_i)*HAGG*FB +: HAGG*FB] <= fc_i;
+      cm_q[32'(grp_i)*HAGG*FB +: HAGG*FB]   <= win_cm;
+      cp_q[32'(grp_i)*HAGG*FB +: HAGG*FB]   <= win_cp;
+      cpok_q[32'(grp_i)*HAGG +: HAGG]       <= win_cpok;
+    end
+  end
+
+  // Stage A (with disp_o): the winners' costs. Stage B: num, den. Stage C: value.
+  logic               a_valid_q, b_valid_q;
+  logic [GB-1:0]      a_grp_q, b_grp_q;
+  logic [HAGG*FB-1:0] a_c0_q, a_cm_q, a_cp_q;
+  logic [HAGG-1:0]    a_ok_q, b_ok_q, b_neg_q;
+  logic [HAGG*DB-1:0] a_d_q, b_d_q;
+  logic [HAGG*(FB+1)-1:0] b_num_q;         // |E(d-1) - E(d+1)|
+  logic [HAGG*(FB+2)-1:0] b_den_q;         // E(d-1) + E(d+1) - 2 E(d) (>= 0)
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      a_valid_q   <= 1'b0;
+      b_valid_q   <= 1'b0;
+      sub_valid_o <= 1'b0;
+      a_grp_q     <= '0;
+      b_grp_q     <= '0;
+      sub_grp_o   <= '0;
+    end else begin
+      a_valid_q   <= valid_i && last_i;
+      b_valid_q   <= a_valid_q;
+      sub_valid_o <= b_valid_q;
+      if (valid_i && last_i) a_grp_q <= grp_i;
+      if (a_valid_q) b_grp_q <= a_grp_q;
+      if (b_valid_q) sub_grp_o <= b_grp_q;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (valid_i && last_i) begin
+      a_c0_q <= win_cost;
+      a_cm_q <= win_cm;
+      a_cp_q <= win_cp;
+      a_d_q  <= win_d;
+      // Offset 0 at d = 0 (no E(d-1)) and when no cost followed the best (d = D-1).
+      for (int m = 0; m < HAGG; m++) a_ok_q[m] <= win_d[m*DB +: DB] != '0 && win_cpok[m];
+    end
+    if (a_valid_q) begin
+      for (int m = 0; m < HAGG; m++) begin
+        logic [FB:0] cm, cp;
+        cm = {1'b0, a_cm_q[m*FB +: FB]};
+        cp = {1'b0, a_cp_q[m*FB +: FB]};
+        b_neg_q[m] <= cm < cp;
+        b_num_q[m*(FB+1) +: FB+1] <= (cm < cp) ? cp - cm : cm - cp;
+        b_den_q[m*(FB+2) +: FB+2] <= {1'b0, cm} + {1'b0, cp} - {1'b0, a_c0_q[m*FB +: FB], 1'b0};
+      end
+      b_ok_q <= a_ok_q;
+      b_d_q  <= a_d_q;
+    end
+    if (b_valid_q) begin
+      for (int m = 0; m < HAGG; m++) begin
+        logic [FB+5:0] n16, den;
+        logic [3:0]    q;
+        n16 = {1'b0, b_num_q[m*(FB+1) +: FB+1], 4'b0000};
+        den = (FB + 6)'(b_den_q[m*(FB+2) +: FB+2]);
+        q = '0;
+        for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= (FB + 6)'(2 * k - 1) * den);
+        if (!b_ok_q[m] || den == '0) q = '0;
+        sub_o[m*SPB +: SPB] <= b_neg_q[m] ? {b_d_q[m*DB +: DB], 4'b0000} - SPB'(q)
+                                          : {b_d_q[m*DB +: DB], 4'b0000} + SPB'(q);
       end
     end
   end

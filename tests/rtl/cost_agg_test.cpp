@@ -1,7 +1,8 @@
 // mcadsw_cost_agg (Figs. 12-14) against the reference: every vertical cost
 // (vertical_aggregate), every final cost (horizontal_aggregate) and every
-// disparity (Wta) of a block, with the census and weight buffers modelled from
-// the reference's intermediates. The first mismatch is reported with its
+// disparity (Wta) of a block, and every sub-pixel value (subpixel_from_costs,
+// docs/algorithm.md 12.6), with the census and weight buffers modelled from the
+// reference's intermediates. The first mismatch is reported with its
 // coordinates, disparity and both values.
 #include <gtest/gtest.h>
 
@@ -31,7 +32,7 @@ struct Scenario {
 
 struct Result {
   long cycles = 0;           // first job accepted .. last disparity out
-  long ev_checked = 0, fc_checked = 0, disp_checked = 0;
+  long ev_checked = 0, fc_checked = 0, disp_checked = 0, sub_checked = 0, sub_fractional = 0;
   std::string first_error;
 };
 
@@ -41,6 +42,7 @@ class CostAggBench {
     Config cfg = s.cfg;
     cfg.threads = 1;
     disp_ = disparity_map(s.left, s.right, cfg, &ref_);
+    sub_ = subpixel_from_costs(ref_, disp_, cfg.disparities);
     W_ = s.left.width();
     H_ = s.left.height();
   }
@@ -58,7 +60,7 @@ class CostAggBench {
     const int D = s_.cfg.disparities;
     const int rows = std::min(kBlock, H_ - s_.by);
     const int cols = std::min(kBlock, W_ - s_.bx);
-    std::vector<int> seen(kBlock * kBlock, 0);
+    std::vector<int> seen(kBlock * kBlock, 0), seen_sub(kBlock * kBlock, 0);
     int next_row = 0;
     long first_accept = -1, last_out = -1;
     const long limit = long(rows) * (6L * D + 64) + 1000;  // never hang
@@ -93,6 +95,7 @@ class CostAggBench {
         check_disp(res, seen, cols);
         last_out = cycle;
       }
+      if (t.sub_valid_o) check_sub(res, seen_sub, cols);
       if (!res.first_error.empty()) return res;
 
       t.clk_i = 1;
@@ -102,14 +105,19 @@ class CostAggBench {
       drive_vertical(vrd, vrow, vgrp, vd);
       drive_horizontal(hrd, hrow, hgrp);
 
-      if (next_row == rows && !t.busy_o && !t.job_valid_i) break;
+      if (next_row == rows && !t.sub_busy_o && !t.job_valid_i) break;
     }
     res.cycles = last_out - first_accept + 1;
     for (int r = 0; r < rows; ++r)
-      for (int x = 0; x < cols; ++x)
+      for (int x = 0; x < cols; ++x) {
         if (seen[r * kBlock + x] != 1 && res.first_error.empty())
           res.first_error = "pixel (" + std::to_string(s_.bx + x) + "," + std::to_string(s_.by + r) +
                             ") produced " + std::to_string(seen[r * kBlock + x]) + " times";
+        if (seen_sub[r * kBlock + x] != 1 && res.first_error.empty())
+          res.first_error = "sub-pixel value of (" + std::to_string(s_.bx + x) + "," +
+                            std::to_string(s_.by + r) + ") produced " +
+                            std::to_string(seen_sub[r * kBlock + x]) + " times";
+      }
     if (res.first_error.empty() && res.ev_checked != ev_expected)
       res.first_error = "saw " + std::to_string(res.ev_checked) + " vertical costs, expected " +
                         std::to_string(ev_expected);
@@ -229,11 +237,39 @@ class CostAggBench {
     }
   }
 
+  void check_sub(Result& res, std::vector<int>& seen, int cols) {
+    auto& t = *top_;
+    const int row = t.sub_row_o, grp = t.sub_grp_o;
+    const int y = s_.by + row;
+    constexpr int kSubBits = kDispBits + 4;
+    for (int m = 0; m < kHorzAggregators; ++m) {
+      const int xb = grp * kHorzAggregators + m;
+      if (xb >= cols) continue;
+      const int x = s_.bx + xb;
+      ++seen[row * kBlock + xb];
+      const int got = int(get_bits(t.sub_o, m * kSubBits, kSubBits));
+      const int want = sub_.at(x, y);
+      ++res.sub_checked;
+      res.sub_fractional += want % kSubpixelScale != 0;
+      if (got != want) {
+        const int d = disp_.at(x, y);
+        const auto cost = [&](int e) {
+          return (e >= 0 && e < s_.cfg.disparities) ? long(ref_.final_cost[e][size_t(y) * W_ + x]) : -1L;
+        };
+        std::ostringstream o;
+        o << "sub-pixel value at (" << x << "," << y << "), d=" << d << ": RTL " << got << ", reference "
+          << want << " (E(d-1) " << cost(d - 1) << ", E(d) " << cost(d) << ", E(d+1) " << cost(d + 1) << ")";
+        fail(res, o.str());
+      }
+    }
+  }
+
   const Scenario& s_;
   std::mt19937 rng_;
   std::unique_ptr<Vmcadsw_cost_agg> top_ = std::make_unique<Vmcadsw_cost_agg>();
   Intermediates ref_;
   Plane disp_;
+  Plane16 sub_;
   int W_ = 0, H_ = 0;
 };
 
@@ -241,9 +277,9 @@ Result run_scenario(const Scenario& s) {
   CostAggBench bench(s);
   Result r = bench.run();
   std::printf("[%s] %dx%d block (%d,%d) D=%d: %ld cycles, %ld Ev / %ld final costs / %ld disparities "
-              "checked\n",
+              "/ %ld sub-pixel values (%ld with an offset) checked\n",
               s.name.c_str(), s.left.width(), s.left.height(), s.bx, s.by, s.cfg.disparities,
-              r.cycles, r.ev_checked, r.fc_checked, r.disp_checked);
+              r.cycles, r.ev_checked, r.fc_checked, r.disp_checked, r.sub_checked, r.sub_fractional);
   return r;
 }
 
@@ -290,6 +326,7 @@ TEST(CostAgg, SingleDisparity) {
 TEST(CostAgg, RealImageTeddyCifAtDmax) {
   const Result r = run_scenario(real_scenario("teddy", kDmax, 180, 126));
   EXPECT_CLEAN(r);
+  EXPECT_GT(r.sub_fractional, r.sub_checked / 2) << "most pixels of a real block get an offset";
   // Back-to-back jobs: 6 cycles per disparity per row plus the pipeline fill.
   const long per_block = 18L * 6 * kDmax;
   std::printf("cycles per 18-pixel row at D=%d: %.1f (paper: 7 + 6*64 = 391)\n", kDmax,
