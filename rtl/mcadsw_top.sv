@@ -234,9 +234,11 @@ module mcadsw_top #(
   // The census windows of the first block of a row band skip the strips left of
   // the one holding image column -2, the leftmost luma the codes of column 0
   // need (the kernels compute the columns left of the image from column 0).
+  // (Written -x - N'(2): Yosys 0.23 parses a unary minus before a size cast,
+  // -(N)'(2), as a cast to the size -(N), i.e. +2; scripts/rtl_check.sh rejects it.)
   logic signed [CW:0] lx_skip, rx_skip;   // image column -2, relative to the aligned origin
-  assign lx_skip = -(CW + 1)'(2) - lx_al;
-  assign rx_skip = -(CW + 1)'(2) - rx_al;
+  assign lx_skip = -lx_al - (CW + 1)'(2);
+  assign rx_skip = -rx_al - (CW + 1)'(2);
   assign l_first = prep_cont ? first_strip(lx_in[1:0], 1'b1, LSTRIPS) :
                    (lx_skip > 0) ? 6'(lx_skip >>> 2) : 6'd0;
   assign r_first = prep_cont ? first_strip(rx_in[1:0], 1'b1, RSTRIPS) :

@@ -27,6 +27,19 @@ run_lint() {
 
 run_yosys() {
   local tops
+  # Yosys 0.23 parses a unary minus before a size cast, `-(N)'(x)`, as a cast to
+  # the size -(N) (it read -(13)'(2) as +2; found by gate-level simulation), where
+  # Verilator and Icarus negate: the netlist would differ from the simulated RTL.
+  local bad
+  bad=$(for f in "${files[@]}"; do   # code only: comments stripped, line numbers kept
+          sed 's://.*$::' "$f" | grep -nE "(^|[=(,?:+*/&|^~!<>-])[[:space:]]*-[[:space:]]*\([^()]*\)'\(" |
+            sed "s|^|$f:|" || true
+        done)
+  if [ -n "$bad" ]; then
+    echo "$bad"
+    echo "rtl_check: unary minus before a size cast, -(N)'(x), which Yosys 0.23 misreads; write -x or 0 - N'(x)" >&2
+    return 1
+  fi
   for f in "${mods[@]}"; do
     top=${f%.sv}
     out=$(yosys -q -p "read_verilog -sv ${files[*]}; hierarchy -check -top $top; proc" 2>&1) || {
