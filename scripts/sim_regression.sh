@@ -93,9 +93,9 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
     for grp in "Top:mcadsw_top:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i" \
                "Scheduler:mcadsw_top.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
                "Memory controller:mcadsw_top.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \
-               "Census left:mcadsw_top.u_census_l:state_q pix_valid_i pix_ready_o done_o" \
-               "Census right:mcadsw_top.u_census_r:state_q pix_valid_i pix_ready_o done_o" \
-               "Weight generator:mcadsw_top.u_weight_gen:state_q pix_valid_i pix_ready_o done_o" \
+               "Census left:mcadsw_top.u_census_l:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
+               "Census right:mcadsw_top.u_census_r:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
+               "Weight generator:mcadsw_top.u_weight_gen:state_q pix_valid_i pix_ready_o done_o r_q occ_q row_ready_o row_take_i" \
                "Cost aggregator:mcadsw_top.u_cost_agg:busy_q row_q d_q grp_q h2_valid_q disp_valid_o disp_grp_o" \
                "Depth FIFO:mcadsw_top.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o"; do
       IFS=: read -r title scope sigs <<<"$grp"
