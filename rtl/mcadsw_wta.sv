@@ -37,45 +37,53 @@ module mcadsw_wta #(
   output logic [HAGG*SPB-1:0] sub_o
 );
 
-  logic [BLOCK*FB-1:0] best_cost_q, prev_q, cm_q, cp_q;
-  logic [BLOCK*DB-1:0] best_d_q;
-  logic [BLOCK-1:0]    cpok_q;             // E(d+1) of the best has arrived
+  // Per-pixel state of the row, kept as a ring of the GROUPS groups of HAGG
+  // pixels: the groups arrive in order 0 .. GROUPS-1 for every disparity (the
+  // cost aggregator's horizontal side reads them so), so the state of the
+  // arriving group is always at the head, and the updated state goes to the
+  // tail. No group-indexed multiplexers or write decoders.
+  localparam int GROUPS = BLOCK / HAGG;
+  localparam int PS     = 4 * FB + DB + 1;    // best, E(d-1), E(d+1), previous cost, best d, E(d+1) seen
+  logic [GROUPS*HAGG*PS-1:0] st_q;           // group g at g*HAGG*PS; the head is group 0
+  logic [HAGG*PS-1:0]        head, nxt;
+  assign head = st_q[HAGG*PS-1:0];
+
   logic [HAGG*FB-1:0]  win_cost, win_cm, win_cp;
   logic [HAGG*DB-1:0]  win_d;
   logic [HAGG-1:0]     win_cpok;
 
   for (genvar m = 0; m < HAGG; m++) begin : g_cmp
-    logic [FB-1:0] old_cost, c;
+    logic [FB-1:0] old_cost, old_prev, old_cm, old_cp, c;
     logic [DB-1:0] old_d;
-    assign old_cost = best_cost_q[(32'(grp_i)*HAGG + m)*FB +: FB];
-    assign old_d    = best_d_q[(32'(grp_i)*HAGG + m)*DB +: DB];
-    assign c        = fc_i[m*FB +: FB];
+    logic          old_cpok;
+    assign {old_cost, old_prev, old_cm, old_cp, old_d, old_cpok} = head[m*PS +: PS];
+    assign c = fc_i[m*FB +: FB];
     logic take;
     assign take = first_i || c < old_cost;
     assign win_cost[m*FB +: FB] = take ? c : old_cost;
     assign win_d[m*DB +: DB]    = take ? d_i : old_d;
     // E(d-1) of a new best is the previous disparity's cost; E(d+1) is the first
     // cost after the best.
-    logic old_cpok;
-    assign old_cpok = cpok_q[32'(grp_i)*HAGG + m];
-    assign win_cm[m*FB +: FB] = take ? prev_q[(32'(grp_i)*HAGG + m)*FB +: FB] :
-                                       cm_q[(32'(grp_i)*HAGG + m)*FB +: FB];
-    assign win_cp[m*FB +: FB] = (!take && !old_cpok) ? c : cp_q[(32'(grp_i)*HAGG + m)*FB +: FB];
-    assign win_cpok[m]        = !take;   // after this cost: the best has a later cost unless it is new
+    assign win_cm[m*FB +: FB] = take ? old_prev : old_cm;
+    assign win_cp[m*FB +: FB] = (!take && !old_cpok) ? c : old_cp;
+    assign win_cpok[m]        = !take;   // the best has a later cost unless it is new
+    assign nxt[m*PS +: PS] = {win_cost[m*FB +: FB], c, win_cm[m*FB +: FB], win_cp[m*FB +: FB],
+                              win_d[m*DB +: DB], win_cpok[m]};
+  end
+
+  // The ring: no reset needed, every field is written at d = 0 before it is used.
+  always_ff @(posedge clk_i) begin
+    if (valid_i) st_q <= {nxt, st_q[GROUPS*HAGG*PS-1:HAGG*PS]};
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      best_cost_q <= '0;
-      best_d_q    <= '0;
-      valid_o     <= 1'b0;
-      grp_o       <= '0;
-      disp_o      <= '0;
+      valid_o <= 1'b0;
+      grp_o   <= '0;
+      disp_o  <= '0;
     end else begin
       valid_o <= valid_i && last_i;
       if (valid_i) begin
-        best_cost_q[32'(grp_i)*HAGG*FB +: HAGG*FB] <= win_cost;
-        best_d_q[32'(grp_i)*HAGG*DB +: HAGG*DB]    <= win_d;
         grp_o  <= grp_i;
         disp_o <= win_d;
       end
@@ -83,16 +91,6 @@ module mcadsw_wta #(
   end
 
   // ---- Sub-pixel ----------------------------------------------------------------------
-  // Per-pixel state (no reset needed: written at d = 0 before it is read).
-  always_ff @(posedge clk_i) begin
-    if (valid_i) begin
-      prev_q[32'(grp_i)*HAGG*FB +: HAGG*FB] <= fc_i;
-      cm_q[32'(grp_i)*HAGG*FB +: HAGG*FB]   <= win_cm;
-      cp_q[32'(grp_i)*HAGG*FB +: HAGG*FB]   <= win_cp;
-      cpok_q[32'(grp_i)*HAGG +: HAGG]       <= win_cpok;
-    end
-  end
-
   // Stage A (with disp_o): the winners' costs. Stage B: num, den. Stage C: value.
   logic               a_valid_q, b_valid_q;
   logic [GB-1:0]      a_grp_q, b_grp_q;
@@ -155,6 +153,21 @@ module mcadsw_wta #(
       end
     end
   end
+
+`ifndef SYNTHESIS
+  // The ring relies on the groups arriving in order, from group 0 after reset.
+  logic [GB-1:0] exp_grp_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) exp_grp_q <= '0;
+    else if (valid_i) exp_grp_q <= (exp_grp_q == GB'(GROUPS - 1)) ? '0 : exp_grp_q + GB'(1);
+  end
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(valid_i && grp_i != exp_grp_q))
+        else $error("wta: group %0d arrived, group %0d expected", grp_i, exp_grp_q);
+    end
+  end
+`endif
 
 endmodule
 
