@@ -2,6 +2,11 @@
 // emits (HAGG a cycle, a block row of BLOCK pixels at a time), and writes each
 // finished row to the output plane through the memory controller, as aligned
 // 32-bit words with byte enables (pixels outside the image are dropped).
+// Raw mode: one byte a pixel (the disparity). Wide mode (sub-pixel output,
+// docs/memory_map.md): one little-endian halfword a pixel, the VB-bit value
+// zero-extended, two pixels a word. Mirrored (the right view as base, docs/
+// architecture.md section 12): the pass's column c is image column
+// xend - 1 - c, and the pass's columns below xlo are outside the image.
 //
 // The scheduler pushes a descriptor (output row address, first column, pixel
 // count) for every row job it starts, in job order; rows leave the aggregator
@@ -12,7 +17,7 @@
 module mcadsw_depth_fifo #(
   parameter int BLOCK = mcadsw_pkg::BLOCK,
   parameter int HAGG  = mcadsw_pkg::HAGG,
-  parameter int DB    = mcadsw_pkg::DISP_BITS,
+  parameter int VB    = mcadsw_pkg::DISP_BITS + 4,  // value bits (sub-pixel: 16 d + offset)
   parameter int ROWSQ = 4,                    // rows queued or in flight
   parameter int AW    = 32,
   parameter int CW    = 12,
@@ -27,10 +32,15 @@ module mcadsw_depth_fifo #(
   input  logic [4:0]         desc_n_i,       // pixels of the row inside the image, 1..BLOCK
   output logic               space_o,        // another row job may start
   output logic               empty_o,        // nothing queued, nothing to write
-  // Disparities from the cost aggregator
+  // Frame configuration, stable during a frame
+  input  logic               wide_i,         // halfword pixels
+  input  logic               mirror_i,       // columns mirrored about xend - 1
+  input  logic [1:0]         xlo_i,          // first column inside the image
+  input  logic [CW-1:0]      xend_i,         // mirrored: a multiple of 4
+  // Values from the cost aggregator (disparities, or sub-pixel values)
   input  logic               disp_valid_i,
   input  logic [GB-1:0]      disp_grp_i,
-  input  logic [HAGG*DB-1:0] disp_i,
+  input  logic [HAGG*VB-1:0] disp_i,
   // Writes to the memory controller
   output logic               wr_req_o,
   output logic [AW-1:0]      wr_addr_o,
@@ -43,13 +53,13 @@ module mcadsw_depth_fifo #(
   localparam int PB = (ROWSQ > 1) ? $clog2(ROWSQ) : 1;
   localparam int DESC = AW + CW + 5;
 
-  // Row slots: descriptor and the BLOCK disparities of each queued row.
+  // Row slots: descriptor and the BLOCK values of each queued row.
   logic [ROWSQ*DESC-1:0]      desc_q;
-  logic [ROWSQ*BLOCK*8-1:0]   pix_q;
+  logic [ROWSQ*BLOCK*VB-1:0]  pix_q;
   logic [PB-1:0]              head_q, tail_q, fill_q;  // oldest row, next free, row being filled
   logic [QB-1:0]              count_q;                  // rows with a descriptor
   logic [QB-1:0]              ready_q;                  // rows complete, not yet written
-  logic [4:0]                 wofs_q;                   // next word, bytes after the first
+  logic [4:0]                 wofs_q;                   // next word, columns after the first
 
   assign space_o = count_q != QB'(ROWSQ);
   assign empty_o = count_q == '0;
@@ -62,21 +72,55 @@ module mcadsw_depth_fifo #(
   assign {h_addr, h_x, h_n} = desc_q[32'(head_q)*DESC +: DESC];
   assign h_end = {1'b0, h_x} + (CW + 1)'(h_n);
 
-  logic [CW:0] word_x;                 // first column of the word being written
-  assign word_x = {1'b0, h_x[CW-1:2], 2'b00} + (CW + 1)'(wofs_q);
+  // The word being written holds columns word_x .. word_x + 3 (raw) or
+  // word_x .. word_x + 1 (wide), aligned, at or left of the row's first
+  // column inside the image, plus wofs_q. Mirrored, those columns are one aligned memory word
+  // too (xend is a multiple of 4), in reverse order.
+  // The row's first column inside the image: h_x, or xlo in the first block.
+  logic [CW-1:0] h_first;
+  assign h_first = (h_x < CW'(xlo_i)) ? CW'(xlo_i) : h_x;
+  logic [CW:0] word_x;
+  assign word_x = (wide_i ? {1'b0, h_first[CW-1:1], 1'b0} : {1'b0, h_first[CW-1:2], 2'b00}) +
+                  (CW + 1)'(wofs_q);
+  logic [CW:0] mem_x;                  // first image column of the memory word
+  assign mem_x = !mirror_i ? word_x :
+                 {1'b0, xend_i} - word_x - (wide_i ? (CW + 1)'(2) : (CW + 1)'(4));
+
+  // The head row's values: a ROWSQ:1 selection shared by the four byte lanes,
+  // then a BLOCK:1 selection each.
+  logic [BLOCK*VB-1:0] h_row;
+  always_comb begin
+    h_row = '0;
+    for (int r = 0; r < ROWSQ; r++)
+      if (head_q == PB'(r)) h_row = pix_q[r*BLOCK*VB +: BLOCK*VB];
+  end
 
   for (genvar b = 0; b < 4; b++) begin : g_byte
-    logic [CW:0] x;
-    assign x = word_x + (CW + 1)'(b);
-    assign wr_be_o[b] = x >= {1'b0, h_x} && x < h_end;
-    assign wr_wdata_o[b*8 +: 8] =
-        wr_be_o[b] ? pix_q[(32'(head_q)*BLOCK + 32'(x) - 32'(h_x))*8 +: 8] : 8'h00;
+    // The pass column byte b belongs to.
+    localparam int OFS_RAW = b, OFS_WIDE = b / 2, OFS_RAW_M = 3 - b, OFS_WIDE_M = 1 - b / 2;
+    logic [CW:0]   x;
+    logic [4:0]    p;                  // its place in the row
+    logic [VB-1:0] v;
+    logic [15:0]   v16;
+    assign x = word_x + (!mirror_i ? (wide_i ? (CW + 1)'(OFS_WIDE) : (CW + 1)'(OFS_RAW))
+                                    : (wide_i ? (CW + 1)'(OFS_WIDE_M) : (CW + 1)'(OFS_RAW_M)));
+    assign p = 5'(x - {1'b0, h_x});
+    assign wr_be_o[b] = x >= {1'b0, h_first} && x < h_end;
+    always_comb begin
+      v = '0;
+      for (int i = 0; i < BLOCK; i++)
+        if (p == 5'(i)) v = h_row[i*VB +: VB];
+    end
+    assign v16 = 16'(v);
+    assign wr_wdata_o[b*8 +: 8] = !wr_be_o[b] ? 8'h00 :
+                                  (wide_i && b % 2 == 1) ? v16[15:8] : v16[7:0];
   end
   assign wr_req_o  = ready_q != '0;
-  assign wr_addr_o = h_addr + AW'(word_x);
+  assign wr_addr_o = h_addr + (wide_i ? AW'({mem_x, 1'b0}) : AW'(mem_x));
 
   logic row_written;
-  assign row_written = wr_req_o && wr_gnt_i && word_x + (CW + 1)'(4) >= h_end;
+  assign row_written = wr_req_o && wr_gnt_i &&
+                       word_x + (wide_i ? (CW + 1)'(2) : (CW + 1)'(4)) >= h_end;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -95,12 +139,12 @@ module mcadsw_depth_fifo #(
       end
       if (disp_valid_i) begin
         for (int m = 0; m < HAGG; m++)
-          pix_q[(32'(fill_q)*BLOCK + 32'(disp_grp_i)*HAGG + m)*8 +: 8] <=
-              {{(8 - DB){1'b0}}, disp_i[m*DB +: DB]};
+          pix_q[(32'(fill_q)*BLOCK + 32'(disp_grp_i)*HAGG + m)*VB +: VB] <=
+              disp_i[m*VB +: VB];
         if (disp_grp_i == GB'(BLOCK / HAGG - 1)) fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
       end
       if (wr_req_o && wr_gnt_i) begin
-        wofs_q <= wofs_q + 5'd4;
+        wofs_q <= wofs_q + (wide_i ? 5'd2 : 5'd4);
         if (row_written) begin
           head_q <= PB'((32'(head_q) + 1) % ROWSQ);
           wofs_q <= '0;

@@ -20,8 +20,12 @@ module mcadsw_top #(
   input  logic [AW-1:0]       cfg_base_lu_i,   // left U plane
   input  logic [AW-1:0]       cfg_base_lv_i,   // left V plane
   input  logic [AW-1:0]       cfg_base_ry_i,   // right Y plane
+  input  logic [AW-1:0]       cfg_base_ru_i,   // right U plane (read only with the right view as base)
+  input  logic [AW-1:0]       cfg_base_rv_i,   // right V plane (idem)
   input  logic [AW-1:0]       cfg_base_out_i,  // disparity plane
-  input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of every plane
+  input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of the input planes
+  input  logic [AW-1:0]       cfg_out_stride_i,// bytes per row of the disparity plane
+  input  logic [2:0]          cfg_mode_i,      // bit 0 sub-pixel, bit 1 LR (not built), bit 2 right base
   input  logic [CW-1:0]       cfg_width_i,
   input  logic [CW-1:0]       cfg_height_i,
   input  logic [NB-1:0]       cfg_disp_i,      // D
@@ -31,7 +35,7 @@ module mcadsw_top #(
   output logic                busy_o,
   output logic                done_o,          // frame finished (or rejected) since start
   output logic                error_o,         // configuration rejected; nothing was written
-  output logic [2:0]          error_code_o,    // docs/memory_map.md
+  output logic [3:0]          error_code_o,    // docs/memory_map.md
   output logic [31:0]         cnt_cycles_o,
   output logic [31:0]         cnt_words_read_o,
   output logic [31:0]         cnt_words_written_o,
@@ -57,33 +61,67 @@ module mcadsw_top #(
   localparam int DB     = mcadsw_pkg::DISP_BITS;
 
   // ---- Configuration registers and checks ------------------------------------------
-  logic [AW-1:0]       base_ly_q, base_lu_q, base_lv_q, base_ry_q, base_out_q, stride_q;
-  logic [CW-1:0]       width_q, height_q;
+  // The pass's planes: base view Y, U, V (census and weights) and match view
+  // Y; the left and right view respectively, or the other way round with the
+  // right view as base.
+  logic [AW-1:0]       base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q;
+  logic [AW-1:0]       out_stride_q;
+  // The pass's columns: the image lies in columns xlo_q .. xend_q - 1. With the
+  // right view as base the pass runs mirrored (docs/architecture.md section 12):
+  // pass column c is image column W4 - 1 - c, W4 the width rounded up to 4.
+  logic [CW-1:0]       xend_q, height_q;
+  logic [1:0]          xlo_q;
+  logic                right_q;
   logic [NB-1:0]       disp_q;
   logic [NTHR*DCB-1:0] thr_q;
+  logic                sub_q;          // sub-pixel mode: 16-bit output pixels
   logic                sched_busy, sched_done, accept;
-  logic [2:0]          check;
+  logic [3:0]          check;
 
-  // Error codes: 1 width, 2 height, 3 D, 4 stride, 5 base alignment, 6 output overlaps an input.
-  function automatic logic overlaps(input logic [AW-1:0] a, input logic [AW-1:0] b,
-                                    input logic [AW:0] size);
-    overlaps = ({1'b0, a} < {1'b0, b} + size) && ({1'b0, b} < {1'b0, a} + size);
+  // Error codes (docs/memory_map.md): 1 width, 2 height, 3 D, 4 input stride,
+  // 5 base alignment, 6 output overlaps an input, 7 output stride, 8 mode,
+  // 9 a plane reaches beyond the 32-bit address space.
+  localparam int SB = AW + CW;         // plane sizes: stride x height, exact
+  function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
+                                    input logic [AW-1:0] b, input logic [SB-1:0] b_size);
+    overlaps = (SB'(a) < SB'(b) + b_size) && (SB'(b) < SB'(a) + a_size);
+  endfunction
+  function automatic logic beyond(input logic [AW-1:0] base, input logic [SB-1:0] size);
+    logic [SB:0] end_;
+    end_   = (SB + 1)'(base) + (SB + 1)'(size);
+    beyond = end_ > (SB + 1)'(64'd1 << AW);
   endfunction
 
+  // The configured mode, and the planes it reads.
+  logic cfg_sub, cfg_lr, cfg_right;
+  assign {cfg_right, cfg_lr, cfg_sub} = cfg_mode_i;
+  logic [AW-1:0] sel_by, sel_bu, sel_bv, sel_my;
+  assign sel_by = cfg_right ? cfg_base_ry_i : cfg_base_ly_i;
+  assign sel_bu = cfg_right ? cfg_base_ru_i : cfg_base_lu_i;
+  assign sel_bv = cfg_right ? cfg_base_rv_i : cfg_base_lv_i;
+  assign sel_my = cfg_right ? cfg_base_ly_i : cfg_base_ry_i;
+
   always_comb begin
-    logic [AW:0] size;
-    size  = (AW + 1)'(cfg_stride_i) * (AW + 1)'(cfg_height_i);
-    check = 3'd0;
-    if (cfg_width_i == '0 || 32'(cfg_width_i) > mcadsw_pkg::MAX_WIDTH) check = 3'd1;
-    else if (cfg_height_i == '0 || 32'(cfg_height_i) > mcadsw_pkg::MAX_HEIGHT) check = 3'd2;
-    else if (cfg_disp_i == '0 || 32'(cfg_disp_i) > DMAX) check = 3'd3;
-    else if (cfg_stride_i < AW'(cfg_width_i) || (cfg_stride_i & AW'(3)) != '0) check = 3'd4;
-    else if (((cfg_base_ly_i | cfg_base_lu_i | cfg_base_lv_i | cfg_base_ry_i |
-               cfg_base_out_i) & AW'(3)) != '0) check = 3'd5;
-    else if (overlaps(cfg_base_out_i, cfg_base_ly_i, size) ||
-             overlaps(cfg_base_out_i, cfg_base_lu_i, size) ||
-             overlaps(cfg_base_out_i, cfg_base_lv_i, size) ||
-             overlaps(cfg_base_out_i, cfg_base_ry_i, size)) check = 3'd6;
+    logic [SB-1:0] size, out_size;
+    logic [CW:0]   out_bytes;          // bytes of an output row
+    size      = SB'(cfg_stride_i) * SB'(cfg_height_i);
+    out_size  = SB'(cfg_out_stride_i) * SB'(cfg_height_i);
+    out_bytes = cfg_sub ? {cfg_width_i, 1'b0} : {1'b0, cfg_width_i};
+    check = 4'd0;
+    if (cfg_width_i == '0 || 32'(cfg_width_i) > mcadsw_pkg::MAX_WIDTH) check = 4'd1;
+    else if (cfg_height_i == '0 || 32'(cfg_height_i) > mcadsw_pkg::MAX_HEIGHT) check = 4'd2;
+    else if (cfg_disp_i == '0 || 32'(cfg_disp_i) > DMAX) check = 4'd3;
+    else if (cfg_stride_i < AW'(cfg_width_i) || (cfg_stride_i & AW'(3)) != '0) check = 4'd4;
+    else if (((sel_by | sel_bu | sel_bv | sel_my | cfg_base_out_i) & AW'(3)) != '0) check = 4'd5;
+    else if (overlaps(cfg_base_out_i, out_size, sel_by, size) ||
+             overlaps(cfg_base_out_i, out_size, sel_bu, size) ||
+             overlaps(cfg_base_out_i, out_size, sel_bv, size) ||
+             overlaps(cfg_base_out_i, out_size, sel_my, size)) check = 4'd6;
+    else if (cfg_out_stride_i < AW'(out_bytes) || (cfg_out_stride_i & AW'(3)) != '0)
+      check = 4'd7;
+    else if (cfg_lr) check = 4'd8;
+    else if (beyond(sel_by, size) || beyond(sel_bu, size) || beyond(sel_bv, size) ||
+             beyond(sel_my, size) || beyond(cfg_base_out_i, out_size)) check = 4'd9;
   end
 
   // A start is taken only while idle: not while the scheduler runs, nor in the
@@ -92,26 +130,31 @@ module mcadsw_top #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {base_ly_q, base_lu_q, base_lv_q, base_ry_q, base_out_q, stride_q} <= '0;
-      {width_q, height_q, disp_q, thr_q} <= '0;
+      {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q} <= '0;
+      {out_stride_q, xend_q, xlo_q, height_q, disp_q, thr_q, sub_q, right_q} <= '0;
       done_o       <= 1'b0;
       error_o      <= 1'b0;
       error_code_o <= '0;
     end else begin
       if (accept) begin
-        base_ly_q  <= cfg_base_ly_i;
-        base_lu_q  <= cfg_base_lu_i;
-        base_lv_q  <= cfg_base_lv_i;
-        base_ry_q  <= cfg_base_ry_i;
+        base_by_q  <= sel_by;
+        base_bu_q  <= sel_bu;
+        base_bv_q  <= sel_bv;
+        base_my_q  <= sel_my;
         base_out_q <= cfg_base_out_i;
         stride_q   <= cfg_stride_i;
-        width_q    <= cfg_width_i;
+        out_stride_q <= cfg_out_stride_i;
+        sub_q      <= cfg_sub;
+        // Mirrored: W4 = W rounded up to 4 columns, the image in W4 - W .. W4 - 1.
+        xend_q     <= cfg_right ? (cfg_width_i + CW'(3)) & ~CW'(3) : cfg_width_i;
+        xlo_q      <= cfg_right ? 2'(-cfg_width_i) : 2'd0;
+        right_q    <= cfg_right;
         height_q   <= cfg_height_i;
         disp_q     <= cfg_disp_i;
         thr_q      <= cfg_thr_i;
-        error_o      <= check != 3'd0;
+        error_o      <= check != 4'd0;
         error_code_o <= check;
-        done_o       <= check != 3'd0;
+        done_o       <= check != 4'd0;
       end
       if (sched_done) done_o <= 1'b1;
     end
@@ -121,7 +164,7 @@ module mcadsw_top #(
   logic go_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) go_q <= 1'b0;
-    else go_q <= accept && check == 3'd0;
+    else go_q <= accept && check == 4'd0;
   end
 
   // ---- Counters --------------------------------------------------------------------------
@@ -163,10 +206,10 @@ module mcadsw_top #(
   mcadsw_scheduler #(.CW(CW), .AW(AW)) u_scheduler (
     .clk_i, .rst_ni,
     .start_i        (go_q),
-    .width_i        (width_q),
+    .width_i        (xend_q),
     .height_i       (height_q),
     .out_base_i     (base_out_q),
-    .stride_i       (stride_q),
+    .stride_i       (out_stride_q),
     .busy_o         (sched_busy),
     .done_o         (sched_done),
     .prep_start_o   (prep_start),
@@ -193,8 +236,12 @@ module mcadsw_top #(
   );
 
   // In-image bounds of a window starting at x0 (size n) in an image of size w.
-  function automatic logic [6:0] lo_bound(input logic signed [CW:0] x0);
-    lo_bound = (x0 < 0) ? 7'(-x0) : 7'd0;
+  // In-image bounds of a window starting at x0 (size n): the image starts at lo
+  // and ends before w.
+  function automatic logic [6:0] lo_bound(input logic signed [CW:0] x0, input logic [1:0] lo);
+    logic signed [CW:0] l;
+    l = $signed({{(CW - 1){1'b0}}, lo}) - x0;
+    lo_bound = (l > 0) ? 7'(l) : 7'd0;
   endfunction
   function automatic logic [6:0] hi_bound(input logic signed [CW:0] x0, input logic [CW-1:0] w,
                                           input int n);
@@ -236,19 +283,21 @@ module mcadsw_top #(
   // need (the kernels compute the columns left of the image from column 0).
   // (Written -x - N'(2): Yosys 0.23 parses a unary minus before a size cast,
   // -(N)'(2), as a cast to the size -(N), i.e. +2; scripts/rtl_check.sh rejects it.)
-  logic signed [CW:0] lx_skip, rx_skip;   // image column -2, relative to the aligned origin
-  assign lx_skip = -lx_al - (CW + 1)'(2);
-  assign rx_skip = -rx_al - (CW + 1)'(2);
+  logic signed [CW:0] lx_skip, rx_skip;   // column lo - 2, relative to the aligned origin
+  logic signed [CW:0] xlo_s;
+  assign xlo_s   = $signed({{(CW - 1){1'b0}}, xlo_q});
+  assign lx_skip = xlo_s - lx_al - (CW + 1)'(2);
+  assign rx_skip = xlo_s - rx_al - (CW + 1)'(2);
   assign l_first = prep_cont ? first_strip(lx_in[1:0], 1'b1, LSTRIPS) :
                    (lx_skip > 0) ? 6'(lx_skip >>> 2) : 6'd0;
   assign r_first = prep_cont ? first_strip(rx_in[1:0], 1'b1, RSTRIPS) :
                    (rx_skip > 0) ? 6'(rx_skip >>> 2) : 6'd0;
   // The weight window of the first block of a row band (x0 = -15) skips the
   // strips wholly left of the image; the weight generator replicates column 0.
-  logic signed [CW:0] wx_neg;
-  assign wx_neg  = -wx_al;
+  logic signed [CW:0] wx_skip;           // column lo, relative to the aligned origin
+  assign wx_skip = xlo_s - wx_al;
   assign w_first = prep_cont ? first_strip(prep_x0[1:0], 1'b1, WSTRIPS) :
-                   (wx_al < 0) ? 6'(wx_neg >>> 2) : 6'd0;
+                   (wx_skip > 0) ? 6'(wx_skip >>> 2) : 6'd0;
   logic signed [CW:0] lx_rd, rx_rd, wx_rd; // first column each reader reads
   assign lx_rd = lx_al + (CW + 1)'(4 * 32'(l_first));
   assign rx_rd = rx_al + (CW + 1)'(4 * 32'(r_first));
@@ -281,8 +330,8 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(LSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_l (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_ly_q), .stride_i (stride_q),
-    .width_i (width_q), .height_i (height_q),
+    .start_i (prep_start), .base_i (base_by_q), .stride_i (stride_q),
+    .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (lx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
     .strips_i (4'(LSTRIPS - 32'(l_first))),
     .busy_o (lrd_busy_unused),
@@ -294,8 +343,8 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(RSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_r (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_ry_q), .stride_i (stride_q),
-    .width_i (width_q), .height_i (height_q),
+    .start_i (prep_start), .base_i (base_my_q), .stride_i (stride_q),
+    .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (rx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
     .strips_i (5'(RSTRIPS - 32'(r_first))),
     .busy_o (rrd_busy_unused),
@@ -307,8 +356,8 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS), .STRIPS(WSTRIPS), .PLANES(3), .CW(CW), .AW(AW))
   u_rd_weight (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i ({base_lv_q, base_lu_q, base_ly_q}), .stride_i (stride_q),
-    .width_i (width_q), .height_i (height_q),
+    .start_i (prep_start), .base_i ({base_bv_q, base_bu_q, base_by_q}), .stride_i (stride_q),
+    .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (wx_rd), .y0_i (prep_y0),
     .strips_i (4'(WSTRIPS - 32'(w_first))),
     .busy_o (wrd_busy_unused),
@@ -345,8 +394,8 @@ module mcadsw_top #(
   mcadsw_census #(.COLS(COLS)) u_census_l (
     .clk_i, .rst_ni,
     .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
-    .cfg_lo_x_i (6'(lo_bound(prep_x0))), .cfg_hi_x_i (6'(hi_bound(prep_x0, width_q, COLS))),
-    .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .cfg_lo_x_i (6'(lo_bound(prep_x0, xlo_q))), .cfg_hi_x_i (6'(hi_bound(prep_x0, xend_q, COLS))),
+    .cfg_lo_y_i (6'(lo_bound(prep_y0, 2'd0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
     .cfg_ofs_i (lx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (4'(l_first)),
     .ring_free_i (!agg_active),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
@@ -358,8 +407,8 @@ module mcadsw_top #(
   mcadsw_census #(.COLS(RCOLS)) u_census_r (
     .clk_i, .rst_ni,
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
-    .cfg_lo_x_i (lo_bound(rx0)), .cfg_hi_x_i (hi_bound(rx0, width_q, RCOLS)),
-    .cfg_lo_y_i (6'(lo_bound(prep_y0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
+    .cfg_lo_x_i (lo_bound(rx0, xlo_q)), .cfg_hi_x_i (hi_bound(rx0, xend_q, RCOLS)),
+    .cfg_lo_y_i (6'(lo_bound(prep_y0, 2'd0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
     .cfg_ofs_i (rx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (5'(r_first)),
     .ring_free_i (!agg_active),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
@@ -373,7 +422,7 @@ module mcadsw_top #(
     .thr_i (thr_q),
     .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused),
     .cfg_ofs_i (prep_x0[1:0]), .cfg_first_i (4'(w_first)),
-    .cfg_lo_i (6'(lo_bound(prep_x0))), .cfg_rows_i (prep_rows),
+    .cfg_lo_i (6'(lo_bound(prep_x0, xlo_q))), .cfg_rows_i (prep_rows),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
     .done_o (wg_done), .busy_o (wg_busy_unused),
     .row_ready_o (wrow_ready), .rd_slot_o (wrow_slot), .row_take_i (desc_push),
@@ -388,11 +437,18 @@ module mcadsw_top #(
   logic [2:0]           disp_grp;
   logic [HAGG*DB-1:0]   disp;
   logic                 mon_unused;
-  // Sub-pixel values: not used by the raw engine yet (docs/algorithm.md 12.6).
-  logic                 sub_valid_unused, sub_busy_unused;
+  // Sub-pixel values (docs/algorithm.md 12.6), two cycles after the disparities.
+  // They go to the depth FIFO in sub-pixel mode. The scheduler still follows
+  // busy_o: the WTA's last two stages do not use the census and weight banks,
+  // and the depth FIFO holds a row until its last values have arrived.
+  localparam int VB = DB + 4;
+  logic                 sub_valid, sub_busy_unused;
   logic [4:0]           sub_row_unused;
-  logic [2:0]           sub_grp_unused;
-  logic [HAGG*(DB+4)-1:0] sub_unused;
+  logic [2:0]           sub_grp;
+  logic [HAGG*VB-1:0]   sub;
+  logic                 val_valid;
+  logic [2:0]           val_grp;
+  logic [HAGG*VB-1:0]   val, disp_wide;
   logic                 mon_ev_valid, mon_fc_valid;
   logic [4:0]           mon_ev_row, mon_fc_row;
   logic [DB-1:0]        mon_ev_d, mon_fc_d;
@@ -411,8 +467,8 @@ module mcadsw_top #(
     .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
     .disp_o (disp), .busy_o (agg_busy),
-    .sub_valid_o (sub_valid_unused), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp_unused),
-    .sub_o (sub_unused), .sub_busy_o (sub_busy_unused),
+    .sub_valid_o (sub_valid), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp),
+    .sub_o (sub), .sub_busy_o (sub_busy_unused),
     .mon_ev_valid_o (mon_ev_valid), .mon_ev_row_o (mon_ev_row), .mon_ev_d_o (mon_ev_d),
     .mon_ev_grp_o (mon_ev_grp), .mon_ev_o (mon_ev),
     .mon_fc_valid_o (mon_fc_valid), .mon_fc_row_o (mon_fc_row), .mon_fc_d_o (mon_fc_d),
@@ -422,16 +478,23 @@ module mcadsw_top #(
   assign mon_unused = ^{mon_ev_valid, mon_ev_row, mon_ev_d, mon_ev_grp, mon_ev,
                         mon_fc_valid, mon_fc_row, mon_fc_d, mon_fc_grp, mon_fc,
                         lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
-                        hrd_row_unused, sub_valid_unused, sub_busy_unused, sub_row_unused,
-                        sub_grp_unused, sub_unused,
+                        hrd_row_unused, sub_busy_unused, sub_row_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused};
 
-  mcadsw_depth_fifo #(.AW(AW), .CW(CW)) u_depth_fifo (
+  for (genvar m = 0; m < HAGG; m++) begin : g_disp_wide
+    assign disp_wide[m*VB +: VB] = VB'(disp[m*DB +: DB]);
+  end
+  assign val_valid = sub_q ? sub_valid : disp_valid;
+  assign val_grp   = sub_q ? sub_grp : disp_grp;
+  assign val       = sub_q ? sub : disp_wide;
+
+  mcadsw_depth_fifo #(.AW(AW), .CW(CW), .VB(VB)) u_depth_fifo (
     .clk_i, .rst_ni,
     .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x), .desc_n_i (desc_n),
     .space_o (fifo_space), .empty_o (fifo_empty),
-    .disp_valid_i (disp_valid), .disp_grp_i (disp_grp), .disp_i (disp),
+    .wide_i (sub_q), .mirror_i (right_q), .xlo_i (xlo_q), .xend_i (xend_q),
+    .disp_valid_i (val_valid), .disp_grp_i (val_grp), .disp_i (val),
     .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata),
     .wr_gnt_i (wr_gnt)
   );

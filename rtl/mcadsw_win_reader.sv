@@ -12,7 +12,13 @@
 // The window origin x0 is word-aligned (the top starts every window at the
 // aligned word at or left of its first column), so the 4 clamped columns of a
 // strip word always lie in one memory word: clamping moves a column only to
-// column 0 or width-1, inside the strip's own word. One read per strip word.
+// column lo or width-1, inside the strip's own word. One read per strip word.
+//
+// Mirrored (the right view as base, docs/architecture.md section 12), the
+// window's columns are the pass's: pass column c is image column
+// width - 1 - c (width a multiple of 4), and the image occupies the pass's
+// columns lo .. width - 1. An aligned strip word is then an aligned memory
+// word with its bytes in reverse order.
 // Requests run ahead of the responses (up to OUTS in flight, responses in
 // order).
 `default_nettype none
@@ -33,7 +39,9 @@ module mcadsw_win_reader #(
   input  logic                 start_i,
   input  logic [PLANES*AW-1:0] base_i,     // byte address of pixel (0,0) of each plane
   input  logic [AW-1:0]        stride_i,   // bytes per image row, multiple of 4
-  input  logic [CW-1:0]        width_i,
+  input  logic [CW-1:0]        width_i,    // columns lo_i .. width_i - 1 are the image's
+  input  logic [1:0]           lo_i,
+  input  logic                 mirror_i,
   input  logic [CW-1:0]        height_i,
   input  logic signed [CW:0]   x0_i,       // window origin in image coordinates, a multiple of 4
   input  logic signed [CW:0]   y0_i,
@@ -59,8 +67,8 @@ module mcadsw_win_reader #(
     mcadsw_error_win_reader_geometry u_error ();
   end
 
-  function automatic int clampi(input int v, input int n);
-    clampi = (v < 0) ? 0 : (v > n - 1) ? n - 1 : v;
+  function automatic int clampi(input int v, input int lo, input int n);
+    clampi = (v < lo) ? lo : (v > n - 1) ? n - 1 : v;
   endfunction
 
   // A position in the strip sequence: {done, plane, strip, row}; done past the end.
@@ -99,34 +107,57 @@ module mcadsw_win_reader #(
   logic [PB-1:0] rs_plane_unused;
   logic [SB-1:0] rs_strip;
   logic [RB-1:0] rs_row_unused;
-  assign rq_done = rq_q[QW-1];       // the request side needs only done; addresses come from apos
+  assign rq_done = rq_q[QW-1];       // the request side needs only done; addresses come from pos_q
   assign {rs_done, rs_plane_unused, rs_strip, rs_row_unused} = rs_q;
   logic [QW-1:0] rs_next;
   assign rs_next = next_pos(rs_q, strips_q);
   logic [OB-1:0] inflight_q;         // requested, response not consumed yet
 
-  // Clamped image column of byte b of strip s.
+  // Clamped column of byte b of strip s.
   function automatic int col_of(input logic [SB-1:0] s, input int b,
-                                input logic signed [CW:0] x0, input logic [CW-1:0] w);
-    col_of = clampi(32'(x0) + 4*32'(s) + b, 32'(w));
+                                input logic signed [CW:0] x0, input logic [1:0] lo,
+                                input logic [CW-1:0] w);
+    col_of = clampi(32'(x0) + 4*32'(s) + b, 32'(lo), 32'(w));
   endfunction
 
   // ---- Request side -------------------------------------------------------------
-  // The request address is a register (addr_q), computed a cycle ahead: in the
+  // The request address is a register (addr_q), loaded a cycle ahead: in the
   // cycle after start_i for the first strip word (no request in that cycle), then
-  // at each grant for the next one.
+  // at each grant for the next one. Its position (pos_q) carries the parts of
+  // its address as registers, updated step by step, so the address is a sum of
+  // three registers and no multiplier lies on the per-request path:
+  //   yoff_q = clamp(y0 + row) * stride (the product only at start_i, then
+  //            + stride while the clamped row moves, back to yoff0_q at row 0);
+  //   xoff_q = the image column of the strip word's memory word, from the
+  //            unclamped pass column xabs_q = x0 + 4 strip.
   logic          addr_ok_q;          // addr_q holds the address of rq_q
   logic [AW-1:0] addr_q, addr_next;
-  logic [QW-1:0] apos;               // position whose address is computed
-  logic          a_done_unused;
-  logic [PB-1:0] a_plane;
-  logic [SB-1:0] a_strip;
-  logic [RB-1:0] a_row;
-  assign apos = addr_ok_q ? next_pos(rq_q, strips_q) : rq_q;
-  assign {a_done_unused, a_plane, a_strip, a_row} = apos;
-  assign addr_next = base_i[32'(a_plane)*AW +: AW] +
-                     AW'(clampi(32'(y0_q) + 32'(a_row), 32'(height_i))) * stride_i +
-                     AW'(4 * (col_of(a_strip, 0, x0_q, width_i) / 4));
+  logic [QW-1:0] pos_q, pos_next;    // the position whose address is loaded next
+  logic          p_done_unused;
+  logic [PB-1:0] p_plane;
+  logic [SB-1:0] p_strip_unused;
+  logic [RB-1:0] p_row;
+  logic [AW-1:0] yoff_q, yoff0_q;
+  logic signed [CW+1:0] yabs_q;      // y0 + row, unclamped
+  logic signed [CW+1:0] xabs_q;      // x0 + 4 strip, unclamped
+  logic [CW-1:0] xoff_q;
+  assign {p_done_unused, p_plane, p_strip_unused, p_row} = pos_q;
+  assign pos_next = next_pos(pos_q, strips_q);
+  assign addr_next = base_i[32'(p_plane)*AW +: AW] + yoff_q + AW'(xoff_q);
+
+  // The first image column of the memory word holding pass column x (clamped).
+  function automatic logic [CW-1:0] mem_col(input logic signed [CW+1:0] x, input logic [1:0] lo,
+                                            input logic [CW-1:0] w, input logic mirror);
+    logic [CW-1:0] word;
+    word = CW'(4 * (clampi(32'(x), 32'(lo), 32'(w)) / 4));
+    mem_col = mirror ? w - word - CW'(4) : word;
+  endfunction
+  function automatic logic [AW-1:0] row_off(input logic signed [CW+1:0] y,
+                                            input logic [CW-1:0] h, input logic [AW-1:0] stride);
+    row_off = AW'(clampi(32'(y), 0, 32'(h))) * stride;
+  endfunction
+  logic advance;                     // addr_q takes addr_next: pos_q moves on
+  assign advance = (busy_q && !addr_ok_q) || (req_o && gnt_i);
 
   // The response buffer is the pipeline itself: stop requesting when OUTS
   // responses could be waiting for the block.
@@ -145,8 +176,8 @@ module mcadsw_win_reader #(
   assign pix_valid_o = busy_q && !rs_done && fcount_q != '0;
   for (genvar b = 0; b < 4; b++) begin : g_byte
     int c;
-    assign c = col_of(rs_strip, b, x0_q, width_i);
-    assign pix_data_o[b*8 +: 8] = head[(c % 4)*8 +: 8];
+    assign c = col_of(rs_strip, b, x0_q, lo_i, width_i);
+    assign pix_data_o[b*8 +: 8] = head[(mirror_i ? 3 - c % 4 : c % 4)*8 +: 8];
   end
   assign pop = pix_valid_o && pix_ready_i;
 
@@ -155,6 +186,12 @@ module mcadsw_win_reader #(
       busy_q       <= 1'b0;
       addr_ok_q    <= 1'b0;
       addr_q       <= '0;
+      pos_q        <= '0;
+      yoff_q       <= '0;
+      yoff0_q      <= '0;
+      yabs_q       <= '0;
+      xabs_q       <= '0;
+      xoff_q       <= '0;
       x0_q         <= '0;
       y0_q         <= '0;
       strips_q     <= '0;
@@ -172,14 +209,33 @@ module mcadsw_win_reader #(
         strips_q     <= strips_i;
         rq_q         <= '0;
         rs_q         <= '0;
+        pos_q        <= '0;
+        yoff_q       <= row_off((CW + 2)'(y0_i), height_i, stride_i);
+        yoff0_q      <= row_off((CW + 2)'(y0_i), height_i, stride_i);
+        yabs_q       <= (CW + 2)'(y0_i);
+        xabs_q       <= (CW + 2)'(x0_i);
+        xoff_q       <= mem_col((CW + 2)'(x0_i), lo_i, width_i, mirror_i);
       end
-      if (busy_q && !addr_ok_q) begin
-        addr_ok_q <= 1'b1;
-        addr_q    <= addr_next;
-      end
-      if (req_o && gnt_i) begin
-        rq_q   <= next_pos(rq_q, strips_q);
+      if (busy_q && !addr_ok_q) addr_ok_q <= 1'b1;
+      if (req_o && gnt_i) rq_q <= next_pos(rq_q, strips_q);
+      if (advance) begin
         addr_q <= addr_next;
+        pos_q  <= pos_next;
+        if (pos_next[RB-1:0] == '0) begin
+          // Row 0 of the next plane or strip.
+          yoff_q <= yoff0_q;
+          yabs_q <= (CW + 2)'(y0_q);
+        end else begin
+          // The clamped row moves only while y0 + row + 1 lies inside the image.
+          if (yabs_q >= 0 && yabs_q < $signed({2'b00, height_i}) - (CW + 2)'(1))
+            yoff_q <= yoff_q + stride_i;
+          yabs_q <= yabs_q + (CW + 2)'(1);
+        end
+        if (p_row == RB'(ROWS - 1) && p_plane == PB'(PLANES - 1)) begin
+          // The next strip.
+          xabs_q <= xabs_q + (CW + 2)'(4);
+          xoff_q <= mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
+        end
       end
       // FIFO: push the response, pop the strip word.
       begin

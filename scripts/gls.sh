@@ -2,13 +2,14 @@
 # make gls: gate-level simulation. The OSU 0.18 um netlist written by
 # scripts/synth.sh runs in the same Verilator harness as the RTL (models of the
 # cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)
-# on a small crop of Teddy; every disparity is compared with the reference (the
+# on a small crop of Teddy, in the raw mode and with the right view as base and
+# sub-pixel output; every disparity is compared with the reference (the
 # harness's scoreboard) and the disparity map with the RTL's, byte for byte.
 #
 #   scripts/gls.sh            the netlist of `make synth` (DMAX = 64, build/synth)
 #   DMAX=16 scripts/gls.sh    a reduced configuration (build/synth_dmax16)
 #   FRAME=1 scripts/gls.sh    also a whole Middlebury frame (Tsukuba 384x288, D = 16,
-#                             882k cycles: about 6 min at 3 kcycles/s) against the reference
+#                             632k cycles: about 4 min at 3 kcycles/s) against the reference
 # The netlist is synthesised first if it is missing.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -54,6 +55,20 @@ if cmp -s "$out/gls.png" "$out/rtl.png"; then
   echo "gls: netlist and RTL disparity maps are identical; both equal the reference"
 else
   echo "gls: netlist and RTL disparity maps differ ($out/gls.png, $out/rtl.png)" >&2
+  exit 1
+fi
+# The other modes at gate level: the right view as base (mirrored pass, a width
+# with W % 4 = 2) with sub-pixel output (16-bit PNG).
+mcrop=100,100,42,24
+echo "gls: Teddy crop $mcrop at D = $d, right view as base, sub-pixel, netlist vs reference"
+"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$mcrop" --right --subpixel \
+    --name gls_right_sub --out "$out/gls_right_sub.png" --json "$out/gls_right_sub.json"
+"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$mcrop" --right --subpixel \
+    --name rtl_right_sub --out "$out/rtl_right_sub.png" --json "$out/rtl_right_sub.json"
+if cmp -s "$out/gls_right_sub.png" "$out/rtl_right_sub.png"; then
+  echo "gls: netlist and RTL 16-bit right-reference maps are identical; both equal the reference"
+else
+  echo "gls: netlist and RTL right-reference maps differ ($out/gls_right_sub.png, $out/rtl_right_sub.png)" >&2
   exit 1
 fi
 if [ "${FRAME:-0}" = 1 ]; then

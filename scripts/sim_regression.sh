@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The `make sim` regression: the Verilated engine on the bundled pairs (and a
 # small crop, quick to trace with WAVES=1), every
-# disparity compared with the reference. Prints one row per case, writes
+# disparity compared with the reference; raw mode, the sub-pixel mode
+# (16-bit output, docs/algorithm.md 12.6) and the right view as base (12.1;
+# no error figure: the bundled ground truth is the left view's). Prints one row per case, writes
 # BUILD/sim/summary.json, exits non-zero on any mismatch, timeout or error.
 #   scripts/sim_regression.sh BUILD_DIR [CASE] [WAVES]
 # CASE: run only that case; WAVES=1: also write BUILD/sim/CASE.fst and a
@@ -26,6 +28,17 @@ cases=(
   "cones|middlebury|cones|60|4|"
   "tsukuba_random_latency|middlebury|tsukuba|16|16|--random-latency 1"
   "teddy_crop|cif|teddy|64|4|--crop 100,100,74,38"
+  "cif_teddy_sub|cif|teddy|64|4|--subpixel"
+  "tsukuba_sub|middlebury|tsukuba|16|16|--subpixel"
+  "venus_sub|middlebury|venus|20|8|--subpixel"
+  "teddy_sub|middlebury|teddy|60|4|--subpixel"
+  "cones_sub|middlebury|cones|60|4|--subpixel"
+  "teddy_crop_sub_stride|cif|teddy|64|4|--crop 100,100,74,38 --subpixel --out-stride 1000 --random-latency 2"
+  "cif_teddy_right|cif|teddy|64|4|--right"
+  "tsukuba_right_sub|middlebury|tsukuba|16|16|--right --subpixel"
+  "venus_right|middlebury|venus|20|8|--right"
+  "teddy_right_sub|middlebury|teddy|60|4|--right --subpixel"
+  "cones_right|middlebury|cones|60|4|--right"
 )
 
 selected=()
@@ -45,9 +58,11 @@ run_case() {
   dir=$data/$set/$pair
   wave_opt=()
   if [ "$waves" = 1 ]; then wave_opt=(--waves "$out/$name.fst"); fi
+  gt_opt=(--gt "$dir/gt.png" --scale "$scale" --masks "$dir")
+  case " $extra " in *" --right "*) gt_opt=() ;; esac
   # shellcheck disable=SC2086
-  "$bin" "$dir/left.png" "$dir/right.png" -d "$d" --name "$name" --gt "$dir/gt.png" --scale "$scale" \
-    --masks "$dir" --out "$out/$name.png" --json "$out/$name.json" "${wave_opt[@]}" $extra \
+  "$bin" "$dir/left.png" "$dir/right.png" -d "$d" --name "$name" "${gt_opt[@]}" \
+    --out "$out/$name.png" --json "$out/$name.json" "${wave_opt[@]}" $extra \
     > "$out/$name.log" 2> "$out/$name.err"
 }
 export -f run_case

@@ -5,6 +5,7 @@
 #include <verilated_fst_c.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -25,31 +26,53 @@
 namespace mcadsw::sim {
 namespace {
 
-// Memory layout of a frame (docs/memory_map.md): five planes of stride bytes
-// per row (default: the width rounded up to 4), each starting on a 4 KiB
-// boundary after a 4 KiB guard.
+// Memory layout of a frame (docs/memory_map.md): six input planes (left Y, U,
+// V, right Y, U, V) of stride bytes per row (default: the width rounded up to
+// 4) and the output plane of out_stride bytes per row (default: its row, 1 or
+// 2 bytes a pixel, rounded up to 4), each starting on a 4 KiB boundary after a
+// 4 KiB guard. The right view's U and V are always in memory; only the right
+// mode may read them.
 struct Layout {
-  uint32_t stride, plane, ly, lu, lv, ry, out, total;
-  int width, height;
-  Layout(int w, int h, uint32_t origin = 0, uint32_t stride_bytes = 0) : width(w), height(h) {
-    stride = stride_bytes ? stride_bytes : uint32_t((w + 3) / 4 * 4);
+  uint32_t stride, out_stride, plane, out_plane, ly, lu, lv, ry, ru, rv, out, total;
+  int width, height, out_bpp;
+  bool right;
+  Layout(int w, int h, uint32_t origin, const EngineOptions& opt)
+      : width(w), height(h), out_bpp(opt.subpixel ? 2 : 1), right(opt.right) {
+    stride = opt.stride ? opt.stride : uint32_t((w + 3) / 4 * 4);
     if (stride < uint32_t(w) || stride % 4 != 0)
       throw std::invalid_argument("stride " + std::to_string(stride) +
                                   " must be a multiple of 4 and at least the width " + std::to_string(w));
+    const uint32_t row = uint32_t(w * out_bpp);
+    out_stride = opt.out_stride ? opt.out_stride : (row + 3) / 4 * 4;
+    if (out_stride < row || out_stride % 4 != 0)
+      throw std::invalid_argument("output stride " + std::to_string(out_stride) +
+                                  " must be a multiple of 4 and at least the output row of " +
+                                  std::to_string(row) + " bytes");
     plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
+    out_plane = (out_stride * uint32_t(h) + 4095) / 4096 * 4096;
     ly = origin + 4096;
     lu = ly + plane;
     lv = lu + plane;
     ry = lv + plane;
-    out = ry + plane;
-    total = out + plane + 4096;
+    ru = ry + plane;
+    rv = ru + plane;
+    out = rv + plane;
+    total = out + out_plane + 4096;
   }
   RawConfig raw(int disparities) const {
-    return {ly, lu, lv, ry, out, stride, width, height, disparities};
+    RawConfig c{ly, lu, lv, ry, out, stride, out_stride, width, height, disparities};
+    c.mode = (out_bpp == 2 ? 1 : 0) | (right ? 4 : 0);
+    c.base_ru = ru;
+    c.base_rv = rv;
+    return c;
   }
-  // What the frame may touch: reads in the four input planes, writes in the
-  // output plane, pixels only.
-  MemoryModel::Regions regions() const { return {{ly, lu, lv, ry}, out, stride, width, height}; }
+  // What the frame may touch: reads in the pixels of the planes its mode
+  // reads, writes in the output plane's pixels.
+  MemoryModel::Regions regions() const {
+    std::vector<uint32_t> in{ly, lu, lv, ry};
+    if (right) in = {ry, ru, rv, ly};
+    return {in, out, stride, width, height, out_stride, out_bpp};
+  }
 };
 
 void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
@@ -146,6 +169,10 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
   t.cfg_base_ry_i = c.base_ry;
   t.cfg_base_out_i = c.base_out;
   t.cfg_stride_i = c.stride;
+  t.cfg_out_stride_i = c.out_stride;
+  t.cfg_mode_i = uint32_t(c.mode) & 7;
+  t.cfg_base_ru_i = c.base_ru;
+  t.cfg_base_rv_i = c.base_rv;
   t.cfg_width_i = uint32_t(c.width) & 0xfff;
   t.cfg_height_i = uint32_t(c.height) & 0xfff;
   t.cfg_disp_i = uint32_t(c.disparities) & 0x7f;
@@ -203,32 +230,54 @@ void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const
   put_plane(mem, lay.lu, lay.stride, left.u);
   put_plane(mem, lay.lv, lay.stride, left.v);
   put_plane(mem, lay.ry, lay.stride, right.y);
-  for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.out + i] = 0xff;
+  put_plane(mem, lay.ru, lay.stride, right.u);
+  put_plane(mem, lay.rv, lay.stride, right.v);
+  for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.out + i] = 0xff;
 }
 
 // Scoreboard: every pixel of the plane against the reference, both ways (a
-// pixel the engine never wrote still holds 0xff, never a legal disparity).
+// pixel the engine never wrote still holds 0xff or 0xffff, never a legal value).
+// The reference runs the pass as the engine does: the left view as base, or,
+// in the right mode, the mirrored pair with the views swapped (docs/algorithm.md
+// 12.1), whose column W - 1 - x is output column x.
 void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right,
            const Config& cfg, const EngineOptions& opt, EngineResult& r) {
   const int W = left.width(), H = left.height();
   Config ref_cfg = cfg;
   Intermediates keep;
-  const Plane ref = disparity_map(left, right, ref_cfg, &keep);
+  const Plane ref = opt.right ? disparity_map(mirror(right), mirror(left), ref_cfg, &keep)
+                              : disparity_map(left, right, ref_cfg, &keep);
+  const Plane16 ref16 = opt.subpixel ? subpixel_from_costs(keep, ref, cfg.disparities) : Plane16();
   r.disparity = Plane(W, H);
+  if (opt.subpixel) r.disparity16 = Plane16(W, H);
   std::ostringstream rep;
+  const auto cost = [&](int d, size_t i) -> std::string {
+    return d >= 0 && d < cfg.disparities ? std::to_string(keep.final_cost[d][i]) : "-";
+  };
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const uint8_t got = mem.data()[lay.out + uint32_t(y) * lay.stride + uint32_t(x)];
-      r.disparity.at(x, y) = got;
-      const uint8_t want = ref.at(x, y);
-      if (got == want) continue;
-      if (r.mismatches++ < opt.max_reported) {
-        const size_t i = size_t(y) * W + x;
-        rep << "  mismatch at (" << x << "," << y << "): RTL d=" << int(got);
-        if (got < cfg.disparities) rep << " (cost " << keep.final_cost[got][i] << ")";
-        else rep << " (never written)";
-        rep << ", reference d=" << int(want) << " (cost " << keep.final_cost[want][i] << ")\n";
+      const int xp = opt.right ? W - 1 - x : x;  // the pass's column
+      const uint8_t* p = mem.data() + lay.out + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp);
+      const int got = opt.subpixel ? p[0] | p[1] << 8 : p[0];
+      const int want = opt.subpixel ? ref16.at(xp, y) : ref.at(xp, y);
+      if (opt.subpixel) {
+        r.disparity16.at(x, y) = uint16_t(got);
+        r.disparity.at(x, y) = uint8_t(std::min(got / kSubpixelScale, 255));
+      } else {
+        r.disparity.at(x, y) = uint8_t(got);
       }
+      if (got == want) continue;
+      if (r.mismatches++ >= opt.max_reported) continue;
+      const size_t i = size_t(y) * W + xp;
+      const int dg = opt.subpixel ? (got + kSubpixelScale / 2) / kSubpixelScale : got;
+      const int dw = ref.at(xp, y);
+      rep << "  mismatch at (" << x << "," << y << "): RTL " << (opt.subpixel ? "16d+o=" : "d=") << got;
+      if (got == (opt.subpixel ? 0xffff : 0xff)) rep << " (never written)";
+      else if (dg < cfg.disparities) rep << " (cost " << keep.final_cost[dg][i] << ")";
+      else rep << " (out of range)";
+      rep << ", reference " << (opt.subpixel ? "16d+o=" : "d=") << want << " (d=" << dw
+          << ", costs E(d-1) " << cost(dw - 1, i) << ", E(d) " << cost(dw, i) << ", E(d+1) "
+          << cost(dw + 1, i) << ")\n";
     }
   r.bus = mem.violations();
   rep << r.bus.describe();
@@ -252,7 +301,9 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
   std::ofstream f(dir + "/config.txt");
   f << "+WORDS=" << mem.size() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
     << " +BASE_LV=" << c.base_lv << " +BASE_RY=" << c.base_ry << " +BASE_OUT=" << c.base_out
-    << " +STRIDE=" << c.stride << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
+    << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv
+    << " +STRIDE=" << c.stride << " +OUT_STRIDE=" << c.out_stride << " +MODE=" << c.mode
+    << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
     << " +DISP=" << c.disparities;
   for (int i = 0; i < kWeightThresholds; ++i) f << " +THR" << i << "=" << thr[i];
   f << "\n";
@@ -280,7 +331,7 @@ void dump_after(const std::string& dir, MemoryModel& mem, uint32_t out, uint32_t
 EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
                         const EngineOptions& opt) {
   const int W = left.width(), H = left.height();
-  const Layout lay(W, H, 0, opt.stride);
+  const Layout lay(W, H, 0, opt);
   MemoryModel mem(lay.total, opt.latency);
   load_frame(mem, lay, left, right);
   mem.set_regions(lay.regions());
@@ -296,7 +347,7 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
     program(e.top(), raw, cfg.table);
     run_frame(e, r, frame_limit(W, H, opt), opt.progress);
   }
-  if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay.out, lay.stride * uint32_t(H), r);
+  if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay.out, lay.out_stride * uint32_t(H), r);
   score(mem, lay, left, right, cfg, opt, r);
   return r;
 }
@@ -306,7 +357,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
   std::vector<Layout> lays;
   uint32_t origin = 0;
   for (const Frame& f : frames) {
-    lays.emplace_back(f.left.width(), f.left.height(), origin, opt.stride);
+    lays.emplace_back(f.left.width(), f.left.height(), origin, opt);
     origin = lays.back().total;
   }
   MemoryModel mem(origin, opt.latency);

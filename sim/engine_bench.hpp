@@ -18,7 +18,10 @@ constexpr uint64_t kClockPeriodPs = 10526;
 
 struct EngineOptions {
   MemoryModel::Latency latency;
-  uint32_t stride = 0;           // bytes per row of every plane; 0: width rounded up to 4
+  uint32_t stride = 0;           // bytes per row of the input planes; 0: width rounded up to 4
+  bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
+  bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
+  uint32_t out_stride = 0;       // bytes per row of the output plane; 0: its row rounded up to 4
   long max_cycles = 0;           // 0: derived from the frame size
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
@@ -39,7 +42,8 @@ struct EngineResult {
   int error_code = 0;
   double sim_seconds = 0;
   std::string report;            // first mismatches, human-readable
-  Plane disparity;               // what the engine wrote
+  Plane disparity;               // what the engine wrote (sub-pixel mode: value / 16)
+  Plane16 disparity16;           // sub-pixel mode: what the engine wrote; otherwise empty
   // Finished, accepted, every pixel equal to the reference, every check of the
   // memory model passed.
   bool clean() const { return !timed_out && !error && mismatches == 0 && bus.total() == 0; }
@@ -64,8 +68,10 @@ struct Frame {
 };
 // A configuration as the engine's ports take it.
 struct RawConfig {
-  uint32_t base_ly, base_lu, base_lv, base_ry, base_out, stride;
+  uint32_t base_ly, base_lu, base_lv, base_ry, base_out, stride, out_stride;
   int width, height, disparities;
+  int mode = 0;  // bit 0 sub-pixel, bit 1 LR, bit 2 right view as base
+  uint32_t base_ru = 0, base_rv = 0;
 };
 enum class Fault { kNone, kResetMidFrame, kStartWhileBusy };
 struct FaultSpec {

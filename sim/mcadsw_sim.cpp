@@ -3,6 +3,7 @@
 //   mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]
 //              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
 //              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]
+//              [--subpixel] [--right] [--out-stride N]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -23,9 +24,17 @@ const char* kUsage =
     "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
+    "                  [--subpixel] [--right] [--out-stride N]\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
-    "  --stride N      bytes per row of every plane in memory: a multiple of 4, at least the\n"
-    "                  width (default: the width rounded up to 4)\n"
+    "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
+    "                  the width (default: the width rounded up to 4)\n"
+    "  --subpixel      sub-pixel mode: 16-bit output, 16 x disparity (docs/algorithm.md 12.6);\n"
+    "                  --out writes a 16-bit PNG\n"
+    "  --right         the right view as base: the right-reference map dR (docs/algorithm.md\n"
+    "                  12.1; reads the right view's U and V); --gt then needs the right view's\n"
+    "                  ground truth\n"
+    "  --out-stride N  bytes per row of the output plane: a multiple of 4, at least the width\n"
+    "                  (2 x the width with --subpixel); default: that rounded up to 4\n"
     "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
 
 // The clock of the waves and of constraints/mcadsw.sdc: the paper's 95 MHz (Table III).
@@ -71,6 +80,15 @@ int main(int argc, char** argv) {
           throw std::invalid_argument("stride " + std::to_string(v) +
                                       " must be a multiple of 4 in 4..1048576");
         opt.stride = uint32_t(v);
+      }
+      else if (a == "--subpixel") opt.subpixel = true;
+      else if (a == "--right") opt.right = true;
+      else if (a == "--out-stride") {
+        const long v = mcadsw::parse_long(val(), "output stride");
+        if (v < 4 || v % 4 != 0 || v > (1L << 20))
+          throw std::invalid_argument("output stride " + std::to_string(v) +
+                                      " must be a multiple of 4 in 4..1048576");
+        opt.out_stride = uint32_t(v);
       }
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)
@@ -122,6 +140,11 @@ int main(int argc, char** argv) {
     if (opt.stride && opt.stride < uint32_t(l.width()))
       throw std::invalid_argument("stride " + std::to_string(opt.stride) + " is below the width " +
                                   std::to_string(l.width()));
+    const int out_row = l.width() * (opt.subpixel ? 2 : 1);
+    if (opt.out_stride && opt.out_stride < uint32_t(out_row))
+      throw std::invalid_argument("output stride " + std::to_string(opt.out_stride) +
+                                  " is below the output row of " + std::to_string(out_row) +
+                                  " bytes");
     if (!out.empty()) {
       const auto parent = std::filesystem::path(out).parent_path();
       if (!parent.empty() && !std::filesystem::is_directory(parent))
@@ -135,17 +158,24 @@ int main(int argc, char** argv) {
         cv::Mat m = cv::imread(p, cv::IMREAD_UNCHANGED);
         return crop.area() > 0 && !m.empty() ? cv::Mat(m(crop)) : m;
       };
-      err_all = mcadsw::evaluate(mcadsw::to_mat(res.disparity), rd(gt), scale, rd(masks + "/nonocc.png"),
-                                 rd(masks + "/all.png"), rd(masks + "/disc.png"))
+      mcadsw::EvalOptions eo;
+      if (opt.subpixel) eo.disp_scale = mcadsw::kSubpixelScale;
+      const cv::Mat map = opt.subpixel ? mcadsw::to_mat(res.disparity16) : mcadsw::to_mat(res.disparity);
+      err_all = mcadsw::evaluate(map, rd(gt), scale, rd(masks + "/nonocc.png"), rd(masks + "/all.png"),
+                                 rd(masks + "/disc.png"), eo)
                     .all;
     }
-    if (!out.empty())
-      mcadsw::write_disparity(res.disparity, d, out, mcadsw::colormap_path_for(out));
+    if (!out.empty()) {
+      if (opt.subpixel)
+        mcadsw::write_disparity16(res.disparity16, d, out, mcadsw::colormap_path_for(out));
+      else
+        mcadsw::write_disparity(res.disparity, d, out, mcadsw::colormap_path_for(out));
+    }
     const double pixels = double(res.width) * res.height;
     const bool ok = res.clean();
-    std::printf("%-16s %4dx%-4d D=%-2d %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
+    std::printf("%-16s %4dx%-4d D=%-2d%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
                 "reads/px %5.2f  stalls %7ld  %s",
-                name.c_str(), res.width, res.height, d, res.cycles, kClockMHz * 1e6 / res.cycles,
+                name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "", opt.right ? " right" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
                 ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
@@ -156,7 +186,9 @@ int main(int argc, char** argv) {
     if (!json.empty()) {
       std::ofstream j(json);
       j << "{\"case\": \"" << name << "\", \"width\": " << res.width << ", \"height\": " << res.height
-        << ", \"disparities\": " << d << ", \"cycles\": " << res.cycles
+        << ", \"disparities\": " << d << ", \"subpixel\": " << (opt.subpixel ? "true" : "false")
+        << ", \"right\": " << (opt.right ? "true" : "false")
+        << ", \"cycles\": " << res.cycles
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
         << ", \"stall_cycles\": " << res.stall_cycles << ", \"mismatches\": " << res.mismatches
         << ", \"bus_violations\": " << res.bus.total() << ", \"stride\": " << (opt.stride ? opt.stride : (res.width + 3) / 4 * 4)

@@ -122,6 +122,17 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
   // Rows far apart in memory: padding of up to 4 KiB after each row.
   if (rng() % 4 != 0)
     c.opt.stride = uint32_t((w + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 1024)(rng));
+  // Output mode (drawn last, so the draws above stay those of earlier versions):
+  // sub-pixel in one case out of three, half of them with an output stride of
+  // their own beyond the 2-byte row.
+  if (rng() % 3 == 0) {
+    c.opt.subpixel = true;
+    if (rng() % 2)
+      c.opt.out_stride =
+          uint32_t((2 * w + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 512)(rng));
+  }
+  // The right view as base in one case out of three.
+  c.opt.right = rng() % 3 == 0;
   return c;
 }
 
@@ -182,8 +193,9 @@ int main(int argc, char** argv) {
     ++run;
     cycles += r.cycles;
     const bool ok = err.empty() && r.clean();
-    std::printf("case %4d  %-8s %4dx%-3d D=%-2d stride %5u  %s latency  %8ld cycles  %s\n", k,
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u  %s latency  %8ld cycles  %s\n", k,
                 c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
+                c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R" : "L",
                 c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED");

@@ -9,9 +9,9 @@
 //     until its grant, checked on every stalled cycle;
 //   - a read touches a pixel of one of the frame's input planes (not the
 //     padding between width and stride, not another plane, not a guard);
-//   - a write enables at least one byte, every enabled byte is a pixel of the
-//     disparity plane (x < width, y < height), and no byte is written twice
-//     in a frame.
+//   - a write enables at least one byte, every enabled byte belongs to a pixel
+//     of the disparity plane (x < width, y < height; 1 or 2 bytes a pixel), and
+//     no byte is written twice in a frame.
 // Violations are counted, the first of each kind described; a word address
 // outside the modelled memory or misaligned is a harness error (exception).
 #pragma once
@@ -38,12 +38,15 @@ class MemoryModel {
   };
 
   // The planes a frame may touch: reads inside the pixels of `inputs`, writes
-  // inside the pixels of `out`; each plane spans width x height bytes at
-  // base + y * stride + x. Width 0: nothing may be read or written.
+  // inside the pixels of `out`. Input pixel (x, y) is the byte at
+  // base + y * stride + x; output pixel (x, y) the out_bpp bytes at
+  // out + y * out_stride + out_bpp * x. Width 0: nothing may be read or written.
   struct Regions {
     std::vector<uint32_t> inputs;
     uint32_t out = 0, stride = 0;
     int width = 0, height = 0;
+    uint32_t out_stride = 0;  // 0: stride
+    int out_bpp = 1;
   };
 
   // What the checks found (counts since the last set_regions()).
@@ -64,7 +67,8 @@ class MemoryModel {
   // Starts a frame's checks: new regions, no byte written yet, counts cleared.
   void set_regions(const Regions& r) {
     regions_ = r;
-    written_.assign(size_t(r.width) * size_t(r.height), 0);
+    if (regions_.out_stride == 0) regions_.out_stride = regions_.stride;
+    written_.assign(size_t(r.width) * size_t(r.out_bpp) * size_t(r.height), 0);
     v_ = Violations{};
   }
   const Violations& violations() const { return v_; }
@@ -141,15 +145,19 @@ class MemoryModel {
     if (v_.unstable_requests++ == 0) v_.first_unstable = "cycle " + std::to_string(cycle_) + ": " + what;
   }
 
-  // Byte `a` as a pixel of a plane at `base`: its (x, y), or false.
-  bool pixel_of(uint32_t base, uint32_t a, int& x, int& y) const {
+  // Byte `a` of a plane at `base` with `stride` bytes a row and rows of `row`
+  // bytes: its byte column x and row y, or false.
+  bool pixel_of(uint32_t base, uint32_t stride, uint32_t row, uint32_t a, int& x, int& y) const {
     const Regions& r = regions_;
-    if (r.width <= 0 || a < base || r.stride == 0) return false;
+    if (r.width <= 0 || a < base || stride == 0) return false;
     const uint32_t off = a - base;
-    if (off / r.stride >= uint32_t(r.height) || off % r.stride >= uint32_t(r.width)) return false;
-    x = int(off % r.stride);
-    y = int(off / r.stride);
+    if (off / stride >= uint32_t(r.height) || off % stride >= row) return false;
+    x = int(off % stride);
+    y = int(off / stride);
     return true;
+  }
+  bool pixel_of(uint32_t base, uint32_t a, int& x, int& y) const {
+    return pixel_of(base, regions_.stride, uint32_t(regions_.width), a, x, y);
   }
 
   void access(const Request& q) {
@@ -162,10 +170,12 @@ class MemoryModel {
       for (int b = 0; b < 4; ++b) {
         if (!((q.be >> b) & 1)) continue;
         int x, y;
-        if (!pixel_of(regions_.out, addr + b, x, y)) {
+        const int row = regions_.width * regions_.out_bpp;
+        if (!pixel_of(regions_.out, regions_.out_stride, uint32_t(row), addr + b, x, y)) {
           if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
-        } else if (written_[size_t(y) * regions_.width + x]++ && v_.double_writes++ == 0) {
-          v_.first_double_write = "output pixel (" + std::to_string(x) + "," + std::to_string(y) +
+        } else if (written_[size_t(y) * size_t(row) + size_t(x)]++ && v_.double_writes++ == 0) {
+          v_.first_double_write = "output pixel (" + std::to_string(x / regions_.out_bpp) + "," +
+                                  std::to_string(y) +
                                   ") written again (word 0x" + hex(addr) + ", be " +
                                   std::to_string(q.be) + ")";
         }

@@ -12,16 +12,19 @@
 namespace mcadsw {
 namespace {
 
-Plane mirror(const Plane& p) {
-  Plane m(p.width, p.height);
+template <typename P>
+P mirror_plane(const P& p) {
+  P m(p.width, p.height);
   for (int y = 0; y < p.height; ++y)
     for (int x = 0; x < p.width; ++x) m.at(x, y) = p.at(p.width - 1 - x, y);
   return m;
 }
 
-YuvImage mirror(const YuvImage& v) { return YuvImage{mirror(v.y), mirror(v.u), mirror(v.v)}; }
-
 }  // namespace
+
+Plane mirror(const Plane& p) { return mirror_plane(p); }
+Plane16 mirror(const Plane16& p) { return mirror_plane(p); }
+YuvImage mirror(const YuvImage& v) { return YuvImage{mirror(v.y), mirror(v.u), mirror(v.v)}; }
 
 void check_views_lr(const YuvImage& left, const YuvImage& right) {
   check_views(left, right);

@@ -2,7 +2,9 @@
 # Second simulator: the same small pair through Verilator (mcadsw_sim --dump)
 # and through Icarus Verilog (4-state, tests/icarus/tb_mcadsw_top.sv) from the
 # memory image the C++ harness wrote; the disparity planes and the counters
-# must be identical, and no output may be X after reset.
+# must be identical, and no output may be X after reset. Runs the raw mode,
+# the sub-pixel mode (16-bit output plane) and the right view as base with
+# sub-pixel output (mirrored pass).
 #   tests/icarus/run.sh BUILD_DIR
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -13,20 +15,28 @@ right=$root/data/cif/teddy/right.png
 crop=${CROP:-150,120,22,12}
 d=${D:-10}
 
-"$build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" --dump "$work" > "$work/verilator.log"
-tail -1 "$work/verilator.log"
 cd "$root/rtl"
 mods=$(ls mcadsw_*.sv | grep -v '^mcadsw_pkg.sv$')
 iverilog -g2012 -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_top.sv" 2> "$work/iverilog.log" || {
   cat "$work/iverilog.log"; echo "icarus: compile failed" >&2; exit 1; }
-# shellcheck disable=SC2046
-vvp -n "$work/tb" +DIR="$work" $(cat "$work/config.txt") | tee "$work/vvp.log"
-grep -q "^FAIL" "$work/vvp.log" && exit 1
-[ -f "$work/icarus_out.hex" ] || { echo "icarus: no output" >&2; exit 1; }
-if ! cmp -s "$work/icarus_out.hex" "$work/verilator_out.hex"; then
-  diff "$work/icarus_out.hex" "$work/verilator_out.hex" | head; echo "icarus: disparity planes differ" >&2; exit 1
-fi
-if ! cmp -s "$work/icarus_counters.txt" "$work/verilator_counters.txt"; then
-  cat "$work/icarus_counters.txt" "$work/verilator_counters.txt"; echo "icarus: counters differ" >&2; exit 1
-fi
-echo "icarus: disparity plane ($(wc -l < "$work/icarus_out.hex") words) and counters identical to Verilator's: $(cat "$work/icarus_counters.txt")"
+for mode in raw subpixel right_subpixel; do
+  run=$work/$mode; mkdir -p "$run"
+  case $mode in
+    raw) flags=() ;;
+    subpixel) flags=(--subpixel) ;;
+    *) flags=(--subpixel --right) ;;
+  esac
+  "$build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" "${flags[@]}" --dump "$run" > "$run/verilator.log"
+  tail -1 "$run/verilator.log"
+  # shellcheck disable=SC2046
+  vvp -n "$work/tb" +DIR="$run" $(cat "$run/config.txt") | tee "$run/vvp.log"
+  grep -q "^FAIL" "$run/vvp.log" && exit 1
+  [ -f "$run/icarus_out.hex" ] || { echo "icarus: no output ($mode)" >&2; exit 1; }
+  if ! cmp -s "$run/icarus_out.hex" "$run/verilator_out.hex"; then
+    diff "$run/icarus_out.hex" "$run/verilator_out.hex" | head; echo "icarus: $mode output planes differ" >&2; exit 1
+  fi
+  if ! cmp -s "$run/icarus_counters.txt" "$run/verilator_counters.txt"; then
+    cat "$run/icarus_counters.txt" "$run/verilator_counters.txt"; echo "icarus: $mode counters differ" >&2; exit 1
+  fi
+  echo "icarus ($mode): output plane ($(wc -l < "$run/icarus_out.hex") words) and counters identical to Verilator's: $(cat "$run/icarus_counters.txt")"
+done

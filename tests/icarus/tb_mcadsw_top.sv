@@ -13,18 +13,20 @@ module tb_mcadsw_top;
   logic clk = 1'b0, rst_n = 1'b0;
   always #5 clk = ~clk;
 
-  int words, base_ly, base_lu, base_lv, base_ry, base_out, stride, width, height, disp;
+  int words, base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, stride, out_stride, mode, width, height, disp;
   int thr0, thr1, thr2, thr3, thr4, thr5, thr6;
   logic [31:0] mem [MAXW];
   string dir;
 
   logic [31:0] cfg_base_ly, cfg_base_lu, cfg_base_lv, cfg_base_ry, cfg_base_out, cfg_stride;
+  logic [31:0] cfg_out_stride, cfg_base_ru, cfg_base_rv;
+  logic [2:0]  cfg_mode;
   logic [11:0] cfg_width, cfg_height;
   logic [6:0]  cfg_disp;
   logic [NTHR*DCB-1:0] cfg_thr;
   logic start = 1'b0;
   logic busy, done, error;
-  logic [2:0] error_code;
+  logic [3:0] error_code;
   logic [31:0] cnt_cycles, cnt_rd, cnt_wr, cnt_stall;
   logic mem_req, mem_gnt, mem_we, mem_rvalid;
   logic [3:0] mem_be;
@@ -34,6 +36,8 @@ module tb_mcadsw_top;
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_base_ly_i (cfg_base_ly), .cfg_base_lu_i (cfg_base_lu), .cfg_base_lv_i (cfg_base_lv),
     .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),
+    .cfg_out_stride_i (cfg_out_stride), .cfg_mode_i (cfg_mode),
+    .cfg_base_ru_i (cfg_base_ru), .cfg_base_rv_i (cfg_base_rv),
     .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
     .cfg_thr_i (cfg_thr), .start_i (start),
     .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
@@ -108,7 +112,11 @@ module tb_mcadsw_top;
     ok = $value$plusargs("BASE_LV=%d", base_lv);
     ok = $value$plusargs("BASE_RY=%d", base_ry);
     ok = $value$plusargs("BASE_OUT=%d", base_out);
+    ok = $value$plusargs("BASE_RU=%d", base_ru);
+    ok = $value$plusargs("BASE_RV=%d", base_rv);
     ok = $value$plusargs("STRIDE=%d", stride);
+    ok = $value$plusargs("OUT_STRIDE=%d", out_stride);
+    ok = $value$plusargs("MODE=%d", mode);
     ok = $value$plusargs("WIDTH=%d", width);
     ok = $value$plusargs("HEIGHT=%d", height);
     ok = $value$plusargs("DISP=%d", disp);
@@ -122,7 +130,8 @@ module tb_mcadsw_top;
     if (words <= 0 || words > MAXW) begin $display("FAIL: WORDS %0d", words); $finish; end
     $readmemh({dir, "/mem.hex"}, mem, 0, words - 1);
     cfg_base_ly = base_ly; cfg_base_lu = base_lu; cfg_base_lv = base_lv; cfg_base_ry = base_ry;
-    cfg_base_out = base_out; cfg_stride = stride;
+    cfg_base_out = base_out; cfg_stride = stride; cfg_out_stride = out_stride; cfg_mode = 3'(mode);
+    cfg_base_ru = base_ru; cfg_base_rv = base_rv;
     cfg_width = width; cfg_height = height; cfg_disp = disp;
     cfg_thr = {DCB'(thr6), DCB'(thr5), DCB'(thr4), DCB'(thr3), DCB'(thr2), DCB'(thr1), DCB'(thr0)};
     repeat (4) @(posedge clk);
@@ -136,7 +145,7 @@ module tb_mcadsw_top;
       if (cycles > 10_000_000) begin $display("FAIL: no done after %0d cycles", cycles); $finish; end
     end
     fd = $fopen({dir, "/icarus_out.hex"}, "w");
-    for (int a = base_out / 4; a < (base_out + stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
+    for (int a = base_out / 4; a < (base_out + out_stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
     $fclose(fd);
     fd = $fopen({dir, "/icarus_counters.txt"}, "w");
     $fwrite(fd, "cycles %0d words_read %0d words_written %0d\n", cnt_cycles, cnt_rd, cnt_wr);

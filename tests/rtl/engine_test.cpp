@@ -120,7 +120,7 @@ TEST(Engine, StartWhileBusyIsIgnored) {
   expect_exact(clean);
   // The frame's planes are at 0x1000..0x5000 (sim::run_frames, origin 0); the
   // other valid configuration names the same planes with another size and D.
-  const sim::RawConfig valid{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 24, 20, 10, 5};
+  const sim::RawConfig valid{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 24, 24, 20, 10, 5};
   sim::RawConfig invalid = valid;
   invalid.width = 0;
   for (const auto& [what, other] : {std::pair{"a valid other", valid}, std::pair{"an invalid", invalid}})
@@ -152,10 +152,61 @@ TEST(Engine, LargeStrideWithRandomLatency) {
   expect_exact(sim::run_engine(test::random_yuv(43, 22, rng), test::random_yuv(43, 22, rng), cfg, opt));
 }
 
+// Sub-pixel mode (docs/algorithm.md 12.6): every 16-bit value equal to the
+// reference's, under random memory timing, with an output stride of its own
+// far beyond the row (the memory model checks that no padding byte is
+// written); D = 1 and D = 2 reach the d = 0 and d = D - 1 rules at every pixel.
+TEST(Engine, SubpixelOutputMatchesReference) {
+  std::mt19937 rng(9);
+  for (const int d : {1, 2, 23}) {
+    SCOPED_TRACE("D = " + std::to_string(d));
+    Config cfg;
+    cfg.disparities = d;
+    EngineOptions opt;
+    opt.subpixel = true;
+    opt.stride = 48;
+    opt.out_stride = 300;
+    opt.latency.random = true;
+    opt.latency.seed = uint32_t(d);
+    const EngineResult r =
+        sim::run_engine(test::random_yuv(41, 21, rng), test::random_yuv(41, 21, rng), cfg, opt);
+    expect_exact(r);
+    ASSERT_EQ(r.disparity16.width, 41);
+    bool offset_seen = false;
+    for (uint16_t v : r.disparity16.px) offset_seen |= v % kSubpixelScale != 0;
+    if (d > 2) {
+      EXPECT_TRUE(offset_seen) << "no pixel has a sub-pixel offset: the test is weak";
+    }
+  }
+}
+
+// The right view as base (docs/algorithm.md 12.1): the pass runs mirrored about
+// the width rounded up to 4, so every width modulo 4 shifts the image inside
+// the pass differently (W = 40..43); raw and sub-pixel output, random memory
+// timing, strides beyond the rows. The memory model checks that only the
+// right view's Y, U, V and the left view's Y are read.
+TEST(Engine, RightViewAsBaseMatchesReference) {
+  std::mt19937 rng(10);
+  for (const int w : {40, 41, 42, 43})
+    for (const bool sub : {false, true}) {
+      SCOPED_TRACE("W = " + std::to_string(w) + (sub ? ", sub-pixel" : ", raw"));
+      Config cfg;
+      cfg.disparities = 17;
+      EngineOptions opt;
+      opt.right = true;
+      opt.subpixel = sub;
+      opt.stride = 64;
+      opt.out_stride = sub ? 100 : 48;
+      opt.latency.random = true;
+      opt.latency.seed = uint32_t(w);
+      expect_exact(sim::run_engine(test::random_yuv(w, 20, rng), test::random_yuv(w, 20, rng), cfg, opt));
+    }
+}
+
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,
 // finishes at once and writes nothing.
 TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
-  const sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 60, 40, 16};
+  const sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 60, 40, 16};
   struct Bad {
     const char* what;
     sim::RawConfig cfg;
@@ -176,6 +227,42 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   with("stride not a multiple of 4", 4, [](auto& c) { c.stride = 66; });
   with("misaligned base", 5, [](auto& c) { c.base_lu = 0x2002; });
   with("output overlaps the right view", 6, [](auto& c) { c.base_out = 0x4000 + 64; });
+  // The output plane spans out_stride x height bytes (2 bytes a pixel in sub-pixel mode).
+  with("sub-pixel output plane reaches the right view", 6, [](auto& c) {
+    c.mode = 1;
+    c.out_stride = 128;
+    c.base_ry = 0x6000;
+  });
+  with("wide output stride reaches the right view", 6, [](auto& c) {
+    c.out_stride = 1024;
+    c.base_ry = 0x6000;
+  });
+  with("output stride below the width", 7, [](auto& c) { c.out_stride = 56; });
+  with("output stride not a multiple of 4", 7, [](auto& c) { c.out_stride = 66; });
+  with("sub-pixel output stride below 2 x width", 7, [](auto& c) {
+    c.mode = 1;
+    c.out_stride = 64;
+  });
+  with("LR mode (not built yet)", 8, [](auto& c) { c.mode = 2; });
+  with("LR mode with the right view as base", 8, [](auto& c) { c.mode = 6; });
+  // With the right view as base, its U and V planes are read and checked too.
+  with("right view as base, misaligned right U", 5, [](auto& c) {
+    c.mode = 4;
+    c.base_ru = 0x7002;
+    c.base_rv = 0x8000;
+  });
+  with("right view as base, output overlaps the right V", 6, [](auto& c) {
+    c.mode = 4;
+    c.base_ru = 0x7000;
+    c.base_rv = 0x5000 + 128;
+  });
+  with("right view as base, right U beyond 4 GiB", 9, [](auto& c) {
+    c.mode = 4;
+    c.base_ru = 0xfffffc00u;
+    c.base_rv = 0x8000;
+  });
+  with("output plane beyond 4 GiB", 9, [](auto& c) { c.base_out = 0xfffffc00u; });
+  with("input plane beyond 4 GiB", 9, [](auto& c) { c.base_lv = 0xfffff800u; });
   for (const Bad& b : bad) {
     const sim::EngineResult r = sim::run_raw(b.cfg, {}, 1000);
     EXPECT_FALSE(r.timed_out) << b.what;

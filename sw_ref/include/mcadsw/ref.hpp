@@ -143,6 +143,10 @@ Plane disparity_map_fast(const YuvImage& left, const YuvImage& right, const Conf
                          bool portable = false, Plane16* subpixel = nullptr);
 
 // ---- Post-processing beyond the paper (docs/algorithm.md section 12) ----------------
+// Horizontal mirror: column x becomes column W - 1 - x.
+Plane mirror(const Plane& p);
+Plane16 mirror(const Plane16& p);
+YuvImage mirror(const YuvImage& v);
 // Right view as the base (12.1): mirror(raw(mirror(right), mirror(left))). Throws
 // std::invalid_argument unless the right view's Y, U and V have the left view's size.
 Plane disparity_map_right(const YuvImage& left, const YuvImage& right, const Config& cfg);
