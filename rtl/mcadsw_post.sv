@@ -422,7 +422,7 @@ module mcadsw_post #(
             ox = dc_q - (CW + 1)'(2);            // the word's last pixel
             req_q <= 1'b1;
             we_q <= 1'b1;
-            addr_q  <= row_out + ((wide_q ? AW'({ox, 1'b0}) : AW'(ox)) & ~AW'(3));
+            addr_q  <= row_out + ((wide_q ? AW'({ox, 1'b0}) : AW'(ox)) & ~(AW'(3)));
             be_q    <= obe_q;
             wdata_q <= oword_q;
             obe_q   <= '0;

@@ -72,6 +72,8 @@ module mcadsw_top #(
   logic [CW-1:0]       xend_q, height_q;
   logic [1:0]          xlo_q;
   logic                right_q;
+  logic [CW-1:0]       width_q;        // the image width, for the checks
+  logic                lr_q;
   logic [NB-1:0]       disp_q;
   logic [NTHR*DCB-1:0] thr_q;
   logic                sub_q;          // sub-pixel mode: 16-bit output pixels
@@ -104,34 +106,39 @@ module mcadsw_top #(
   always_comb begin
     logic [SB-1:0] size, out_size;
     logic [CW:0]   out_bytes;          // bytes of an output row
-    size      = SB'(cfg_stride_i) * SB'(cfg_height_i);
-    out_size  = SB'(cfg_out_stride_i) * SB'(cfg_height_i);
-    out_bytes = cfg_sub ? {cfg_width_i, 1'b0} : {1'b0, cfg_width_i};
+    size      = SB'(stride_q) * SB'(height_q);
+    out_size  = SB'(out_stride_q) * SB'(height_q);
+    out_bytes = sub_q ? {width_q, 1'b0} : {1'b0, width_q};
     check = 4'd0;
-    if (cfg_width_i == '0 || 32'(cfg_width_i) > mcadsw_pkg::MAX_WIDTH) check = 4'd1;
-    else if (cfg_height_i == '0 || 32'(cfg_height_i) > mcadsw_pkg::MAX_HEIGHT) check = 4'd2;
-    else if (cfg_disp_i == '0 || 32'(cfg_disp_i) > DMAX) check = 4'd3;
-    else if (cfg_stride_i < AW'(cfg_width_i) || (cfg_stride_i & AW'(3)) != '0) check = 4'd4;
-    else if (((sel_by | sel_bu | sel_bv | sel_my | cfg_base_out_i) & AW'(3)) != '0) check = 4'd5;
-    else if (overlaps(cfg_base_out_i, out_size, sel_by, size) ||
-             overlaps(cfg_base_out_i, out_size, sel_bu, size) ||
-             overlaps(cfg_base_out_i, out_size, sel_bv, size) ||
-             overlaps(cfg_base_out_i, out_size, sel_my, size)) check = 4'd6;
-    else if (cfg_out_stride_i < AW'(out_bytes) || (cfg_out_stride_i & AW'(3)) != '0)
-      check = 4'd7;
-    else if (cfg_lr) check = 4'd8;
-    else if (beyond(sel_by, size) || beyond(sel_bu, size) || beyond(sel_bv, size) ||
-             beyond(sel_my, size) || beyond(cfg_base_out_i, out_size)) check = 4'd9;
+    if (width_q == '0 || 32'(width_q) > mcadsw_pkg::MAX_WIDTH) check = 4'd1;
+    else if (height_q == '0 || 32'(height_q) > mcadsw_pkg::MAX_HEIGHT) check = 4'd2;
+    else if (disp_q == '0 || 32'(disp_q) > DMAX) check = 4'd3;
+    else if (stride_q < AW'(width_q) || (stride_q & AW'(3)) != '0) check = 4'd4;
+    else if (((base_by_q | base_bu_q | base_bv_q | base_my_q | base_out_q) & AW'(3)) != '0)
+      check = 4'd5;
+    else if (overlaps(base_out_q, out_size, base_by_q, size) ||
+             overlaps(base_out_q, out_size, base_bu_q, size) ||
+             overlaps(base_out_q, out_size, base_bv_q, size) ||
+             overlaps(base_out_q, out_size, base_my_q, size)) check = 4'd6;
+    else if (out_stride_q < AW'(out_bytes) || (out_stride_q & AW'(3)) != '0) check = 4'd7;
+    else if (lr_q) check = 4'd8;
+    else if (beyond(base_by_q, size) || beyond(base_bu_q, size) || beyond(base_bv_q, size) ||
+             beyond(base_my_q, size) || beyond(base_out_q, out_size)) check = 4'd9;
   end
 
   // A start is taken only while idle: not while the scheduler runs, nor in the
-  // cycle after an accepted start (go_q), when busy_o is already high.
+  // two cycles after an accepted start (chk_q, go_q), when busy_o is already high.
+  // The configuration is registered at the start and checked in the next cycle
+  // (chk_q), from the registers: the plane-size products and compares do not
+  // follow the configuration ports' input delay.
   assign accept = start_i && !busy_o;
+  logic chk_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q} <= '0;
       {out_stride_q, xend_q, xlo_q, height_q, disp_q, thr_q, sub_q, right_q} <= '0;
+      {width_q, lr_q, chk_q} <= '0;
       done_o       <= 1'b0;
       error_o      <= 1'b0;
       error_code_o <= '0;
@@ -146,12 +153,20 @@ module mcadsw_top #(
         out_stride_q <= cfg_out_stride_i;
         sub_q      <= cfg_sub;
         // Mirrored: W4 = W rounded up to 4 columns, the image in W4 - W .. W4 - 1.
-        xend_q     <= cfg_right ? (cfg_width_i + CW'(3)) & ~CW'(3) : cfg_width_i;
+        xend_q     <= cfg_right ? (cfg_width_i + CW'(3)) & ~(CW'(3)) : cfg_width_i;
         xlo_q      <= cfg_right ? 2'(-cfg_width_i) : 2'd0;
         right_q    <= cfg_right;
+        width_q    <= cfg_width_i;
+        lr_q       <= cfg_lr;
         height_q   <= cfg_height_i;
         disp_q     <= cfg_disp_i;
         thr_q      <= cfg_thr_i;
+        error_o      <= 1'b0;
+        error_code_o <= '0;
+        done_o       <= 1'b0;
+      end
+      chk_q <= accept;
+      if (chk_q) begin
         error_o      <= check != 4'd0;
         error_code_o <= check;
         done_o       <= check != 4'd0;
@@ -160,11 +175,11 @@ module mcadsw_top #(
     end
   end
 
-  // The scheduler starts the cycle after a valid configuration is registered.
+  // The scheduler starts the cycle after a valid configuration is checked.
   logic go_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) go_q <= 1'b0;
-    else go_q <= accept && check == 4'd0;
+    else go_q <= chk_q && check == 4'd0;
   end
 
   // ---- Counters --------------------------------------------------------------------------
@@ -186,7 +201,7 @@ module mcadsw_top #(
       cnt_stall_o         <= cnt_stall_o + 32'(mem_req_o && !mem_gnt_i);
     end
   end
-  assign busy_o = sched_busy || go_q;
+  assign busy_o = sched_busy || go_q || chk_q;
 
   // ---- Block scheduler -----------------------------------------------------------------
   logic               prep_start, prep_bank, agg_bank;

@@ -27,17 +27,21 @@ run_lint() {
 
 run_yosys() {
   local tops
-  # Yosys 0.23 parses a unary minus before a size cast, `-(N)'(x)`, as a cast to
-  # the size -(N) (it read -(13)'(2) as +2; found by gate-level simulation), where
-  # Verilator and Icarus negate: the netlist would differ from the simulated RTL.
+  # Yosys 0.23 parses a unary operator before a size cast as part of the size:
+  # `-(N)'(x)` as a cast to the size -(N) (it read -(13)'(2) as +2), `~N'(x)` as
+  # a cast to the size ~N (it read ~12'(3) as 1); both found by gate-level
+  # simulation. Verilator and Icarus apply the operator to the cast value, so the
+  # netlist would differ from the simulated RTL. Write ~(N'(x)), 0 - N'(x).
+  # (A minus at the start of a line continues the expression above: binary.)
   local bad
   bad=$(for f in "${files[@]}"; do   # code only: comments stripped, line numbers kept
-          sed 's://.*$::' "$f" | grep -nE "(^|[=(,?:+*/&|^~!<>-])[[:space:]]*-[[:space:]]*\([^()]*\)'\(" |
+          sed 's://.*$::' "$f" |
+            grep -nE "((^|[=(,?:+*/&|^~!<>-])[[:space:]]*[~!]|[=(,?:+*/&|^~!<>-][[:space:]]*-)[[:space:]]*([A-Za-z_][A-Za-z_0-9]*|[0-9]+|\([^()]*\))'\(" |
             sed "s|^|$f:|" || true
         done)
   if [ -n "$bad" ]; then
     echo "$bad"
-    echo "rtl_check: unary minus before a size cast, -(N)'(x), which Yosys 0.23 misreads; write -x or 0 - N'(x)" >&2
+    echo "rtl_check: unary operator before a size cast, -(N)'(x) or ~N'(x), which Yosys 0.23 misreads; write ~(N'(x)) or 0 - N'(x)" >&2
     return 1
   fi
   for f in "${mods[@]}"; do
