@@ -72,11 +72,11 @@ module mcadsw_depth_fifo #(
   assign {h_addr, h_x, h_n} = desc_q[32'(head_q)*DESC +: DESC];
   assign h_end = {1'b0, h_x} + (CW + 1)'(h_n);
 
-  // The word being written holds columns word_x .. word_x + 3 (raw) or
-  // word_x .. word_x + 1 (wide), aligned, at or left of the row's first
-  // column inside the image, plus wofs_q. Mirrored, those columns are one aligned memory word
-  // too (xend is a multiple of 4), in reverse order.
   // The row's first column inside the image: h_x, or xlo in the first block.
+  // The word being written holds columns word_x .. word_x + 3 (raw) or
+  // word_x .. word_x + 1 (wide): aligned, at or left of h_first, plus wofs_q.
+  // Mirrored, those columns are one aligned memory word too (xend is a
+  // multiple of 4), in reverse order.
   logic [CW-1:0] h_first;
   assign h_first = (h_x < CW'(xlo_i)) ? CW'(xlo_i) : h_x;
   logic [CW:0] word_x;

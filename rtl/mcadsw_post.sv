@@ -216,16 +216,14 @@ module mcadsw_post #(
     end
   end
   // Median rows: written in C stage 2, read in D.
-  logic          mw_en;
-  logic [XI-1:0] mw_x;
-  assign mw_en = c_valid_q;
-  assign mw_x  = XI'(c_x_q);
+  logic [XI-1:0] mw_x;                         // C stage 2 writes pixel c_x_q
+  assign mw_x = XI'(c_x_q);
   logic [XI-1:0] dc_rd;
   assign dc_rd = XI'((dc_q >= {1'b0, w_q}) ? {1'b0, w_q} - (CW + 1)'(1) : dc_q);
   always_ff @(posedge clk_i) begin
-    if (mw_en && slot_q == 2'd0) med0[mw_x] <= filled;
-    if (mw_en && slot_q == 2'd1) med1[mw_x] <= filled;
-    if (mw_en && slot_q == 2'd2) med2[mw_x] <= filled;
+    if (c_valid_q && slot_q == 2'd0) med0[mw_x] <= filled;
+    if (c_valid_q && slot_q == 2'd1) med1[mw_x] <= filled;
+    if (c_valid_q && slot_q == 2'd2) med2[mw_x] <= filled;
     if (st_q == S_D_RD) begin
       m0_q <= med0[dc_rd];
       m1_q <= med1[dc_rd];

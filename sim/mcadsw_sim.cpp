@@ -60,6 +60,14 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
         return argv[++i];
       };
+      // A row stride in bytes: a multiple of 4 in 4..1 MiB.
+      auto stride = [](const std::string& text, const std::string& what) {
+        const long v = mcadsw::parse_long(text, what);
+        if (v < 4 || v % 4 != 0 || v > (1L << 20))
+          throw std::invalid_argument(what + " " + std::to_string(v) +
+                                      " must be a multiple of 4 in 4..1048576");
+        return uint32_t(v);
+      };
       if (a == "-d") d = int(mcadsw::parse_long(val(), "D"));
       else if (a == "--gamma") gamma = mcadsw::parse_double(val(), "gamma");
       else if (a == "--latency") opt.latency.fixed = int(mcadsw::parse_long(val(), "latency"));
@@ -74,22 +82,10 @@ int main(int argc, char** argv) {
       else if (a == "--json") json = val();
       else if (a == "--waves") waves = val();
       else if (a == "--dump") opt.dump_dir = val();
-      else if (a == "--stride") {
-        const long v = mcadsw::parse_long(val(), "stride");
-        if (v < 4 || v % 4 != 0 || v > (1L << 20))
-          throw std::invalid_argument("stride " + std::to_string(v) +
-                                      " must be a multiple of 4 in 4..1048576");
-        opt.stride = uint32_t(v);
-      }
+      else if (a == "--stride") opt.stride = stride(val(), "stride");
       else if (a == "--subpixel") opt.subpixel = true;
       else if (a == "--right") opt.right = true;
-      else if (a == "--out-stride") {
-        const long v = mcadsw::parse_long(val(), "output stride");
-        if (v < 4 || v % 4 != 0 || v > (1L << 20))
-          throw std::invalid_argument("output stride " + std::to_string(v) +
-                                      " must be a multiple of 4 in 4..1048576");
-        opt.out_stride = uint32_t(v);
-      }
+      else if (a == "--out-stride") opt.out_stride = stride(val(), "output stride");
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)
           throw std::invalid_argument("--crop takes X,Y,W,H");

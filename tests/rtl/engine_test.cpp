@@ -246,21 +246,16 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   with("LR mode (not built yet)", 8, [](auto& c) { c.mode = 2; });
   with("LR mode with the right view as base", 8, [](auto& c) { c.mode = 6; });
   // With the right view as base, its U and V planes are read and checked too.
-  with("right view as base, misaligned right U", 5, [](auto& c) {
-    c.mode = 4;
-    c.base_ru = 0x7002;
-    c.base_rv = 0x8000;
-  });
-  with("right view as base, output overlaps the right V", 6, [](auto& c) {
-    c.mode = 4;
-    c.base_ru = 0x7000;
-    c.base_rv = 0x5000 + 128;
-  });
-  with("right view as base, right U beyond 4 GiB", 9, [](auto& c) {
-    c.mode = 4;
-    c.base_ru = 0xfffffc00u;
-    c.base_rv = 0x8000;
-  });
+  const auto right_base = [&](const char* what, int code, uint32_t ru, uint32_t rv) {
+    with(what, code, [=](auto& c) {
+      c.mode = 4;
+      c.base_ru = ru;
+      c.base_rv = rv;
+    });
+  };
+  right_base("right view as base, misaligned right U", 5, 0x7002, 0x8000);
+  right_base("right view as base, output overlaps the right V", 6, 0x7000, 0x5000 + 128);
+  right_base("right view as base, right U beyond 4 GiB", 9, 0xfffffc00u, 0x8000);
   with("output plane beyond 4 GiB", 9, [](auto& c) { c.base_out = 0xfffffc00u; });
   with("input plane beyond 4 GiB", 9, [](auto& c) { c.base_lv = 0xfffff800u; });
   for (const Bad& b : bad) {
