@@ -21,6 +21,8 @@ package mcadsw_pkg;
   localparam int GROUPS           = 6;  // cycles per disparity
   localparam int MAX_WIDTH        = 2048;  // largest image width
   localparam int MAX_HEIGHT       = 2048;  // largest image height
+  localparam int LR_T_MAX         = 63;  // largest LR check tolerance T
+  localparam int POST_MAX_WIDTH   = 1024;  // largest width in the LR mode (post stage rows)
   // Census template: neighbour i is bit CENSUS_BITS-1-i, at (dx, dy).
   localparam int TAP0_DX = 0;
   localparam int TAP0_DY = -2;

@@ -3,10 +3,9 @@
 // back from external memory row by row and writes the LR-checked, filled,
 // 3x3-median-filtered map and the validity mask.
 //
-// First version: correct and simple, one phase of a row at a time, one memory
-// request at a time (its own 32-bit port, in the protocol of docs/memory_map.md;
-// the top will give it the external port once both passes are done). Not yet
-// in the top; the cycle target of the LR mode needs the phases overlapped.
+// Its own 32-bit port, in the protocol of docs/memory_map.md (the top gives it
+// the external port once both passes are done). Reads are pipelined (several in
+// flight), writes leave through a small queue.
 //
 // Planes (every base a multiple of 4):
 //   dL    (base_dl_i, out_stride_i): 1 byte a pixel, d; wide: a halfword a pixel,
@@ -14,22 +13,28 @@
 //   dR    (base_dr_i, stride_i): 1 byte a pixel, d
 //   out   (base_out_i, out_stride_i): 1 byte (d) or a halfword (16 d + offset) a pixel
 //   mask  (base_mask_i, stride_i): 1 byte a pixel, 255 valid, 0 filled
-// For each row y:
-//   A  read dR row y into rb
-//   B  read dL row y; valid(x) = x >= d && |d - dR(x - d)| <= T; keep the value,
-//      the valid bit and the nearest valid value to the left (forward fill)
-//   C  from right to left: the nearest valid value to the right, the filled value
-//      into median row y % 3; write mask row y
-//   D  median of row y - 1 (rows y - 2, y - 1, y, edges replicated); write it
-// and after the last row, D of row H - 1.
+// Each row y runs two phases:
+//   RD  the dR row into rb, then the dL row word by word (at most FD words
+//       requested and not yet used); a pixel a cycle, the check
+//       valid(x) = x >= d && |d - dR(x - d)| <= T, and the forward fill: vrow(x)
+//       holds the pixel's value when valid, else the nearest valid value to its
+//       left (and whether there is one).
+//   CD  from right to left, a pixel a cycle: the fill from the right (the filled
+//       value of row y replaces row y - 2 in its median row buffer, right after
+//       being read), the mask bytes of row y, and the 3x3 median of row y - 1
+//       (rows y - 2, y - 1 from the median row buffers, row y as it is filled;
+//       edges replicated).
+// After the last row a CD pass without fill makes the median of row H - 1.
 `default_nettype none
 
 module mcadsw_post #(
-  parameter int MAXW = mcadsw_pkg::MAX_WIDTH,
+  parameter int MAXW = mcadsw_pkg::POST_MAX_WIDTH,
   parameter int DB   = mcadsw_pkg::DISP_BITS,
   parameter int VB   = DB + 4,                  // value: d, or 16 d + offset
   parameter int CW   = 12,
-  parameter int AW   = 32
+  parameter int AW   = 32,
+  parameter int FD   = 4,                       // dL words requested and not yet used
+  parameter int QD   = 8                        // write queue entries
 ) (
   input  logic           clk_i,
   input  logic           rst_ni,
@@ -58,18 +63,27 @@ module mcadsw_post #(
 
   localparam int XI = $clog2(MAXW);           // pixel index (MAXW a power of 2)
   localparam int RI = XI - 2;                  // rb word index
+  localparam int FI = $clog2(FD);
+  localparam int QI = $clog2(QD);
+  localparam int QE = 1 + CW + 4 + 32;         // queue entry: {out plane, word, be, data}
+
+  if (MAXW < 4 || (1 << XI) != MAXW || MAXW > (1 << CW) || (1 << FI) != FD || (1 << QI) != QD ||
+      QD < 8) begin : g_bad_param
+    mcadsw_error_post_geometry u_error ();
+  end
 
   // ---- Row buffers (synchronous read, one write port each) -----------------------
   logic [31:0]   rb [MAXW / 4];                // dR row, 4 pixels a word
-  logic [VB:0]   vrow [MAXW];                  // {valid, value}
-  logic [VB:0]   fl [MAXW];                    // {has a valid pixel on the left, its value}
-  logic [VB-1:0] med0 [MAXW], med1 [MAXW], med2 [MAXW];  // filled rows, row % 3
+  logic [VB+1:0] vrow [MAXW];                  // {valid, has a value, value}
+  logic [VB-1:0] med0 [MAXW], med1 [MAXW];     // filled rows, row % 2
 
   // ---- Configuration, registered at start ------------------------------------------
-  logic [AW-1:0] base_dl_q, base_dr_q, base_out_q, base_mask_q, stride_q, ostride_q;
+  logic [AW-1:0] stride_q, ostride_q;
   logic [CW-1:0] w_q, h_q;
   logic [5:0]    tol_q;
   logic          wide_q;
+  // Row addresses: dR, dL and mask of row y, output of the row being filtered.
+  logic [AW-1:0] rdr_q, rdl_q, rmask_q, rout_q;
 
   // ---- Memory request register: held until granted --------------------------------
   logic          req_q, we_q;
@@ -84,43 +98,47 @@ module mcadsw_post #(
   logic port_free;                             // no request waiting for its grant
   assign port_free = !req_q || mem_gnt_i;
 
-  // ---- Sequencer ------------------------------------------------------------------
-  typedef enum logic [3:0] {
-    S_IDLE, S_A_REQ, S_A_WAIT, S_B_REQ, S_B_WAIT, S_B_PIX, S_B_DRAIN,
-    S_C_RUN, S_C_WR, S_D_RD, S_D_CMP, S_D_WR, S_DONE
-  } state_e;
+  typedef enum logic [2:0] { S_IDLE, S_RD, S_BDR, S_CD, S_NEXT, S_DONE } state_e;
   state_e        st_q;
-  logic [CW-1:0] y_q;                          // row being read (A, B, C)
-  logic [CW-1:0] r_q;                          // row being filtered (D)
-  logic          last_d_q;                     // D of the last row
-  logic [CW:0]   k_q;                          // word of the row
-  logic [CW:0]   x_q;                          // pixel
-  logic [31:0]   word_q;                       // dL word being taken apart
-  logic [AW-1:0] row_dl, row_dr, row_out, row_mask;
-  assign row_dl   = base_dl_q + AW'(y_q) * ostride_q;
-  assign row_dr   = base_dr_q + AW'(y_q) * stride_q;
-  assign row_mask = base_mask_q + AW'(y_q) * stride_q;
-  assign row_out  = base_out_q + AW'(r_q) * ostride_q;
+  logic [CW-1:0] y_q;
+  logic          donly_q;                      // the last CD pass: median of row H - 1 only
 
-  logic [CW:0] words_dr, words_dl;             // words of a dR / dL row
-  assign words_dr = ({1'b0, w_q} + (CW + 1)'(3)) >> 2;
-  assign words_dl = wide_q ? ({1'b0, w_q} + (CW + 1)'(1)) >> 1 : words_dr;
+  // ---- RD: requests, responses, the dL word queue ------------------------------------
+  logic [CW:0] nr, nt;                         // dR words, dR + dL words of a row
+  assign nr = ({1'b0, w_q} + (CW + 1)'(3)) >> 2;
+  assign nt = nr + (wide_q ? ({1'b0, w_q} + (CW + 1)'(1)) >> 1 : nr);
+  logic [CW:0]   rq_q, rs_q;                   // requests issued, responses received
+  logic [AW-1:0] ra_q;                         // next request's address
+  logic [FI:0]   cred_q;                       // dL words requested, not yet used
+  logic          rq_dl, rd_issue;
+  assign rq_dl    = rq_q >= nr;
+  assign rd_issue = st_q == S_RD && port_free && rq_q < nt && (!rq_dl || cred_q < (FI + 1)'(FD));
+  logic [FD*32-1:0] fq_q;                      // dL words received, not yet used
+  logic [FI-1:0]    fw_q, fr_q;
+  logic [FI:0]      fc_q;
+  logic             f_push, f_pop;
+  assign f_push = mem_rvalid_i && rs_q >= nr;
 
-  // ---- B: the LR check, one pixel a cycle (rb read, then the check) ----------------
-  logic [2:0]    pix_j_q;                      // pixel of word_q
-  logic [CW:0]   bx;                           // its column
+  // ---- RD: the check, a pixel a cycle ------------------------------------------------
+  logic          wv_q;                         // word_q holds pixels still to take
+  logic [31:0]   word_q;
+  logic [1:0]    j_q;                          // its pixel
+  logic [CW-1:0] bx_q;                         // that pixel's column
+  logic          b_take, b_wlast, b_rlast;
+  assign b_take  = st_q == S_RD && wv_q;
+  assign b_wlast = wide_q ? j_q[0] : j_q == 2'd3;
+  assign b_rlast = bx_q + CW'(1) == w_q;
+  assign f_pop   = fc_q != '0 && (st_q == S_RD && (!wv_q || (b_wlast && !b_rlast)));
+  logic [15:0]   b_hw;                         // wide: the pixel's halfword
+  assign b_hw = j_q[0] ? word_q[31:16] : word_q[15:0];
   logic [7:0]    bd;                           // its d
   logic [VB-1:0] bv;                           // its value
-  assign bx = wide_q ? {k_q[CW-1:0], 1'b0} + (CW + 1)'(pix_j_q)
-                     : {k_q[CW-2:0], 2'b00} + (CW + 1)'(pix_j_q);
-  logic [15:0] b_hw;                           // wide: the pixel's halfword
-  assign b_hw = pix_j_q[0] ? word_q[31:16] : word_q[15:0];
-  assign bd = wide_q ? b_hw[7:0] : word_q[8*pix_j_q[1:0] +: 8];
+  assign bd = wide_q ? b_hw[7:0] : word_q[8*j_q +: 8];
   assign bv = wide_q ? VB'({b_hw[7:0], 4'b0000}) + VB'(b_hw[12:8]) - VB'(8) : VB'(bd);
   logic [2:0] b_hw_unused;
   assign b_hw_unused = b_hw[15:13];
   logic [CW:0] bxd;                            // x - d
-  assign bxd = bx - (CW + 1)'(bd);
+  assign bxd = {1'b0, bx_q} - (CW + 1)'(bd);
   logic          p_valid_q, p_inb_q;           // stage 2: pixel, x - d >= 0
   logic [XI-1:0] p_x_q;
   logic [7:0]    p_d_q;
@@ -135,145 +153,194 @@ module mcadsw_post #(
     dr   = rb_q[8*p_byte_q +: 8];
     p_ok = p_inb_q && ((p_d_q >= dr) ? (p_d_q - dr) : (dr - p_d_q)) <= {2'b00, tol_q};
   end
-  logic b_take;                                // a pixel of word_q enters stage 2
-  assign b_take = st_q == S_B_PIX && bx < {1'b0, w_q} && pix_j_q < (wide_q ? 3'd2 : 3'd4);
 
-  // ---- C: fill from the right, mask bytes -------------------------------------------
-  logic          c_valid_q;                    // stage 2 of C: vrow/fl data for c_x_q
-  logic [CW:0]   c_x_q;
-  logic [VB:0]   vrow_q, fl_q;
+  // ---- CD: stage 1 reads column x; 2 fills and writes the mask; 3 sorts the
+  // column and shifts it in; 4 takes the median; 5 writes the output ------------------
+  logic          cd_c_q;                       // fill row y (not in the last pass)
+  logic          cd_d_q;                       // write medians (not in row 0's pass)
+  logic          ups_q, mids_q;                // median row buffers of rows r - 1 and r
+  logic [CW-1:0] cx_q;                         // next column to read
+  logic          cfl_q, cend_q;                // the flush step is next / was issued
+  logic          q_room;
+  logic          cd_issue;
+  assign cd_issue = st_q == S_CD && !cend_q && q_room;
+  logic          v2_q, f2_q, v3_q, f3_q, first3_q, v4_q, v5_q;
+  logic [CW-1:0] x2_q, x3_q, ox4_q, ox5_q;
+  logic [VB+1:0] vrow_q;
+  logic [VB-1:0] m0_q, m1_q;
+  logic [3*VB-1:0] col3_q;                     // {up, mid, down} of column x3
+  logic [3*VB-1:0] c0_q, c1_q, c2_q;           // sorted columns x, x + 1, x + 2
+  logic [VB-1:0] med5_q;
   logic          has_r_q;
   logic [VB-1:0] last_r_q;
-  logic [31:0]   mword_q;                      // mask word being assembled
-  logic [3:0]    mbe_q;
-  logic [VB-1:0] filled, fill_l;
-  logic          fl_has, px_valid;
-  assign {fl_has, fill_l} = fl_q;              // nearest valid value on the left
-  assign px_valid = vrow_q[VB];                // this pixel passed the check
-  assign filled = px_valid ? vrow_q[VB-1:0] :
-                  !fl_has ? (has_r_q ? last_r_q : '0) :
-                  !has_r_q ? fill_l :
-                  (fill_l < last_r_q) ? fill_l : last_r_q;
-  logic [1:0] med_slot_y;                      // y % 3
-  logic [1:0] slot_q;
+  logic [31:0]   mword_q, oword_q;
+  logic [3:0]    mbe_q, obe_q;
 
-  // ---- D: 3x3 median -------------------------------------------------------------------
-  logic [CW:0]   dc_q;                         // column read (0 .. W, clamped to W - 1)
-  logic [1:0]    s_up_q, s_mid_q, s_dn_q;      // median slots of rows r-1, r, r+1 (clamped)
-  logic [VB-1:0] m0_q, m1_q, m2_q;             // read data of the three rows at column dc - 1
-  logic [3*VB-1:0] colL_q, colM_q;             // columns x - 1 and x
-  logic [VB-1:0] med_out;
-  logic [31:0]   oword_q;
-  logic [3:0]    obe_q;
+  // Stage 2: the filled value.
+  logic          px_valid, px_has;
+  logic [VB-1:0] px_val, filled, up_v, mid_v;
+  assign {px_valid, px_has, px_val} = vrow_q;
+  assign filled = px_valid ? px_val :
+                  !px_has ? (has_r_q ? last_r_q : '0) :
+                  !has_r_q ? px_val :
+                  (px_val < last_r_q) ? px_val : last_r_q;
+  assign up_v  = ups_q ? m1_q : m0_q;
+  assign mid_v = mids_q ? m1_q : m0_q;
 
-  function automatic logic [VB-1:0] row_of(input logic [1:0] s, input logic [VB-1:0] a,
-                                           input logic [VB-1:0] b, input logic [VB-1:0] c);
-    row_of = (s == 2'd0) ? a : (s == 2'd1) ? b : c;
-  endfunction
-  logic [3*VB-1:0] col_new;                    // {up, mid, down} at the column just read
-  assign col_new = {row_of(s_up_q, m0_q, m1_q, m2_q), row_of(s_mid_q, m0_q, m1_q, m2_q),
-                    row_of(s_dn_q, m0_q, m1_q, m2_q)};
-
-  // Median of nine: sort each column, then the classic reduction (max of the
-  // minima, median of the medians, min of the maxima; their median).
-  function automatic logic [3*VB-1:0] sort3(input logic [VB-1:0] a, input logic [VB-1:0] b,
-                                            input logic [VB-1:0] c);
-    logic [VB-1:0] t;
+  // Median of nine from three sorted columns: the median of the largest minimum,
+  // the median of the medians and the smallest maximum.
+  function automatic logic [3*VB-1:0] sort3(input logic [3*VB-1:0] col);
+    logic [VB-1:0] a, b, c, t;
+    {a, b, c} = col;
     if (a > b) begin t = a; a = b; b = t; end
     if (b > c) begin t = b; b = c; c = t; end
     if (a > b) begin t = a; a = b; b = t; end
     sort3 = {a, b, c};                         // a <= b <= c
   endfunction
-  function automatic logic [VB-1:0] median9(input logic [3*VB-1:0] c0, input logic [3*VB-1:0] c1,
-                                            input logic [3*VB-1:0] c2);
-    logic [VB-1:0] lo0, mi0, hi0, lo1, mi1, hi1, lo2, mi2, hi2, a, b, c;
-    {lo0, mi0, hi0} = sort3(c0[2*VB +: VB], c0[VB +: VB], c0[0 +: VB]);
-    {lo1, mi1, hi1} = sort3(c1[2*VB +: VB], c1[VB +: VB], c1[0 +: VB]);
-    {lo2, mi2, hi2} = sort3(c2[2*VB +: VB], c2[VB +: VB], c2[0 +: VB]);
-    a = (lo0 > lo1) ? lo0 : lo1;  a = (a > lo2) ? a : lo2;          // max of the minima
-    c = (hi0 < hi1) ? hi0 : hi1;  c = (c < hi2) ? c : hi2;          // min of the maxima
-    {lo0, b, hi0} = sort3(mi0, mi1, mi2);                            // median of the medians
-    {lo1, mi1, hi1} = sort3(a, b, c);
-    median9 = mi1;
+  function automatic logic [VB-1:0] med3(input logic [VB-1:0] a, input logic [VB-1:0] b,
+                                         input logic [VB-1:0] c);
+    logic [VB-1:0] lo, hi;
+    lo = (a < b) ? a : b;
+    hi = (a < b) ? b : a;
+    hi = (hi < c) ? hi : c;
+    med3 = (lo > hi) ? lo : hi;
   endfunction
-  assign med_out = median9(colL_q, colM_q, col_new);
+  function automatic logic [VB-1:0] median9(input logic [3*VB-1:0] s0, input logic [3*VB-1:0] s1,
+                                            input logic [3*VB-1:0] s2);
+    logic [VB-1:0] lo, hi, a, b;
+    lo = s0[2*VB +: VB];
+    if (s1[2*VB +: VB] > lo) lo = s1[2*VB +: VB];
+    if (s2[2*VB +: VB] > lo) lo = s2[2*VB +: VB];
+    hi = s0[0 +: VB];
+    if (s1[0 +: VB] < hi) hi = s1[0 +: VB];
+    if (s2[0 +: VB] < hi) hi = s2[0 +: VB];
+    a = med3(s0[VB +: VB], s1[VB +: VB], s2[VB +: VB]);
+    b = med3(lo, a, hi);
+    median9 = b;
+  endfunction
+
+  // ---- Write queue: mask words (stage 2) and output words (stage 5) -----------------
+  logic [QD*QE-1:0] q_q;
+  logic [QI-1:0]    qw_q, qr_q;
+  logic [QI:0]      qc_q;
+  logic             qa_push, qb_push, q_pop;   // a: mask, b: output
+  logic [QE-1:0]    qa_e, qb_e, q_head;
+  logic [QI-1:0]    qw_b;                      // entry of an output word
+  assign qw_b = qw_q + QI'(qa_push);
+  // Issue a pixel only while the queue can take what the pixels in flight
+  // may still push: at most one mask and three output words (stages 1 to 5).
+  assign q_room = qc_q <= (QI + 1)'(QD - 5);
+  assign q_head = q_q[qr_q*QE +: QE];
+  assign q_pop  = qc_q != '0 && port_free && (st_q == S_CD || st_q == S_NEXT || st_q == S_DONE);
+
+  // Stage 2 mask word, stage 5 output word.
+  logic [7:0]    mbyte;
+  assign mbyte = px_valid ? 8'hff : 8'h00;
+  assign qa_push = v2_q && !f2_q && cd_c_q && x2_q[1:0] == 2'b00;
+  assign qa_e = {1'b0, x2_q >> 2, mbe_q | 4'b0001, mword_q | {24'h0, mbyte}};
+  logic [31:0] o_data;
+  logic [3:0]  o_be;
+  logic        o_last;                         // the pixel is the lowest of its word
+  // Byte b of the word: this pixel's (8-bit: byte x % 4; wide: bytes 2 (x % 2) and
+  // 2 (x % 2) + 1), or the word's so far.
+  for (genvar b = 0; b < 4; b++) begin : g_obyte
+    logic mine;
+    assign mine = wide_q ? ox5_q[0] == 1'(b / 2) : ox5_q[1:0] == 2'(b);
+    assign o_data[8*b +: 8] = !mine ? oword_q[8*b +: 8] :
+                              (wide_q && b % 2 == 1) ? 8'(16'(med5_q) >> 8) : 8'(med5_q);
+    assign o_be[b] = mine || obe_q[b];
+  end
+  assign o_last  = wide_q ? !ox5_q[0] : ox5_q[1:0] == 2'b00;
+  assign qb_push = v5_q && cd_d_q && o_last;
+  assign qb_e = {1'b1, wide_q ? ox5_q >> 1 : ox5_q >> 2, o_be, o_data};
 
   // ---- Buffer ports -------------------------------------------------------------------
-  // rb: written in A, read in B.
   always_ff @(posedge clk_i) begin
-    if (st_q == S_A_WAIT && mem_rvalid_i) rb[k_q[RI-1:0]] <= mem_rdata_i;
+    if (mem_rvalid_i && rs_q < nr) rb[rs_q[RI-1:0]] <= mem_rdata_i;
     if (b_take) rb_q <= rb[bxd[RI+1:2]];
   end
-  // vrow, fl: written in B stage 2, read in C.
   always_ff @(posedge clk_i) begin
-    if (p_valid_q) begin
-      vrow[p_x_q] <= {p_ok, p_v_q};
-      fl[p_x_q]   <= {has_l_q, last_l_q};
-    end
-    if (st_q == S_C_RUN) begin
-      vrow_q <= vrow[x_q[XI-1:0]];
-      fl_q   <= fl[x_q[XI-1:0]];
-    end
+    if (p_valid_q) vrow[p_x_q] <= {p_ok, p_ok || has_l_q, p_ok ? p_v_q : last_l_q};
+    if (cd_issue && !cfl_q) vrow_q <= vrow[XI'(cx_q)];
   end
-  // Median rows: written in C stage 2, read in D.
-  logic [XI-1:0] mw_x;                         // C stage 2 writes pixel c_x_q
-  assign mw_x = XI'(c_x_q);
-  logic [XI-1:0] dc_rd;
-  assign dc_rd = XI'((dc_q >= {1'b0, w_q}) ? {1'b0, w_q} - (CW + 1)'(1) : dc_q);
+  logic mw_en;                                 // stage 2 writes the filled value
+  assign mw_en = v2_q && !f2_q && cd_c_q;
   always_ff @(posedge clk_i) begin
-    if (c_valid_q && slot_q == 2'd0) med0[mw_x] <= filled;
-    if (c_valid_q && slot_q == 2'd1) med1[mw_x] <= filled;
-    if (c_valid_q && slot_q == 2'd2) med2[mw_x] <= filled;
-    if (st_q == S_D_RD) begin
-      m0_q <= med0[dc_rd];
-      m1_q <= med1[dc_rd];
-      m2_q <= med2[dc_rd];
-    end
+    if (mw_en && !y_q[0]) med0[XI'(x2_q)] <= filled;
+    if (cd_issue && !cfl_q) m0_q <= med0[XI'(cx_q)];
+  end
+  always_ff @(posedge clk_i) begin
+    if (mw_en && y_q[0]) med1[XI'(x2_q)] <= filled;
+    if (cd_issue && !cfl_q) m1_q <= med1[XI'(cx_q)];
   end
 
-  function automatic logic [1:0] mod3(input logic [CW-1:0] v);
-    mod3 = 2'(32'(v) % 3);
-  endfunction
-  assign med_slot_y = mod3(y_q);
-
-  // Start D for row r (rows r - 1, r, r + 1, clamped to the image).
-  task automatic start_d(input logic [CW-1:0] r);
-    r_q     <= r;
-    s_up_q  <= mod3((r == '0) ? r : r - CW'(1));
-    s_mid_q <= mod3(r);
-    s_dn_q  <= mod3((r + CW'(1) >= h_q) ? r : r + CW'(1));
-    dc_q    <= '0;
-    obe_q   <= '0;
+  // Start a CD pass: fill (and median of the previous row) or the last median.
+  task automatic start_cd(input logic fill, input logic medians);
+    cd_c_q  <= fill;
+    cd_d_q  <= medians;
+    // Median rows: row r - 1 (clamped) and row r, r = y - 1 (fill) or y (last).
+    if (fill) begin
+      mids_q <= !y_q[0];
+      ups_q  <= (y_q == CW'(1)) ? !y_q[0] : y_q[0];
+    end else begin
+      mids_q <= y_q[0];
+      ups_q  <= (y_q == '0) ? y_q[0] : !y_q[0];
+    end
+    cx_q    <= w_q - CW'(1);
+    cfl_q   <= 1'b0;
+    cend_q  <= 1'b0;
+    has_r_q <= 1'b0;
+    mword_q <= '0;
+    mbe_q   <= '0;
     oword_q <= '0;
-    st_q    <= S_D_RD;
+    obe_q   <= '0;
+    st_q    <= S_CD;
   endtask
 
-  // Next row after C of row y: D of row y - 1, or the next row's A.
+  // Start the RD phase of row y (addresses already set).
+  task automatic start_rd(input logic [AW-1:0] dr_row);
+    ra_q    <= dr_row;
+    rq_q    <= '0;
+    rs_q    <= '0;
+    cred_q  <= '0;
+    wv_q    <= 1'b0;
+    bx_q    <= '0;
+    has_l_q <= 1'b0;
+    st_q    <= S_RD;
+  endtask
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       st_q <= S_IDLE;
-      base_dl_q <= '0;
-      base_dr_q <= '0;
-      base_out_q <= '0;
-      base_mask_q <= '0;
       stride_q <= '0;
       ostride_q <= '0;
       w_q <= '0;
       h_q <= '0;
       tol_q <= '0;
       wide_q <= '0;
+      rdr_q <= '0;
+      rdl_q <= '0;
+      rmask_q <= '0;
+      rout_q <= '0;
       req_q <= '0;
       we_q <= '0;
       be_q <= '0;
       addr_q <= '0;
       wdata_q <= '0;
       y_q <= '0;
-      r_q <= '0;
-      last_d_q <= '0;
-      k_q <= '0;
-      x_q <= '0;
+      donly_q <= '0;
+      rq_q <= '0;
+      rs_q <= '0;
+      ra_q <= '0;
+      cred_q <= '0;
+      fq_q <= '0;
+      fw_q <= '0;
+      fr_q <= '0;
+      fc_q <= '0;
+      wv_q <= '0;
       word_q <= '0;
-      pix_j_q <= '0;
+      j_q <= '0;
+      bx_q <= '0;
       p_valid_q <= '0;
       p_inb_q <= '0;
       p_x_q <= '0;
@@ -282,184 +349,215 @@ module mcadsw_post #(
       p_byte_q <= '0;
       has_l_q <= '0;
       last_l_q <= '0;
-      c_valid_q <= '0;
-      c_x_q <= '0;
+      cd_c_q <= '0;
+      cd_d_q <= '0;
+      ups_q <= '0;
+      mids_q <= '0;
+      cx_q <= '0;
+      cfl_q <= '0;
+      cend_q <= '0;
+      v2_q <= '0;
+      f2_q <= '0;
+      v3_q <= '0;
+      f3_q <= '0;
+      first3_q <= '0;
+      v4_q <= '0;
+      v5_q <= '0;
+      x2_q <= '0;
+      x3_q <= '0;
+      ox4_q <= '0;
+      ox5_q <= '0;
+      col3_q <= '0;
+      c0_q <= '0;
+      c1_q <= '0;
+      c2_q <= '0;
+      med5_q <= '0;
       has_r_q <= '0;
       last_r_q <= '0;
       mword_q <= '0;
-      mbe_q <= '0;
-      slot_q <= '0;
-      dc_q <= '0;
-      s_up_q <= '0;
-      s_mid_q <= '0;
-      s_dn_q <= '0;
-      colL_q <= '0;
-      colM_q <= '0;
       oword_q <= '0;
+      mbe_q <= '0;
       obe_q <= '0;
+      q_q <= '0;
+      qw_q <= '0;
+      qr_q <= '0;
+      qc_q <= '0;
       done_o <= 1'b0;
     end else begin
       done_o <= 1'b0;
       if (req_q && mem_gnt_i) req_q <= 1'b0;
-      p_valid_q <= 1'b0;
-      c_valid_q <= 1'b0;
-      case (st_q)
-        S_IDLE: if (start_i) begin
-          base_dl_q <= base_dl_i;  base_dr_q <= base_dr_i;
-          base_out_q <= base_out_i; base_mask_q <= base_mask_i;
-          stride_q <= stride_i;    ostride_q <= out_stride_i;
-          w_q <= width_i;  h_q <= height_i;  tol_q <= tol_i;  wide_q <= wide_i;
-          y_q <= '0;  k_q <= '0;
-          st_q <= S_A_REQ;
+
+      // ---- RD: read requests (dR words, then dL words within the credit) ----------
+      if (rd_issue) begin
+        req_q  <= 1'b1;
+        we_q   <= 1'b0;
+        addr_q <= ra_q;
+        ra_q   <= (rq_q + (CW + 1)'(1) == nr) ? rdl_q : ra_q + AW'(4);
+        rq_q   <= rq_q + 1'b1;
+      end
+      if (mem_rvalid_i) rs_q <= rs_q + 1'b1;
+      cred_q <= cred_q + (FI + 1)'(rd_issue && rq_dl) - (FI + 1)'(f_pop);
+      if (f_push) begin
+        fq_q[fw_q*32 +: 32] <= mem_rdata_i;
+        fw_q <= fw_q + 1'b1;
+      end
+      if (f_pop) fr_q <= fr_q + 1'b1;
+      fc_q <= fc_q + (FI + 1)'(f_push) - (FI + 1)'(f_pop);
+
+      // ---- RD: the pixels of the dL words ------------------------------------------
+      p_valid_q <= b_take;
+      if (b_take) begin
+        p_inb_q  <= !bxd[CW];
+        p_x_q    <= XI'(bx_q);
+        p_d_q    <= bd;
+        p_v_q    <= bv;
+        p_byte_q <= bxd[1:0];
+        bx_q     <= bx_q + CW'(1);
+        j_q      <= j_q + 2'd1;
+        if (b_rlast) begin
+          wv_q <= 1'b0;
+          st_q <= S_BDR;
+        end else if (b_wlast) begin
+          wv_q <= f_pop;
+          j_q  <= '0;
         end
-        // A: dR row, a word at a time.
-        S_A_REQ: if (port_free) begin
-          req_q <= 1'b1;
-          we_q <= 1'b0;
-          addr_q <= row_dr + AW'({k_q, 2'b00});
-          st_q <= S_A_WAIT;
-        end
-        S_A_WAIT: if (mem_rvalid_i) begin
-          k_q  <= k_q + 1'b1;
-          if (k_q + 1'b1 == words_dr) begin
-            k_q <= '0;
-            has_l_q <= 1'b0;
-            st_q <= S_B_REQ;
-          end else st_q <= S_A_REQ;
-        end
-        // B: dL row, a word at a time, its pixels one a cycle.
-        S_B_REQ: if (port_free) begin
-          req_q <= 1'b1;
-          we_q <= 1'b0;
-          addr_q <= row_dl + AW'({k_q, 2'b00});
-          st_q <= S_B_WAIT;
-        end
-        S_B_WAIT: if (mem_rvalid_i) begin
-          word_q  <= mem_rdata_i;
-          pix_j_q <= '0;
-          st_q    <= S_B_PIX;
-        end
-        S_B_PIX: begin
-          if (b_take) begin
-            p_valid_q <= 1'b1;
-            p_inb_q   <= !bxd[CW];
-            p_x_q     <= XI'(bx);
-            p_d_q     <= bd;
-            p_v_q     <= bv;
-            p_byte_q  <= bxd[1:0];
-            pix_j_q   <= pix_j_q + 3'd1;
-          end else begin
-            // Word done: the next, or the end of the row once stage 2 drains.
-            k_q <= k_q + 1'b1;
-            st_q <= (k_q + 1'b1 == words_dl) ? S_B_DRAIN : S_B_REQ;
-          end
-        end
-        S_B_DRAIN: begin
-          // The last pixel's stage 2 happens in this cycle; C starts at x = W - 1.
-          x_q     <= {1'b0, w_q} - (CW + 1)'(1);
-          has_r_q <= 1'b0;
-          slot_q  <= med_slot_y;
-          mword_q <= '0;
-          mbe_q   <= '0;
-          st_q    <= S_C_RUN;
-        end
-        // C: from right to left, one pixel a cycle; a mask word is written when
-        // its lowest pixel (x % 4 == 0) has been done.
-        S_C_RUN: begin
-          c_valid_q <= 1'b1;
-          c_x_q     <= x_q;
-          if (x_q[1:0] == 2'b00 || x_q == '0) st_q <= S_C_WR;
-          else x_q <= x_q - 1'b1;
-        end
-        S_C_WR: if (port_free && !c_valid_q) begin
-          req_q <= 1'b1;
-          we_q <= 1'b1;
-          addr_q  <= row_mask + AW'({c_x_q[CW:2], 2'b00});
-          be_q    <= mbe_q;
-          wdata_q <= mword_q;
-          mbe_q   <= '0;
-          mword_q <= '0;
-          if (c_x_q == '0) begin
-            // Row y filled: the median of row y - 1 can be made.
-            if (y_q != '0) start_d(y_q - CW'(1));
-            else st_q <= S_D_WR;                 // no median yet: next row (below)
-          end else begin
-            x_q  <= c_x_q - 1'b1;
-            st_q <= S_C_RUN;
-          end
-        end
-        // D: read column dc of the three rows, then shift and filter.
-        S_D_RD: st_q <= S_D_CMP;
-        S_D_CMP: begin
-          dc_q <= dc_q + 1'b1;
-          if (dc_q == '0) begin
-            colL_q <= col_new;
-            colM_q <= col_new;
-            st_q   <= S_D_RD;
-          end else begin
-            // Output pixel x = dc - 1.
-            logic [CW:0] ox;
-            ox = dc_q - (CW + 1)'(1);
-            colL_q <= colM_q;
-            colM_q <= col_new;
-            if (wide_q) begin
-              oword_q[16*ox[0] +: 16] <= 16'(med_out);
-              obe_q[2*ox[0] +: 2] <= 2'b11;
-            end else begin
-              oword_q[8*ox[1:0] +: 8] <= 8'(med_out);
-              obe_q[ox[1:0]] <= 1'b1;
-            end
-            if ((wide_q ? ox[0] == 1'b1 : ox[1:0] == 2'b11) || ox + (CW + 1)'(1) == {1'b0, w_q})
-              st_q <= S_D_WR;
-            else st_q <= S_D_RD;
-          end
-        end
-        S_D_WR: if (port_free) begin
-          if (obe_q != '0) begin
-            logic [CW:0] ox;
-            ox = dc_q - (CW + 1)'(2);            // the word's last pixel
-            req_q <= 1'b1;
-            we_q <= 1'b1;
-            addr_q  <= row_out + ((wide_q ? AW'({ox, 1'b0}) : AW'(ox)) & ~(AW'(3)));
-            be_q    <= obe_q;
-            wdata_q <= oword_q;
-            obe_q   <= '0;
-            oword_q <= '0;
-          end
-          if (obe_q != '0 && dc_q <= {1'b0, w_q}) st_q <= S_D_RD;
-          else if (last_d_q) st_q <= S_DONE;
-          else if (y_q + CW'(1) < h_q) begin
-            // The next row.
-            y_q  <= y_q + CW'(1);
-            k_q  <= '0;
-            st_q <= S_A_REQ;
-          end else begin
-            // After the last row's C: the median of row H - 1.
-            last_d_q <= 1'b1;
-            start_d(h_q - CW'(1));
-          end
-        end
-        S_DONE: if (!req_q) begin
-          last_d_q <= 1'b0;
-          done_o   <= 1'b1;
-          st_q     <= S_IDLE;
-        end
-        default: st_q <= S_IDLE;
-      endcase
-      // B stage 2: the check, the forward fill.
+      end
+      if (f_pop) begin
+        word_q <= fq_q[fr_q*32 +: 32];
+        wv_q   <= 1'b1;
+        j_q    <= '0;
+      end
+      // Stage 2: the check and the forward fill.
       if (p_valid_q && p_ok) begin
         has_l_q  <= 1'b1;
         last_l_q <= p_v_q;
       end
-      // C stage 2: the fill from the right, the mask byte.
-      if (c_valid_q) begin
-        if (vrow_q[VB]) begin
-          has_r_q  <= 1'b1;
-          last_r_q <= vrow_q[VB-1:0];
-        end
-        mword_q[8*c_x_q[1:0] +: 8] <= vrow_q[VB] ? 8'hff : 8'h00;
-        mbe_q[c_x_q[1:0]] <= 1'b1;
+
+      // ---- CD -------------------------------------------------------------------------
+      // Stage 1: read column cx, or the flush step after column 0.
+      v2_q <= cd_issue;
+      if (cd_issue) begin
+        f2_q <= cfl_q;
+        x2_q <= cx_q;
+        if (cfl_q) cend_q <= 1'b1;
+        else if (cx_q == '0) cfl_q <= 1'b1;
+        else cx_q <= cx_q - CW'(1);
       end
+      // Stage 2: the fill from the right, the mask byte, the column.
+      v3_q <= v2_q;
+      if (v2_q) begin
+        f3_q     <= f2_q;
+        x3_q     <= x2_q;
+        first3_q <= x2_q + CW'(1) == w_q;
+        col3_q   <= {up_v, mid_v, cd_c_q ? filled : mid_v};
+        if (!f2_q && cd_c_q) begin
+          if (px_valid) begin
+            has_r_q  <= 1'b1;
+            last_r_q <= px_val;
+          end
+          if (x2_q[1:0] == 2'b00) begin
+            mword_q <= '0;
+            mbe_q   <= '0;
+          end else begin
+            mword_q[8*x2_q[1:0] +: 8] <= mbyte;
+            mbe_q[x2_q[1:0]] <= 1'b1;
+          end
+        end
+      end
+      // Stage 3: sort the column, shift it in (the first one twice: right edge;
+      // the flush step shifts column 0 in again: left edge).
+      v4_q <= v3_q && !(first3_q && !f3_q);
+      if (v3_q) begin
+        if (f3_q) begin
+          c1_q  <= c0_q;
+          c2_q  <= c1_q;
+          ox4_q <= '0;
+        end else begin
+          c0_q  <= sort3(col3_q);
+          c1_q  <= first3_q ? sort3(col3_q) : c0_q;
+          c2_q  <= c1_q;
+          ox4_q <= x3_q + CW'(1);
+        end
+      end
+      // Stage 4: the median of column ox4.
+      v5_q <= v4_q;
+      if (v4_q) begin
+        med5_q <= median9(c0_q, c1_q, c2_q);
+        ox5_q  <= ox4_q;
+      end
+      // Stage 5: the output word.
+      if (v5_q && cd_d_q) begin
+        if (o_last) begin
+          oword_q <= '0;
+          obe_q   <= '0;
+        end else begin
+          oword_q <= o_data;
+          obe_q   <= o_be;
+        end
+      end
+
+      // ---- Write queue ----------------------------------------------------------------
+      if (qa_push) q_q[qw_q*QE +: QE] <= qa_e;
+      if (qb_push) q_q[qw_b*QE +: QE] <= qb_e;
+      qw_q <= qw_q + QI'(qa_push) + QI'(qb_push);
+      if (q_pop) begin
+        logic          e_out;
+        logic [CW-1:0] e_k;
+        logic [3:0]    e_be;
+        logic [31:0]   e_data;
+        {e_out, e_k, e_be, e_data} = q_head;
+        req_q   <= 1'b1;
+        we_q    <= 1'b1;
+        addr_q  <= (e_out ? rout_q : rmask_q) + AW'({e_k, 2'b00});
+        be_q    <= e_be;
+        wdata_q <= e_data;
+        qr_q    <= qr_q + 1'b1;
+      end
+      qc_q <= qc_q + (QI + 1)'(qa_push) + (QI + 1)'(qb_push) - (QI + 1)'(q_pop);
+
+      // ---- Sequencer ------------------------------------------------------------------
+      case (st_q)
+        S_IDLE: if (start_i) begin
+          stride_q <= stride_i;
+          ostride_q <= out_stride_i;
+          w_q <= width_i;
+          h_q <= height_i;
+          tol_q <= tol_i;
+          wide_q <= wide_i;
+          rdr_q <= base_dr_i;
+          rdl_q <= base_dl_i;
+          rmask_q <= base_mask_i;
+          rout_q <= base_out_i;
+          y_q <= '0;
+          donly_q <= 1'b0;
+          start_rd(base_dr_i);
+        end
+        S_RD: ;                                  // left by the last pixel (above)
+        // The last pixel's check happens in this cycle; CD reads from the next.
+        S_BDR: start_cd(1'b1, y_q != '0);
+        S_CD: if (cend_q && !v2_q && !v3_q && !v4_q && !v5_q) st_q <= S_NEXT;
+        S_NEXT: if (qc_q == '0) begin
+          // Row y done (its mask, the median of row y - 1); the output row moves
+          // to row y once it has been written.
+          if (y_q != '0) rout_q <= rout_q + ostride_q;
+          if (donly_q) st_q <= S_DONE;
+          else if (y_q + CW'(1) < h_q) begin
+            y_q     <= y_q + CW'(1);
+            rdr_q   <= rdr_q + stride_q;
+            rdl_q   <= rdl_q + ostride_q;
+            rmask_q <= rmask_q + stride_q;
+            start_rd(rdr_q + stride_q);
+          end else begin
+            donly_q <= 1'b1;
+            start_cd(1'b0, 1'b1);
+          end
+        end
+        S_DONE: if (!req_q) begin
+          done_o <= 1'b1;
+          st_q   <= S_IDLE;
+        end
+        default: st_q <= S_IDLE;
+      endcase
     end
   end
 

@@ -33,6 +33,8 @@ int main() {
   p("GROUPS", kGroups, "cycles per disparity");
   p("MAX_WIDTH", kMaxWidth, "largest image width");
   p("MAX_HEIGHT", kMaxHeight, "largest image height");
+  p("LR_T_MAX", kLrToleranceMax, "largest LR check tolerance T");
+  p("POST_MAX_WIDTH", kPostMaxWidth, "largest width in the LR mode (post stage rows)");
   std::printf("  // Census template: neighbour i is bit CENSUS_BITS-1-i, at (dx, dy).\n");
   for (int i = 0; i < kCensusBits; ++i) {
     std::printf("  localparam int TAP%d_DX = %d;\n", i, kCensusTaps[i].dx);

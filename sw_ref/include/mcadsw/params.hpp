@@ -93,5 +93,11 @@ inline constexpr int kLrToleranceMax = 63;     // T of the left-right check: 0..
 inline constexpr int kLrToleranceDefault = 1;
 inline constexpr int kSubpixelScale = 16;      // sub-pixel value = 16 d + offset (OpenCV's scale)
 inline constexpr int kSubpixelOffsetMax = kSubpixelScale / 2;  // |offset| <= 8 (section 12.6)
+// The LR mode's post-processing stage keeps rows of the maps on chip: its buffers
+// are sized for this width (docs/architecture.md section 12); wider frames are a
+// configuration error in the LR mode only.
+inline constexpr int kPostMaxWidth = 1024;
+static_assert(kPostMaxWidth <= kMaxWidth && (kPostMaxWidth & (kPostMaxWidth - 1)) == 0,
+              "the post stage's row buffers: a power of two, at most the largest width");
 
 }  // namespace mcadsw
