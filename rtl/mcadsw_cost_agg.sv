@@ -73,6 +73,7 @@ module mcadsw_cost_agg #(
   output logic [RB-1:0]                 sub_row_o,
   output logic [GB-1:0]                 sub_grp_o,
   output logic [HAGG*SPB-1:0]           sub_o,
+  output logic [HAGG*DB-1:0]            sub_d_o,      // their integer disparities
   output logic                          sub_busy_o,   // sub-pixel values still to come
   // Monitor taps for verification: vertical and final costs with their tags
   output logic                          mon_ev_valid_o,
@@ -285,7 +286,8 @@ module mcadsw_cost_agg #(
     .disp_o  (disp_o),
     .sub_valid_o,
     .sub_grp_o,
-    .sub_o
+    .sub_o,
+    .sub_d_o
   );
 
   logic [RB-1:0] sub_row1_q;

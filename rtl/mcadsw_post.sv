@@ -9,7 +9,7 @@
 //
 // Planes (every base a multiple of 4):
 //   dL    (base_dl_i, out_stride_i): 1 byte a pixel, d; wide: a halfword a pixel,
-//         d in bits 7:0 and offset + 8 in bits 12:8 (the value is 16 d + offset)
+//         d in bits DB-1:0 and offset + 8 in bits DB+4:DB (the value is 16 d + offset)
 //   dR    (base_dr_i, stride_i): 1 byte a pixel, d
 //   out   (base_out_i, out_stride_i): 1 byte (d) or a halfword (16 d + offset) a pixel
 //   mask  (base_mask_i, stride_i): 1 byte a pixel, 255 valid, 0 filled
@@ -133,10 +133,10 @@ module mcadsw_post #(
   assign b_hw = j_q[0] ? word_q[31:16] : word_q[15:0];
   logic [7:0]    bd;                           // its d
   logic [VB-1:0] bv;                           // its value
-  assign bd = wide_q ? b_hw[7:0] : word_q[8*j_q +: 8];
-  assign bv = wide_q ? VB'({b_hw[7:0], 4'b0000}) + VB'(b_hw[12:8]) - VB'(8) : VB'(bd);
-  logic [2:0] b_hw_unused;
-  assign b_hw_unused = b_hw[15:13];
+  assign bd = wide_q ? 8'(b_hw[DB-1:0]) : word_q[8*j_q +: 8];
+  assign bv = wide_q ? VB'({b_hw[DB-1:0], 4'b0000}) + VB'(b_hw[DB+4:DB]) - VB'(8) : VB'(bd);
+  logic [15-DB-5:0] b_hw_unused;
+  assign b_hw_unused = b_hw[15:DB+5];
   logic [CW:0] bxd;                            // x - d
   assign bxd = {1'b0, bx_q} - (CW + 1)'(bd);
   logic          p_valid_q, p_inb_q;           // stage 2: pixel, x - d >= 0

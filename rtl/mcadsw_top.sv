@@ -20,12 +20,16 @@ module mcadsw_top #(
   input  logic [AW-1:0]       cfg_base_lu_i,   // left U plane
   input  logic [AW-1:0]       cfg_base_lv_i,   // left V plane
   input  logic [AW-1:0]       cfg_base_ry_i,   // right Y plane
-  input  logic [AW-1:0]       cfg_base_ru_i,   // right U plane (read only with the right view as base)
+  input  logic [AW-1:0]       cfg_base_ru_i,   // right U plane (read with the right view as base, or LR)
   input  logic [AW-1:0]       cfg_base_rv_i,   // right V plane (idem)
   input  logic [AW-1:0]       cfg_base_out_i,  // disparity plane
+  input  logic [AW-1:0]       cfg_base_dl_i,   // LR: scratch plane of the left map (out stride)
+  input  logic [AW-1:0]       cfg_base_dr_i,   // LR: scratch plane of the right map (input stride)
+  input  logic [AW-1:0]       cfg_base_mask_i, // LR: validity mask plane (input stride)
   input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of the input planes
   input  logic [AW-1:0]       cfg_out_stride_i,// bytes per row of the disparity plane
-  input  logic [2:0]          cfg_mode_i,      // bit 0 sub-pixel, bit 1 LR (not built), bit 2 right base
+  input  logic [2:0]          cfg_mode_i,      // bit 0 sub-pixel, bit 1 LR, bit 2 right base
+  input  logic [7:0]          cfg_lr_t_i,      // LR: check tolerance T, 0 .. LR_T_MAX
   input  logic [CW-1:0]       cfg_width_i,
   input  logic [CW-1:0]       cfg_height_i,
   input  logic [NB-1:0]       cfg_disp_i,      // D
@@ -73,7 +77,13 @@ module mcadsw_top #(
   logic [1:0]          xlo_q;
   logic                right_q;
   logic [CW-1:0]       width_q;        // the image width, for the checks
-  logic                lr_q;
+  logic                lr_q;           // LR mode: three passes (below)
+  logic                lr_sub_q;       // LR mode with sub-pixel output
+  logic                pack_q;         // this pass writes the LR scratch format (dL, sub-pixel)
+  logic [1:0]          pass_q;         // LR: 0 left map, 1 right map, 2 post stage
+  // LR mode: the planes of the later passes, T.
+  logic [AW-1:0]       base_ru_q, base_rv_q, base_dl_q, base_dr_q, base_mask_q, base_fout_q;
+  logic [7:0]          lr_t_q;
   logic [NB-1:0]       disp_q;
   logic [NTHR*DCB-1:0] thr_q;
   logic                sub_q;          // sub-pixel mode: 16-bit output pixels
@@ -81,8 +91,9 @@ module mcadsw_top #(
   logic [3:0]          check;
 
   // Error codes (docs/memory_map.md): 1 width, 2 height, 3 D, 4 input stride,
-  // 5 base alignment, 6 output overlaps an input, 7 output stride, 8 mode,
-  // 9 a plane reaches beyond the 32-bit address space.
+  // 5 base alignment, 6 a written plane overlaps a read or another written plane,
+  // 7 output stride, 8 mode, 9 a plane reaches beyond the 32-bit address space,
+  // 10 LR tolerance, 11 LR width, 12 LR right colour planes not configured.
   localparam int SB = AW + CW;         // plane sizes: stride x height, exact
   function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
@@ -103,27 +114,65 @@ module mcadsw_top #(
   assign sel_bv = cfg_right ? cfg_base_rv_i : cfg_base_lv_i;
   assign sel_my = cfg_right ? cfg_base_ly_i : cfg_base_ry_i;
 
+  // Planes the frame reads (in: base Y, U, V, match Y; LR: right U, V) and writes
+  // (wr: the first pass's output; LR: dR, the output, the mask). In LR mode the
+  // first pass's output is dL, and dL and the output have the output stride, dR
+  // and the mask the input stride.
+  localparam int NIN = 6, NWR = 4;
+  logic [NIN*AW-1:0] in_base;
+  logic [NIN-1:0]    in_en;
+  logic [NWR*AW-1:0] wr_base;
+  logic [NWR-1:0]    wr_en, wr_outs;   // wr_outs: the plane has the output stride
+  assign in_base = {base_rv_q, base_ru_q, base_my_q, base_bv_q, base_bu_q, base_by_q};
+  assign in_en   = {lr_q, lr_q, 4'b1111};
+  assign wr_base = {base_mask_q, base_fout_q, base_dr_q, base_out_q};
+  assign wr_en   = {lr_q, lr_q, lr_q, 1'b1};
+  assign wr_outs = 4'b0101;
+
   always_comb begin
     logic [SB-1:0] size, out_size;
     logic [CW:0]   out_bytes;          // bytes of an output row
+    logic          misaligned, overlap, past;
     size      = SB'(stride_q) * SB'(height_q);
     out_size  = SB'(out_stride_q) * SB'(height_q);
     out_bytes = sub_q ? {width_q, 1'b0} : {1'b0, width_q};
+    misaligned = 1'b0;
+    past       = 1'b0;
+    overlap    = 1'b0;
+    for (int i = 0; i < NIN; i++) begin
+      misaligned = misaligned || (in_en[i] && in_base[i*AW +: 2] != 2'b00);
+      past       = past || (in_en[i] && beyond(in_base[i*AW +: AW], size));
+    end
+    for (int o = 0; o < NWR; o++) begin
+      misaligned = misaligned || (wr_en[o] && wr_base[o*AW +: 2] != 2'b00);
+      past       = past || (wr_en[o] && beyond(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size));
+      for (int i = 0; i < NIN; i++)
+        overlap = overlap || (wr_en[o] && in_en[i] &&
+                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                       in_base[i*AW +: AW], size));
+      for (int p = 0; p < NWR; p++)         // each pair once: p > o
+        overlap = overlap || (p > o && wr_en[o] && wr_en[p] &&
+                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                       wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
+    end
     check = 4'd0;
     if (width_q == '0 || 32'(width_q) > mcadsw_pkg::MAX_WIDTH) check = 4'd1;
     else if (height_q == '0 || 32'(height_q) > mcadsw_pkg::MAX_HEIGHT) check = 4'd2;
     else if (disp_q == '0 || 32'(disp_q) > DMAX) check = 4'd3;
     else if (stride_q < AW'(width_q) || (stride_q & AW'(3)) != '0) check = 4'd4;
-    else if (((base_by_q | base_bu_q | base_bv_q | base_my_q | base_out_q) & AW'(3)) != '0)
-      check = 4'd5;
-    else if (overlaps(base_out_q, out_size, base_by_q, size) ||
-             overlaps(base_out_q, out_size, base_bu_q, size) ||
-             overlaps(base_out_q, out_size, base_bv_q, size) ||
-             overlaps(base_out_q, out_size, base_my_q, size)) check = 4'd6;
+    else if (misaligned) check = 4'd5;
+    else if (overlap) check = 4'd6;
     else if (out_stride_q < AW'(out_bytes) || (out_stride_q & AW'(3)) != '0) check = 4'd7;
-    else if (lr_q) check = 4'd8;
-    else if (beyond(base_by_q, size) || beyond(base_bu_q, size) || beyond(base_bv_q, size) ||
-             beyond(base_my_q, size) || beyond(base_out_q, out_size)) check = 4'd9;
+    else if (lr_q && right_q) check = 4'd8;
+    else if (past) check = 4'd9;
+    else if (lr_q && 32'(lr_t_q) > mcadsw_pkg::LR_T_MAX) check = 4'd10;
+    else if (lr_q && 32'(width_q) > mcadsw_pkg::POST_MAX_WIDTH) check = 4'd11;
+    // Right U and V not configured: the same base as each other or as another
+    // input plane (registers left at their reset value, or copied).
+    else if (lr_q && (base_ru_q == base_rv_q || base_ru_q == base_by_q || base_ru_q == base_bu_q ||
+                      base_ru_q == base_bv_q || base_ru_q == base_my_q || base_rv_q == base_by_q ||
+                      base_rv_q == base_bu_q || base_rv_q == base_bv_q || base_rv_q == base_my_q))
+      check = 4'd12;
   end
 
   // A start is taken only while idle: not while the scheduler runs, nor in the
@@ -138,7 +187,8 @@ module mcadsw_top #(
     if (!rst_ni) begin
       {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q} <= '0;
       {out_stride_q, xend_q, xlo_q, height_q, disp_q, thr_q, sub_q, right_q} <= '0;
-      {width_q, lr_q, chk_q} <= '0;
+      {width_q, lr_q, lr_sub_q, pack_q, pass_q, chk_q} <= '0;
+      {base_ru_q, base_rv_q, base_dl_q, base_dr_q, base_mask_q, base_fout_q, lr_t_q} <= '0;
       done_o       <= 1'b0;
       error_o      <= 1'b0;
       error_code_o <= '0;
@@ -148,7 +198,8 @@ module mcadsw_top #(
         base_bu_q  <= sel_bu;
         base_bv_q  <= sel_bv;
         base_my_q  <= sel_my;
-        base_out_q <= cfg_base_out_i;
+        // LR mode: the first pass writes dL.
+        base_out_q <= cfg_lr ? cfg_base_dl_i : cfg_base_out_i;
         stride_q   <= cfg_stride_i;
         out_stride_q <= cfg_out_stride_i;
         sub_q      <= cfg_sub;
@@ -158,6 +209,16 @@ module mcadsw_top #(
         right_q    <= cfg_right;
         width_q    <= cfg_width_i;
         lr_q       <= cfg_lr;
+        lr_sub_q   <= cfg_lr && cfg_sub;
+        pack_q     <= cfg_lr && cfg_sub;
+        pass_q     <= 2'd0;
+        base_ru_q  <= cfg_base_ru_i;
+        base_rv_q  <= cfg_base_rv_i;
+        base_dl_q  <= cfg_base_dl_i;
+        base_dr_q  <= cfg_base_dr_i;
+        base_mask_q <= cfg_base_mask_i;
+        base_fout_q <= cfg_base_out_i;
+        lr_t_q     <= cfg_lr_t_i;
         height_q   <= cfg_height_i;
         disp_q     <= cfg_disp_i;
         thr_q      <= cfg_thr_i;
@@ -171,7 +232,23 @@ module mcadsw_top #(
         error_code_o <= check;
         done_o       <= check != 4'd0;
       end
-      if (sched_done) done_o <= 1'b1;
+      // LR mode: after the left map, the right map (the right view as base,
+      // 1 byte a pixel into dR, input stride); after that the post stage.
+      if (sched_done && lr_q && pass_q == 2'd0) begin
+        base_by_q  <= base_my_q;
+        base_bu_q  <= base_ru_q;
+        base_bv_q  <= base_rv_q;
+        base_my_q  <= base_by_q;
+        base_out_q <= base_dr_q;
+        sub_q      <= 1'b0;
+        pack_q     <= 1'b0;
+        right_q    <= 1'b1;
+        xend_q     <= (width_q + CW'(3)) & ~(CW'(3));
+        xlo_q      <= 2'(CW'(0) - width_q);
+        pass_q     <= 2'd1;
+      end
+      if (sched_done && lr_q && pass_q == 2'd1) pass_q <= 2'd2;
+      if ((sched_done && !lr_q) || post_done) done_o <= 1'b1;
     end
   end
 
@@ -179,7 +256,21 @@ module mcadsw_top #(
   logic go_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) go_q <= 1'b0;
-    else go_q <= chk_q && check == 4'd0;
+    else go_q <= (chk_q && check == 4'd0) || (sched_done && lr_q && pass_q == 2'd0);
+  end
+
+  // LR mode: the frame runs from the start of the first pass to the post
+  // stage's done; between the passes the scheduler is idle for a cycle.
+  logic lr_run_q, post_start_q, post_busy, post_done;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      lr_run_q     <= 1'b0;
+      post_start_q <= 1'b0;
+    end else begin
+      post_start_q <= sched_done && lr_q && pass_q == 2'd1;
+      if (chk_q && check == 4'd0 && lr_q) lr_run_q <= 1'b1;
+      if (post_done) lr_run_q <= 1'b0;
+    end
   end
 
   // ---- Counters --------------------------------------------------------------------------
@@ -194,14 +285,14 @@ module mcadsw_top #(
       cnt_words_read_o    <= '0;
       cnt_words_written_o <= '0;
       cnt_stall_o         <= '0;
-    end else if (sched_busy) begin
+    end else if (sched_busy || lr_run_q) begin
       cnt_cycles_o        <= cnt_cycles_o + 32'd1;
       cnt_words_read_o    <= cnt_words_read_o + 32'(mem_req_o && mem_gnt_i && !mem_we_o);
       cnt_words_written_o <= cnt_words_written_o + 32'(mem_req_o && mem_gnt_i && mem_we_o);
       cnt_stall_o         <= cnt_stall_o + 32'(mem_req_o && !mem_gnt_i);
     end
   end
-  assign busy_o = sched_busy || go_q || chk_q;
+  assign busy_o = sched_busy || go_q || chk_q || lr_run_q;
 
   // ---- Block scheduler -----------------------------------------------------------------
   logic               prep_start, prep_bank, agg_bank;
@@ -224,7 +315,7 @@ module mcadsw_top #(
     .width_i        (xend_q),
     .height_i       (height_q),
     .out_base_i     (base_out_q),
-    .stride_i       (out_stride_q),
+    .stride_i       (pass_q == 2'd1 ? stride_q : out_stride_q),  // LR: dR has the input stride
     .busy_o         (sched_busy),
     .done_o         (sched_done),
     .prep_start_o   (prep_start),
@@ -327,6 +418,10 @@ module mcadsw_top #(
   logic [AW-1:0]    wr_addr;
   logic [3:0]       wr_be;
   logic [31:0]      wr_wdata;
+  logic             eng_req, eng_gnt, eng_we, eng_rvalid;
+  logic [3:0]       eng_be;
+  logic [AW-1:0]    eng_addr;
+  logic [31:0]      eng_wdata;
 
   mcadsw_mem_ctrl #(.NR(NR), .AW(AW)) u_mem_ctrl (
     .clk_i, .rst_ni,
@@ -334,9 +429,36 @@ module mcadsw_top #(
     .rd_rvalid_o (rd_rvalid), .rd_rdata_o (rd_rdata),
     .wr_req_i (wr_req), .wr_addr_i (wr_addr), .wr_be_i (wr_be), .wr_wdata_i (wr_wdata),
     .wr_gnt_o (wr_gnt),
-    .mem_req_o, .mem_gnt_i, .mem_we_o, .mem_be_o, .mem_addr_o, .mem_wdata_o,
-    .mem_rvalid_i, .mem_rdata_i
+    .mem_req_o (eng_req), .mem_gnt_i (eng_gnt), .mem_we_o (eng_we), .mem_be_o (eng_be),
+    .mem_addr_o (eng_addr), .mem_wdata_o (eng_wdata),
+    .mem_rvalid_i (eng_rvalid), .mem_rdata_i
   );
+
+  // ---- Post stage (LR mode, pass 2): the external port is its own while it runs ----
+  logic          post_req, post_we, post_sel;
+  logic [3:0]    post_be;
+  logic [AW-1:0] post_addr;
+  logic [31:0]   post_wdata;
+  assign post_sel = pass_q == 2'd2;
+
+  mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
+    .clk_i, .rst_ni,
+    .start_i (post_start_q),
+    .base_dl_i (base_dl_q), .base_dr_i (base_dr_q), .base_out_i (base_fout_q),
+    .base_mask_i (base_mask_q), .stride_i (stride_q), .out_stride_i (out_stride_q),
+    .width_i (width_q), .height_i (height_q), .tol_i (6'(lr_t_q)), .wide_i (lr_sub_q),
+    .busy_o (post_busy), .done_o (post_done),
+    .mem_req_o (post_req), .mem_gnt_i (mem_gnt_i && post_sel), .mem_we_o (post_we),
+    .mem_be_o (post_be), .mem_addr_o (post_addr), .mem_wdata_o (post_wdata),
+    .mem_rvalid_i (mem_rvalid_i && post_sel), .mem_rdata_i
+  );
+  assign mem_req_o   = post_sel ? post_req : eng_req;
+  assign mem_we_o    = post_sel ? post_we : eng_we;
+  assign mem_be_o    = post_sel ? post_be : eng_be;
+  assign mem_addr_o  = post_sel ? post_addr : eng_addr;
+  assign mem_wdata_o = post_sel ? post_wdata : eng_wdata;
+  assign eng_gnt     = mem_gnt_i && !post_sel;
+  assign eng_rvalid  = mem_rvalid_i && !post_sel;
 
   logic        lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
   logic [31:0] lpix, rpix, wpix;
@@ -461,9 +583,13 @@ module mcadsw_top #(
   logic [4:0]           sub_row_unused;
   logic [2:0]           sub_grp;
   logic [HAGG*VB-1:0]   sub;
+  logic [HAGG*DB-1:0]   sub_d;
+  // Depth FIFO values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
+  // the scratch format {offset + 8, d} (docs/architecture.md section 12).
+  localparam int FVB = DB + 5;
   logic                 val_valid;
   logic [2:0]           val_grp;
-  logic [HAGG*VB-1:0]   val, disp_wide;
+  logic [HAGG*FVB-1:0]  val, disp_wide, sub_wide, sub_pack;
   logic                 mon_ev_valid, mon_fc_valid;
   logic [4:0]           mon_ev_row, mon_fc_row;
   logic [DB-1:0]        mon_ev_d, mon_fc_d;
@@ -483,7 +609,7 @@ module mcadsw_top #(
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
     .disp_o (disp), .busy_o (agg_busy),
     .sub_valid_o (sub_valid), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp),
-    .sub_o (sub), .sub_busy_o (sub_busy_unused),
+    .sub_o (sub), .sub_d_o (sub_d), .sub_busy_o (sub_busy_unused),
     .mon_ev_valid_o (mon_ev_valid), .mon_ev_row_o (mon_ev_row), .mon_ev_d_o (mon_ev_d),
     .mon_ev_grp_o (mon_ev_grp), .mon_ev_o (mon_ev),
     .mon_fc_valid_o (mon_fc_valid), .mon_fc_row_o (mon_fc_row), .mon_fc_d_o (mon_fc_d),
@@ -495,16 +621,20 @@ module mcadsw_top #(
                         lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
                         hrd_row_unused, sub_busy_unused, sub_row_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
-                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused};
+                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy};
 
   for (genvar m = 0; m < HAGG; m++) begin : g_disp_wide
-    assign disp_wide[m*VB +: VB] = VB'(disp[m*DB +: DB]);
+    logic [4:0] off8;                  // offset + 8 (0 .. 16)
+    assign off8 = 5'(sub[m*VB +: VB] - {sub_d[m*DB +: DB], 4'b0000} + VB'(8));
+    assign disp_wide[m*FVB +: FVB] = FVB'(disp[m*DB +: DB]);
+    assign sub_wide[m*FVB +: FVB]  = FVB'(sub[m*VB +: VB]);
+    assign sub_pack[m*FVB +: FVB]  = {off8[4:0], sub_d[m*DB +: DB]};
   end
   assign val_valid = sub_q ? sub_valid : disp_valid;
   assign val_grp   = sub_q ? sub_grp : disp_grp;
-  assign val       = sub_q ? sub : disp_wide;
+  assign val       = pack_q ? sub_pack : sub_q ? sub_wide : disp_wide;
 
-  mcadsw_depth_fifo #(.AW(AW), .CW(CW), .VB(VB)) u_depth_fifo (
+  mcadsw_depth_fifo #(.AW(AW), .CW(CW), .VB(FVB)) u_depth_fifo (
     .clk_i, .rst_ni,
     .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x), .desc_n_i (desc_n),
     .space_o (fifo_space), .empty_o (fifo_empty),

@@ -34,7 +34,8 @@ module mcadsw_wta #(
   output logic [HAGG*DB-1:0]  disp_o,
   output logic                sub_valid_o,
   output logic [GB-1:0]       sub_grp_o,
-  output logic [HAGG*SPB-1:0] sub_o
+  output logic [HAGG*SPB-1:0] sub_o,
+  output logic [HAGG*DB-1:0]  sub_d_o     // the integer winners of sub_o (LR scratch format)
 );
 
   // Per-pixel state of the row, kept as a ring of the GROUPS groups of HAGG
@@ -140,6 +141,7 @@ module mcadsw_wta #(
       b_d_q  <= a_d_q;
     end
     if (b_valid_q) begin
+      sub_d_o <= b_d_q;
       for (int m = 0; m < HAGG; m++) begin
         logic [FB+5:0] n16, den;
         logic [3:0]    q;

@@ -2,8 +2,9 @@
 # The `make sim` regression: the Verilated engine on the bundled pairs (and a
 # small crop, quick to trace with WAVES=1), every
 # disparity compared with the reference; raw mode, the sub-pixel mode
-# (16-bit output, docs/algorithm.md 12.6) and the right view as base (12.1;
-# no error figure: the bundled ground truth is the left view's). Prints one row per case, writes
+# (16-bit output, docs/algorithm.md 12.6), the right view as base (12.1;
+# no error figure: the bundled ground truth is the left view's) and the LR mode
+# (12.2-12.5: output, mask and both scratch maps compared). Prints one row per case, writes
 # BUILD/sim/summary.json, exits non-zero on any mismatch, timeout or error.
 #   scripts/sim_regression.sh BUILD_DIR [CASE] [WAVES]
 # CASE: run only that case; WAVES=1: also write BUILD/sim/CASE.fst and a
@@ -39,6 +40,13 @@ cases=(
   "venus_right|middlebury|venus|20|8|--right"
   "teddy_right_sub|middlebury|teddy|60|4|--right --subpixel"
   "cones_right|middlebury|cones|60|4|--right"
+  "cif_teddy_lr|cif|teddy|64|4|--lr"
+  "cif_teddy_lr_sub|cif|teddy|64|4|--lr --subpixel"
+  "tsukuba_lr|middlebury|tsukuba|16|16|--lr"
+  "venus_lr|middlebury|venus|20|8|--lr"
+  "teddy_lr|middlebury|teddy|60|4|--lr"
+  "cones_lr_sub|middlebury|cones|60|4|--lr --subpixel"
+  "teddy_crop_lr_sub_latency|cif|teddy|64|4|--crop 100,100,74,38 --lr --subpixel --lr-t 3 --random-latency 4"
 )
 
 selected=()
@@ -112,7 +120,8 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
                "Census right:mcadsw_top.u_census_r:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
                "Weight generator:mcadsw_top.u_weight_gen:state_q pix_valid_i pix_ready_o done_o r_q occ_q row_ready_o row_take_i" \
                "Cost aggregator:mcadsw_top.u_cost_agg:busy_q row_q d_q grp_q h2_valid_q disp_valid_o disp_grp_o" \
-               "Depth FIFO:mcadsw_top.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o"; do
+               "Depth FIFO:mcadsw_top.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o" \
+               "Post stage (LR):mcadsw_top.u_post:st_q y_q bx_q cx_q qc_q mem_req_o mem_gnt_i mem_we_o mem_addr_o"; do
       IFS=: read -r title scope sigs <<<"$grp"
       echo "@800200"; echo "-$title"; echo "@22"   # values in hex
       for s in $sigs; do

@@ -31,13 +31,17 @@ namespace {
 // 4) and the output plane of out_stride bytes per row (default: its row, 1 or
 // 2 bytes a pixel, rounded up to 4), each starting on a 4 KiB boundary after a
 // 4 KiB guard. The right view's U and V are always in memory; only the right
-// mode may read them.
+// and LR modes may read them. The LR mode adds, after the output plane, the
+// scratch planes dL (output stride) and dR (input stride) and the mask plane
+// (input stride).
 struct Layout {
-  uint32_t stride, out_stride, plane, out_plane, ly, lu, lv, ry, ru, rv, out, total;
-  int width, height, out_bpp;
-  bool right;
+  uint32_t stride, out_stride, plane, out_plane, ly, lu, lv, ry, ru, rv, out, dl = 0, dr = 0,
+      mask = 0, total;
+  int width, height, out_bpp, lr_t;
+  bool right, lr;
   Layout(int w, int h, uint32_t origin, const EngineOptions& opt)
-      : width(w), height(h), out_bpp(opt.subpixel ? 2 : 1), right(opt.right) {
+      : width(w), height(h), out_bpp(opt.subpixel ? 2 : 1), lr_t(opt.lr_tolerance),
+        right(opt.right), lr(opt.lr) {
     stride = opt.stride ? opt.stride : uint32_t((w + 3) / 4 * 4);
     if (stride < uint32_t(w) || stride % 4 != 0)
       throw std::invalid_argument("stride " + std::to_string(stride) +
@@ -58,20 +62,35 @@ struct Layout {
     rv = ru + plane;
     out = rv + plane;
     total = out + out_plane + 4096;
+    if (lr) {
+      dl = total;
+      dr = dl + out_plane;
+      mask = dr + plane;
+      total = mask + plane + 4096;
+    }
   }
   RawConfig raw(int disparities) const {
     RawConfig c{ly, lu, lv, ry, out, stride, out_stride, width, height, disparities};
-    c.mode = (out_bpp == 2 ? 1 : 0) | (right ? 4 : 0);
+    c.mode = (out_bpp == 2 ? 1 : 0) | (lr ? 2 : 0) | (right ? 4 : 0);
     c.base_ru = ru;
     c.base_rv = rv;
+    c.base_dl = dl;
+    c.base_dr = dr;
+    c.base_mask = mask;
+    c.lr_t = lr_t;
     return c;
   }
   // What the frame may touch: reads in the pixels of the planes its mode
-  // reads, writes in the output plane's pixels.
+  // reads, writes in the output plane's pixels (LR: and the scratch and mask
+  // planes' pixels, the scratch planes read back).
   MemoryModel::Regions regions() const {
     std::vector<uint32_t> in{ly, lu, lv, ry};
     if (right) in = {ry, ru, rv, ly};
-    return {in, out, stride, width, height, out_stride, out_bpp};
+    if (lr) {
+      return {{ly, lu, lv, ry, ru, rv}, dl, stride, width, height, out_stride, out_bpp, true,
+              {{dr, stride, 1, true}, {out, out_stride, out_bpp, false}, {mask, stride, 1, false}}};
+    }
+    return {in, out, stride, width, height, out_stride, out_bpp, false, {}};
   }
 };
 
@@ -173,6 +192,10 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
   t.cfg_mode_i = uint32_t(c.mode) & 7;
   t.cfg_base_ru_i = c.base_ru;
   t.cfg_base_rv_i = c.base_rv;
+  t.cfg_base_dl_i = c.base_dl;
+  t.cfg_base_dr_i = c.base_dr;
+  t.cfg_base_mask_i = c.base_mask;
+  t.cfg_lr_t_i = uint32_t(c.lr_t) & 0xff;
   t.cfg_width_i = uint32_t(c.width) & 0xfff;
   t.cfg_height_i = uint32_t(c.height) & 0xfff;
   t.cfg_disp_i = uint32_t(c.disparities) & 0x7f;
@@ -220,7 +243,7 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const Star
 // Generous: four times the memory-bound estimate of 8000 cycles per block.
 long frame_limit(int W, int H, const EngineOptions& opt) {
   const long blocks = long((W + kBlock - 1) / kBlock) * ((H + kBlock - 1) / kBlock);
-  return opt.max_cycles > 0 ? opt.max_cycles : 40000 * blocks + 100000;
+  return opt.max_cycles > 0 ? opt.max_cycles : (opt.lr ? 3 : 1) * (40000 * blocks + 100000);
 }
 
 // Writes a frame's planes at its layout and fills its disparity plane with
@@ -233,6 +256,59 @@ void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const
   put_plane(mem, lay.ru, lay.stride, right.u);
   put_plane(mem, lay.rv, lay.stride, right.v);
   for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.out + i] = 0xff;
+  if (lay.lr) {
+    for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.dl + i] = 0xff;
+    for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.dr + i] = 0xff;
+    for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.mask + i] = 0x77;
+  }
+}
+
+// LR mode: the output plane and the mask against depth_map() (docs/algorithm.md
+// 12.2-12.5), and the two scratch planes against the left and right maps
+// (dL's integer d in sub-pixel mode), every pixel.
+void score_lr(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right,
+              const Config& cfg, const EngineOptions& opt, EngineResult& r) {
+  const int W = left.width(), H = left.height();
+  DepthOptions dopt;
+  dopt.lr = true;
+  dopt.subpixel = opt.subpixel;
+  dopt.tolerance = opt.lr_tolerance;
+  const DepthResult ref = depth_map(left, right, cfg, dopt);
+  r.disparity = Plane(W, H);
+  if (opt.subpixel) r.disparity16 = Plane16(W, H);
+  r.mask = Plane(W, H);
+  std::ostringstream rep;
+  const auto bad = [&](const char* what, int x, int y, int got, int want) {
+    if (r.mismatches++ >= opt.max_reported) return;
+    rep << "  " << what << " mismatch at (" << x << "," << y << "): RTL " << got << ", reference "
+        << want << " (dL " << int(ref.raw.at(x, y)) << ", dR(x - dL) "
+        << (x >= ref.raw.at(x, y) ? std::to_string(ref.right.at(x - ref.raw.at(x, y), y)) : "-")
+        << ", valid " << int(ref.valid.at(x, y) != 0) << ")\n";
+  };
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const uint8_t* p = mem.data() + lay.out + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp);
+      const int got = opt.subpixel ? p[0] | p[1] << 8 : p[0];
+      const int want = opt.subpixel ? ref.disp16.at(x, y) : ref.disp16.at(x, y) / kSubpixelScale;
+      if (opt.subpixel) {
+        r.disparity16.at(x, y) = uint16_t(got);
+        r.disparity.at(x, y) = uint8_t(std::min(got / kSubpixelScale, 255));
+      } else {
+        r.disparity.at(x, y) = uint8_t(got);
+      }
+      if (got != want) bad(opt.subpixel ? "output 16d+o" : "output d", x, y, got, want);
+      const int mk = mem.data()[lay.mask + uint32_t(y) * lay.stride + uint32_t(x)];
+      r.mask.at(x, y) = uint8_t(mk);
+      if (mk != ref.valid.at(x, y)) bad("mask", x, y, mk, ref.valid.at(x, y));
+      const int dl = mem.data()[lay.dl + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp)] &
+                     (opt.subpixel ? (1 << kDispBits) - 1 : 0xff);
+      if (dl != ref.raw.at(x, y)) bad("scratch dL", x, y, dl, ref.raw.at(x, y));
+      const int dr = mem.data()[lay.dr + uint32_t(y) * lay.stride + uint32_t(x)];
+      if (dr != ref.right.at(x, y)) bad("scratch dR", x, y, dr, ref.right.at(x, y));
+    }
+  r.bus = mem.violations();
+  rep << r.bus.describe();
+  r.report += rep.str();
 }
 
 // Scoreboard: every pixel of the plane against the reference, both ways (a
@@ -242,6 +318,10 @@ void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const
 // 12.1), whose column W - 1 - x is output column x.
 void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right,
            const Config& cfg, const EngineOptions& opt, EngineResult& r) {
+  if (opt.lr) {
+    score_lr(mem, lay, left, right, cfg, opt, r);
+    return;
+  }
   const int W = left.width(), H = left.height();
   Config ref_cfg = cfg;
   Intermediates keep;
@@ -301,7 +381,8 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
   std::ofstream f(dir + "/config.txt");
   f << "+WORDS=" << mem.size() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
     << " +BASE_LV=" << c.base_lv << " +BASE_RY=" << c.base_ry << " +BASE_OUT=" << c.base_out
-    << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv
+    << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv << " +BASE_DL=" << c.base_dl
+    << " +BASE_DR=" << c.base_dr << " +BASE_MASK=" << c.base_mask << " +LR_T=" << c.lr_t
     << " +STRIDE=" << c.stride << " +OUT_STRIDE=" << c.out_stride << " +MODE=" << c.mode
     << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
     << " +DISP=" << c.disparities;
@@ -310,16 +391,19 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
   if (!m || !f) throw std::runtime_error("cannot write the dump files in " + dir);
 }
 
-void dump_after(const std::string& dir, MemoryModel& mem, uint32_t out, uint32_t bytes,
-                const EngineResult& r) {
+void dump_after(const std::string& dir, MemoryModel& mem, const Layout& lay, const EngineResult& r) {
   std::ofstream m(dir + "/verilator_out.hex");
-  for (uint32_t a = out; a < out + bytes; a += 4) {
-    uint32_t w = 0;
-    for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%08x\n", w);
-    m << buf;
-  }
+  const auto words = [&](uint32_t base, uint32_t bytes) {
+    for (uint32_t a = base; a < base + bytes; a += 4) {
+      uint32_t w = 0;
+      for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
+      char buf[16];
+      std::snprintf(buf, sizeof buf, "%08x\n", w);
+      m << buf;
+    }
+  };
+  words(lay.out, lay.out_stride * uint32_t(lay.height));
+  if (lay.lr) words(lay.mask, lay.stride * uint32_t(lay.height));  // and the mask plane
   std::ofstream c(dir + "/verilator_counters.txt");
   c << "cycles " << r.cycles << " words_read " << r.words_read << " words_written "
     << r.words_written << "\n";
@@ -347,7 +431,7 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
     program(e.top(), raw, cfg.table);
     run_frame(e, r, frame_limit(W, H, opt), opt.progress);
   }
-  if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay.out, lay.out_stride * uint32_t(H), r);
+  if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay, r);
   score(mem, lay, left, right, cfg, opt, r);
   return r;
 }

@@ -22,6 +22,8 @@ struct EngineOptions {
   bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
   bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
   uint32_t out_stride = 0;       // bytes per row of the output plane; 0: its row rounded up to 4
+  bool lr = false;               // mode bit 1: left-right check, fill, median (docs/algorithm.md 12.2-12.5)
+  int lr_tolerance = kLrToleranceDefault;  // T
   long max_cycles = 0;           // 0: derived from the frame size
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
@@ -44,6 +46,7 @@ struct EngineResult {
   std::string report;            // first mismatches, human-readable
   Plane disparity;               // what the engine wrote (sub-pixel mode: value / 16)
   Plane16 disparity16;           // sub-pixel mode: what the engine wrote; otherwise empty
+  Plane mask;                    // LR mode: the validity mask the engine wrote; otherwise empty
   // Finished, accepted, every pixel equal to the reference, every check of the
   // memory model passed.
   bool clean() const { return !timed_out && !error && mismatches == 0 && bus.total() == 0; }
@@ -72,6 +75,8 @@ struct RawConfig {
   int width, height, disparities;
   int mode = 0;  // bit 0 sub-pixel, bit 1 LR, bit 2 right view as base
   uint32_t base_ru = 0, base_rv = 0;
+  uint32_t base_dl = 0, base_dr = 0, base_mask = 0;  // LR mode's scratch and mask planes
+  int lr_t = kLrToleranceDefault;
 };
 enum class Fault { kNone, kResetMidFrame, kStartWhileBusy };
 struct FaultSpec {

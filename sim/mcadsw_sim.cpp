@@ -24,7 +24,7 @@ const char* kUsage =
     "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
-    "                  [--subpixel] [--right] [--out-stride N]\n"
+    "                  [--subpixel] [--right] [--lr [--lr-t T]] [--out-stride N]\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
     "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
     "                  the width (default: the width rounded up to 4)\n"
@@ -33,6 +33,10 @@ const char* kUsage =
     "  --right         the right view as base: the right-reference map dR (docs/algorithm.md\n"
     "                  12.1; reads the right view's U and V); --gt then needs the right view's\n"
     "                  ground truth\n"
+    "  --lr            LR mode (docs/algorithm.md 12.2-12.5): left map, right map, left-right\n"
+    "                  check, fill and 3x3 median; --out writes the filtered map; the mask\n"
+    "                  plane is compared too (not with --right)\n"
+    "  --lr-t T        tolerance of the check, 0..63 (default 1)\n"
     "  --out-stride N  bytes per row of the output plane: a multiple of 4, at least the width\n"
     "                  (2 x the width with --subpixel); default: that rounded up to 4\n"
     "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
@@ -85,6 +89,8 @@ int main(int argc, char** argv) {
       else if (a == "--stride") opt.stride = stride(val(), "stride");
       else if (a == "--subpixel") opt.subpixel = true;
       else if (a == "--right") opt.right = true;
+      else if (a == "--lr") opt.lr = true;
+      else if (a == "--lr-t") opt.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
       else if (a == "--out-stride") opt.out_stride = stride(val(), "output stride");
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)
@@ -104,6 +110,8 @@ int main(int argc, char** argv) {
       throw std::invalid_argument("D = " + std::to_string(d) + " out of range 1.." +
                                   std::to_string(mcadsw::kDmax));
     if (opt.latency.fixed < 0) throw std::invalid_argument("latency must not be negative");
+    if (opt.lr && opt.right) throw std::invalid_argument("--lr and --right do not combine");
+    mcadsw::check_lr_tolerance(opt.lr_tolerance);
     if (!gt.empty() && (masks.empty() || !(scale > 0)))
       throw std::invalid_argument("--gt needs --scale S > 0 and --masks DIR");
   } catch (const std::exception& e) {
@@ -133,6 +141,10 @@ int main(int argc, char** argv) {
     cfg.disparities = d;
     cfg.table = mcadsw::make_weight_table(gamma);
     mcadsw::check_config(cfg, l.width(), l.height());
+    if (opt.lr && l.width() > mcadsw::kPostMaxWidth)
+      throw std::invalid_argument("the LR mode takes widths up to " +
+                                  std::to_string(mcadsw::kPostMaxWidth) + ", not " +
+                                  std::to_string(l.width()));
     if (opt.stride && opt.stride < uint32_t(l.width()))
       throw std::invalid_argument("stride " + std::to_string(opt.stride) + " is below the width " +
                                   std::to_string(l.width()));
@@ -171,7 +183,8 @@ int main(int argc, char** argv) {
     const bool ok = res.clean();
     std::printf("%-16s %4dx%-4d D=%-2d%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
                 "reads/px %5.2f  stalls %7ld  %s",
-                name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "", opt.right ? " right" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
+                name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "",
+                opt.right ? " right" : opt.lr ? " lr" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
                 ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
@@ -184,6 +197,7 @@ int main(int argc, char** argv) {
       j << "{\"case\": \"" << name << "\", \"width\": " << res.width << ", \"height\": " << res.height
         << ", \"disparities\": " << d << ", \"subpixel\": " << (opt.subpixel ? "true" : "false")
         << ", \"right\": " << (opt.right ? "true" : "false")
+        << ", \"lr\": " << (opt.lr ? "true" : "false")
         << ", \"cycles\": " << res.cycles
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
         << ", \"stall_cycles\": " << res.stall_cycles << ", \"mismatches\": " << res.mismatches

@@ -133,6 +133,13 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
   }
   // The right view as base in one case out of three.
   c.opt.right = rng() % 3 == 0;
+  // The LR mode (left map, right map, post stage) in one of the other cases out
+  // of three (up to the post stage's width), the tolerance T mostly small,
+  // sometimes up to its maximum.
+  if (!c.opt.right && rng() % 3 == 0 && w <= kPostMaxWidth) {
+    c.opt.lr = true;
+    c.opt.lr_tolerance = rng() % 4 == 0 ? int(rng() % (kLrToleranceMax + 1)) : int(rng() % 4);
+  }
   return c;
 }
 
@@ -195,7 +202,7 @@ int main(int argc, char** argv) {
     const bool ok = err.empty() && r.clean();
     std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u  %s latency  %8ld cycles  %s\n", k,
                 c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
-                c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R" : "L",
+                c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
                 c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED");

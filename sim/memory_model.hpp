@@ -11,7 +11,10 @@
 //     padding between width and stride, not another plane, not a guard);
 //   - a write enables at least one byte, every enabled byte belongs to a pixel
 //     of the disparity plane (x < width, y < height; 1 or 2 bytes a pixel), and
-//     no byte is written twice in a frame.
+//     no byte is written twice in a frame;
+//   - the LR mode writes three more planes (dR, the output, the mask) and reads
+//     back the two scratch planes: `more_outs`, each written at most once a
+//     byte, read only where marked readable.
 // Violations are counted, the first of each kind described; a word address
 // outside the modelled memory or misaligned is a harness error (exception).
 #pragma once
@@ -41,12 +44,19 @@ class MemoryModel {
   // inside the pixels of `out`. Input pixel (x, y) is the byte at
   // base + y * stride + x; output pixel (x, y) the out_bpp bytes at
   // out + y * out_stride + out_bpp * x. Width 0: nothing may be read or written.
+  struct OutPlane {
+    uint32_t base = 0, stride = 0;
+    int bpp = 1;
+    bool readable = false;    // read back by the frame (the LR mode's scratch planes)
+  };
   struct Regions {
     std::vector<uint32_t> inputs;
     uint32_t out = 0, stride = 0;
     int width = 0, height = 0;
     uint32_t out_stride = 0;  // 0: stride
     int out_bpp = 1;
+    bool out_readable = false;
+    std::vector<OutPlane> more_outs;
   };
 
   // What the checks found (counts since the last set_regions()).
@@ -68,7 +78,11 @@ class MemoryModel {
   void set_regions(const Regions& r) {
     regions_ = r;
     if (regions_.out_stride == 0) regions_.out_stride = regions_.stride;
-    written_.assign(size_t(r.width) * size_t(r.out_bpp) * size_t(r.height), 0);
+    outs_ = {{regions_.out, regions_.out_stride, r.out_bpp, r.out_readable}};
+    outs_.insert(outs_.end(), r.more_outs.begin(), r.more_outs.end());
+    written_.assign(outs_.size(), {});
+    for (size_t k = 0; k < outs_.size(); ++k)
+      written_[k].assign(size_t(r.width) * size_t(outs_[k].bpp) * size_t(r.height), 0);
     v_ = Violations{};
   }
   const Violations& violations() const { return v_; }
@@ -169,14 +183,19 @@ class MemoryModel {
         v_.first_bad_write = "write with no byte enabled at 0x" + hex(addr);
       for (int b = 0; b < 4; ++b) {
         if (!((q.be >> b) & 1)) continue;
-        int x, y;
-        const int row = regions_.width * regions_.out_bpp;
-        if (!pixel_of(regions_.out, regions_.out_stride, uint32_t(row), addr + b, x, y)) {
+        int x = 0, y = 0;
+        size_t k = 0;
+        while (k < outs_.size() &&
+               !pixel_of(outs_[k].base, outs_[k].stride, uint32_t(regions_.width * outs_[k].bpp),
+                         addr + b, x, y))
+          ++k;
+        if (k == outs_.size()) {
           if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
-        } else if (written_[size_t(y) * size_t(row) + size_t(x)]++ && v_.double_writes++ == 0) {
-          v_.first_double_write = "output pixel (" + std::to_string(x / regions_.out_bpp) + "," +
-                                  std::to_string(y) +
-                                  ") written again (word 0x" + hex(addr) + ", be " +
+        } else if (written_[k][size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x)]++ &&
+                   v_.double_writes++ == 0) {
+          v_.first_double_write = "pixel (" + std::to_string(x / outs_[k].bpp) + "," +
+                                  std::to_string(y) + ") of output plane " + std::to_string(k) +
+                                  " written again (word 0x" + hex(addr) + ", be " +
                                   std::to_string(q.be) + ")";
         }
         mem_[addr + b] = uint8_t(q.wdata >> (8 * b));
@@ -188,6 +207,11 @@ class MemoryModel {
       for (int b = 0; b < 4 && !inside; ++b) {
         int x, y;
         inside = pixel_of(base, addr + b, x, y);
+      }
+    for (const OutPlane& o : outs_)
+      for (int b = 0; b < 4 && !inside && o.readable; ++b) {
+        int x, y;
+        inside = pixel_of(o.base, o.stride, uint32_t(regions_.width * o.bpp), addr + b, x, y);
       }
     if (!inside && v_.bad_reads++ == 0)
       v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
@@ -213,7 +237,8 @@ class MemoryModel {
   std::deque<Pending> pending_;
   long cycle_ = 0;
   Regions regions_;
-  std::vector<uint8_t> written_;
+  std::vector<OutPlane> outs_;                // regions_.out, then regions_.more_outs
+  std::vector<std::vector<uint8_t>> written_;  // per output plane, per byte of its pixels
   Violations v_;
   bool stalled_ = false;
   Request held_;
@@ -224,7 +249,7 @@ inline std::string MemoryModel::Violations::describe() const {
   auto line = [&](long n, const char* what, const std::string& first) {
     if (n) s += "  " + std::to_string(n) + " " + what + ", first: " + first + "\n";
   };
-  line(bad_reads, "reads outside the input planes' pixels", first_bad_read);
+  line(bad_reads, "reads outside the input (or scratch) planes' pixels", first_bad_read);
   line(bad_writes, "bytes written outside the output pixels", first_bad_write);
   line(double_writes, "output bytes written twice", first_double_write);
   line(unstable_requests, "stalled requests changed before their grant", first_unstable);

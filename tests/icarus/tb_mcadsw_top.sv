@@ -14,12 +14,14 @@ module tb_mcadsw_top;
   always #5 clk = ~clk;
 
   int words, base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, stride, out_stride, mode, width, height, disp;
+  int base_dl, base_dr, base_mask, lr_t;
   int thr0, thr1, thr2, thr3, thr4, thr5, thr6;
   logic [31:0] mem [MAXW];
   string dir;
 
   logic [31:0] cfg_base_ly, cfg_base_lu, cfg_base_lv, cfg_base_ry, cfg_base_out, cfg_stride;
-  logic [31:0] cfg_out_stride, cfg_base_ru, cfg_base_rv;
+  logic [31:0] cfg_out_stride, cfg_base_ru, cfg_base_rv, cfg_base_dl, cfg_base_dr, cfg_base_mask;
+  logic [7:0]  cfg_lr_t;
   logic [2:0]  cfg_mode;
   logic [11:0] cfg_width, cfg_height;
   logic [6:0]  cfg_disp;
@@ -38,6 +40,8 @@ module tb_mcadsw_top;
     .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),
     .cfg_out_stride_i (cfg_out_stride), .cfg_mode_i (cfg_mode),
     .cfg_base_ru_i (cfg_base_ru), .cfg_base_rv_i (cfg_base_rv),
+    .cfg_base_dl_i (cfg_base_dl), .cfg_base_dr_i (cfg_base_dr), .cfg_base_mask_i (cfg_base_mask),
+    .cfg_lr_t_i (cfg_lr_t),
     .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
     .cfg_thr_i (cfg_thr), .start_i (start),
     .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
@@ -114,6 +118,10 @@ module tb_mcadsw_top;
     ok = $value$plusargs("BASE_OUT=%d", base_out);
     ok = $value$plusargs("BASE_RU=%d", base_ru);
     ok = $value$plusargs("BASE_RV=%d", base_rv);
+    ok = $value$plusargs("BASE_DL=%d", base_dl);
+    ok = $value$plusargs("BASE_DR=%d", base_dr);
+    ok = $value$plusargs("BASE_MASK=%d", base_mask);
+    ok = $value$plusargs("LR_T=%d", lr_t);
     ok = $value$plusargs("STRIDE=%d", stride);
     ok = $value$plusargs("OUT_STRIDE=%d", out_stride);
     ok = $value$plusargs("MODE=%d", mode);
@@ -132,6 +140,7 @@ module tb_mcadsw_top;
     cfg_base_ly = base_ly; cfg_base_lu = base_lu; cfg_base_lv = base_lv; cfg_base_ry = base_ry;
     cfg_base_out = base_out; cfg_stride = stride; cfg_out_stride = out_stride; cfg_mode = 3'(mode);
     cfg_base_ru = base_ru; cfg_base_rv = base_rv;
+    cfg_base_dl = base_dl; cfg_base_dr = base_dr; cfg_base_mask = base_mask; cfg_lr_t = 8'(lr_t);
     cfg_width = width; cfg_height = height; cfg_disp = disp;
     cfg_thr = {DCB'(thr6), DCB'(thr5), DCB'(thr4), DCB'(thr3), DCB'(thr2), DCB'(thr1), DCB'(thr0)};
     repeat (4) @(posedge clk);
@@ -146,6 +155,9 @@ module tb_mcadsw_top;
     end
     fd = $fopen({dir, "/icarus_out.hex"}, "w");
     for (int a = base_out / 4; a < (base_out + out_stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
+    // LR mode: the mask plane too.
+    if (mode & 2)
+      for (int a = base_mask / 4; a < (base_mask + stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
     $fclose(fd);
     fd = $fopen({dir, "/icarus_counters.txt"}, "w");
     $fwrite(fd, "cycles %0d words_read %0d words_written %0d\n", cnt_cycles, cnt_rd, cnt_wr);

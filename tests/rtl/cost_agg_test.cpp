@@ -250,6 +250,13 @@ class CostAggBench {
       const int got = int(get_bits(t.sub_o, m * kSubBits, kSubBits));
       const int want = sub_.at(x, y);
       ++res.sub_checked;
+      // The integer winner travels with the value (the LR mode's scratch format).
+      const int got_d = int(get_bits(t.sub_d_o, m * kDispBits, kDispBits));
+      if (got_d != disp_.at(x, y)) {
+        std::ostringstream o;
+        o << "sub_d at (" << x << "," << y << "): RTL " << got_d << ", reference " << disp_.at(x, y);
+        fail(res, o.str());
+      }
       res.sub_fractional += want % kSubpixelScale != 0;
       if (got != want) {
         const int d = disp_.at(x, y);

@@ -28,7 +28,7 @@ struct Req {
 };
 
 // Planes of 10 x 3 pixels, stride 16: inputs at 0x100 and 0x200, output at 0x300.
-MemoryModel::Regions regions() { return {{0x100, 0x200}, 0x300, 16, 10, 3}; }
+MemoryModel::Regions regions() { return {{0x100, 0x200}, 0x300, 16, 10, 3, 0, 1, false, {}}; }
 
 // Presents the requests one per cycle, each granted at once (fixed latency).
 MemoryModel::Violations drive(const std::vector<Req>& reqs) {

@@ -77,7 +77,7 @@ class PostBench {
         mem_[dr_ + y * stride_ + x] = m.dr.at(x, y);
         if (c.wide) {
           const int v = m.value.at(x, y), d = m.dl.at(x, y);
-          const int packed = d | ((v - kSubpixelScale * d + 8) << 8);
+          const int packed = d | ((v - kSubpixelScale * d + kSubpixelOffsetMax) << kDispBits);
           mem_[dl_ + y * ostride_ + 2 * x] = uint8_t(packed);
           mem_[dl_ + y * ostride_ + 2 * x + 1] = uint8_t(packed >> 8);
         } else {
