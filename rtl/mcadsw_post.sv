@@ -19,6 +19,7 @@
 //       valid(x) = x >= d && |d - dR(x - d)| <= T, and the forward fill: vrow(x)
 //       holds the pixel's value when valid, else the nearest valid value to its
 //       left (and whether there is one).
+//       The next row's reads start during CD (below), when no write is waiting.
 //   CD  from right to left, a pixel a cycle: the fill from the right (the filled
 //       value of row y replaces row y - 2 in its median row buffer, right after
 //       being read), the mask bytes of row y, and the 3x3 median of row y - 1
@@ -111,8 +112,12 @@ module mcadsw_post #(
   logic [AW-1:0] ra_q;                         // next request's address
   logic [FI:0]   cred_q;                       // dL words requested, not yet used
   logic          rq_dl, rd_issue;
+  logic          pf_q;                         // the next row's reads may start in CD
+  logic [QI:0]   qc_q;                         // write queue entries (below)
   assign rq_dl    = rq_q >= nr;
-  assign rd_issue = st_q == S_RD && port_free && rq_q < nt && (!rq_dl || cred_q < (FI + 1)'(FD));
+  // RD, or CD and the wait after it with no write waiting: the next row's reads.
+  assign rd_issue = (st_q == S_RD || (pf_q && (st_q == S_CD || st_q == S_NEXT) && qc_q == '0)) &&
+                    port_free && rq_q < nt && (!rq_dl || cred_q < (FI + 1)'(FD));
   logic [FD*32-1:0] fq_q;                      // dL words received, not yet used
   logic [FI-1:0]    fw_q, fr_q;
   logic [FI:0]      fc_q;
@@ -222,7 +227,6 @@ module mcadsw_post #(
   // ---- Write queue: mask words (stage 2) and output words (stage 5) -----------------
   logic [QD*QE-1:0] q_q;
   logic [QI-1:0]    qw_q, qr_q;
-  logic [QI:0]      qc_q;
   logic             qa_push, qb_push, q_pop;   // a: mask, b: output
   logic [QE-1:0]    qa_e, qb_e, q_head;
   logic [QI-1:0]    qw_b;                      // entry of an output word
@@ -297,12 +301,16 @@ module mcadsw_post #(
     st_q    <= S_CD;
   endtask
 
-  // Start the RD phase of row y (addresses already set).
-  task automatic start_rd(input logic [AW-1:0] dr_row);
-    ra_q    <= dr_row;
-    rq_q    <= '0;
-    rs_q    <= '0;
-    cred_q  <= '0;
+  // The reads of a row: dR from dr_row, then dL (from rdl_q).
+  task automatic start_reads(input logic [AW-1:0] dr_row);
+    ra_q   <= dr_row;
+    rq_q   <= '0;
+    rs_q   <= '0;
+    cred_q <= '0;
+  endtask
+
+  // Start the RD phase of row y (its reads started already).
+  task automatic start_rd();
     wv_q    <= 1'b0;
     bx_q    <= '0;
     has_l_q <= 1'b0;
@@ -333,6 +341,7 @@ module mcadsw_post #(
       rs_q <= '0;
       ra_q <= '0;
       cred_q <= '0;
+      pf_q <= '0;
       fq_q <= '0;
       fw_q <= '0;
       fr_q <= '0;
@@ -530,23 +539,32 @@ module mcadsw_post #(
           rout_q <= base_out_i;
           y_q <= '0;
           donly_q <= 1'b0;
-          start_rd(base_dr_i);
+          pf_q <= 1'b0;
+          start_reads(base_dr_i);
+          start_rd();
         end
         S_RD: ;                                  // left by the last pixel (above)
         // The last pixel's check happens in this cycle; CD reads from the next.
-        S_BDR: start_cd(1'b1, y_q != '0);
+        // Row y + 1's reads may start during CD: its dR row goes into rb (free
+        // in CD), its first dL words into the word queue.
+        S_BDR: begin
+          start_cd(1'b1, y_q != '0);
+          rdr_q <= rdr_q + stride_q;
+          rdl_q <= rdl_q + ostride_q;
+          pf_q  <= y_q + CW'(1) < h_q;
+          start_reads(rdr_q + stride_q);
+        end
         S_CD: if (cend_q && !v2_q && !v3_q && !v4_q && !v5_q) st_q <= S_NEXT;
         S_NEXT: if (qc_q == '0) begin
           // Row y done (its mask, the median of row y - 1); the output row moves
           // to row y once it has been written.
           if (y_q != '0) rout_q <= rout_q + ostride_q;
+          pf_q <= 1'b0;
           if (donly_q) st_q <= S_DONE;
           else if (y_q + CW'(1) < h_q) begin
             y_q     <= y_q + CW'(1);
-            rdr_q   <= rdr_q + stride_q;
-            rdl_q   <= rdl_q + ostride_q;
             rmask_q <= rmask_q + stride_q;
-            start_rd(rdr_q + stride_q);
+            start_rd();
           end else begin
             donly_q <= 1'b1;
             start_cd(1'b0, 1'b1);
