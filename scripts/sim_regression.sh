@@ -46,7 +46,7 @@ cases=(
   "venus_lr|middlebury|venus|20|8|--lr"
   "teddy_lr|middlebury|teddy|60|4|--lr"
   "cones_lr_sub|middlebury|cones|60|4|--lr --subpixel"
-  "teddy_crop_lr_sub_latency|cif|teddy|64|4|--crop 100,100,74,38 --lr --subpixel --lr-t 3 --random-latency 4"
+  "teddy_crop_lr_sub_latency|cif|teddy|64|4|--crop 100,100,74,38 --lr --subpixel -T 3 --random-latency 4"
 )
 
 selected=()

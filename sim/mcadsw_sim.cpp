@@ -24,7 +24,7 @@ const char* kUsage =
     "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
-    "                  [--subpixel] [--right] [--lr [--lr-t T]] [--out-stride N]\n"
+    "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N]\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
     "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
     "                  the width (default: the width rounded up to 4)\n"
@@ -36,7 +36,7 @@ const char* kUsage =
     "  --lr            LR mode (docs/algorithm.md 12.2-12.5): left map, right map, left-right\n"
     "                  check, fill and 3x3 median; --out writes the filtered map; the mask\n"
     "                  plane is compared too (not with --right)\n"
-    "  --lr-t T        tolerance of the check, 0..63 (default 1)\n"
+    "  -T T            LR tolerance of the check, 0..63 (default 1)\n"
     "  --out-stride N  bytes per row of the output plane: a multiple of 4, at least the width\n"
     "                  (2 x the width with --subpixel); default: that rounded up to 4\n"
     "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
       else if (a == "--subpixel") opt.subpixel = true;
       else if (a == "--right") opt.right = true;
       else if (a == "--lr") opt.lr = true;
-      else if (a == "--lr-t") opt.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
+      else if (a == "-T") opt.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
       else if (a == "--out-stride") opt.out_stride = stride(val(), "output stride");
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)

@@ -143,6 +143,27 @@ TEST_F(SimCli, DisparityRangeOutOfRange) {
   expect_failure(run(pair() + " -d abc" + outputs()), "must be an integer");
 }
 
+// The LR mode: output, mask and both scratch maps compared; -T as `mcadsw match`.
+TEST_F(SimCli, LrCropRunsBitExact) {
+  const CliRun r = run(pair() + " -d 12 --crop 100,100,30,20 --lr -T 2 --subpixel" + outputs());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has_word(r.output, "BIT-EXACT")) << r.output;
+  std::ifstream j(dir_ / "r.json");
+  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"lr\": true"), std::string::npos) << json;
+}
+
+TEST_F(SimCli, BadLrOptions) {
+  expect_failure(run(pair() + " -d 16 --lr --right" + outputs()), "--lr and --right do not combine");
+  expect_failure(run(pair() + " -d 16 --lr -T 64" + outputs()), "out of range 0..63");
+  expect_failure(run(pair() + " -d 16 --lr -T -1" + outputs()), "out of range 0..63");
+  // Wider than the post stage's rows (1024).
+  cv::Mat wide(8, 1030, CV_8UC3, cv::Scalar(40, 80, 120));
+  const std::string l = (dir_ / "wl.png").string(), rr = (dir_ / "wr.png").string();
+  ASSERT_TRUE(cv::imwrite(l, wide) && cv::imwrite(rr, wide));
+  expect_failure(run(l + " " + rr + " -d 16 --lr" + outputs()), "the LR mode takes widths up to 1024");
+}
+
 TEST_F(SimCli, BadArguments) {
   expect_failure(run(pair() + outputs()), "need -d D");
   expect_failure(run(view("tsukuba", "left.png") + " -d 16" + outputs()), "need LEFT and RIGHT");
