@@ -310,7 +310,7 @@ module mcadsw_post #(
   endtask
 
   // Start the RD phase of row y (its reads started already).
-  task automatic start_rd();
+  task automatic start_rd;
     wv_q    <= 1'b0;
     bx_q    <= '0;
     has_l_q <= 1'b0;

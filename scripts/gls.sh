@@ -2,7 +2,7 @@
 # make gls: gate-level simulation. The OSU 0.18 um netlist written by
 # scripts/synth.sh runs in the same Verilator harness as the RTL (models of the
 # cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)
-# on a small crop of Teddy, in the raw mode and with the right view as base and
+# on small crops of Teddy, in the raw mode, in the LR mode and with the right view as base and
 # sub-pixel output; every disparity is compared with the reference (the
 # harness's scoreboard) and the disparity map with the RTL's, byte for byte.
 #
@@ -69,6 +69,21 @@ if cmp -s "$out/gls_right_sub.png" "$out/rtl_right_sub.png"; then
   echo "gls: netlist and RTL 16-bit right-reference maps are identical; both equal the reference"
 else
   echo "gls: netlist and RTL right-reference maps differ ($out/gls_right_sub.png, $out/rtl_right_sub.png)" >&2
+  exit 1
+fi
+# The LR mode at gate level: three passes and the post stage (check, fill,
+# median, mask; the mask plane is compared with the reference by the harness),
+# sub-pixel, a width with W % 4 = 3.
+lcrop=100,100,43,20
+echo "gls: Teddy crop $lcrop at D = $d, LR mode, sub-pixel, T = 2, netlist vs reference"
+"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$lcrop" --lr --subpixel -T 2 \
+    --name gls_lr_sub --out "$out/gls_lr_sub.png" --json "$out/gls_lr_sub.json"
+"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$lcrop" --lr --subpixel -T 2 \
+    --name rtl_lr_sub --out "$out/rtl_lr_sub.png" --json "$out/rtl_lr_sub.json"
+if cmp -s "$out/gls_lr_sub.png" "$out/rtl_lr_sub.png"; then
+  echo "gls: netlist and RTL 16-bit LR maps are identical; both equal the reference (and so do the masks)"
+else
+  echo "gls: netlist and RTL LR maps differ ($out/gls_lr_sub.png, $out/rtl_lr_sub.png)" >&2
   exit 1
 fi
 if [ "${FRAME:-0}" = 1 ]; then
