@@ -6,6 +6,9 @@
 #                (CASE=<name> one case, WAVES=1 an FST; make wave CASE=<name> opens it)
 #   make sim-random N=<cases> SEED=<s>  random pairs, sizes, D, tables and memory timing
 #                against the reference (default 200 cases, seed 1)
+#   make sim-build DMAX=<n> PAR=<p>  the reference, RTL and harness built for DMAX (1..128)
+#                disparities in build/dmax<n>_par<p> (bin/mcadsw_sim); make sim and make
+#                sim-random with DMAX= or PAR= use that build (PAR: only 1 so far)
 #   make ref-sim the reference model alone: Middlebury error table
 #   make synth   Yosys -> OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
 #                (build/synth/report.md; DMAX=16 for the reduced configuration; FLAT=1 the
@@ -25,7 +28,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim wave sim-random ref-sim coverage synth synth-check gls lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -41,15 +44,28 @@ build: configure
 test: build
 	@cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 
-# make sim [CASE=<name>] [WAVES=1]: the engine regression (scripts/sim_regression.sh)
-sim: build
-	@scripts/sim_regression.sh $(BUILD_DIR) "$(CASE)" "$(WAVES)"
+# A configuration's build: DMAX= or PAR= on the command line select
+# build/dmax<DMAX>_par<PAR> (defaults 64 and 1); otherwise the default build.
+CFG_SET := $(strip $(DMAX)$(PAR))
+CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1),$(BUILD_DIR))
+CFG_DEP := $(if $(CFG_SET),sim-build,build)
 
-# make sim-random [N=200] [SEED=1]: random differential regression
+# make sim-build DMAX=<n> PAR=<p>: that configuration's mcadsw_sim and mcadsw_sim_random
+sim-build: bootstrap
+	@cmake -S . -B $(CFG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX=$(or $(DMAX),64) \
+	  -DMCADSW_PAR=$(or $(PAR),1) > /dev/null
+	@cmake --build $(CFG_DIR) -j $(JOBS) --target mcadsw_sim mcadsw_sim_random
+	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1))"
+
+# make sim [CASE=<name>] [WAVES=1] [DMAX=<n> PAR=<p>]: the engine regression (scripts/sim_regression.sh)
+sim: $(CFG_DEP)
+	@scripts/sim_regression.sh $(CFG_DIR) "$(CASE)" "$(WAVES)"
+
+# make sim-random [N=200] [SEED=1] [DMAX=<n> PAR=<p>]: random differential regression
 N    ?= 200
 SEED ?= 1
-sim-random: build
-	@$(BUILD_DIR)/bin/mcadsw_sim_random --cases $(N) --seed $(SEED)
+sim-random: $(CFG_DEP)
+	@$(CFG_DIR)/bin/mcadsw_sim_random --cases $(N) --seed $(SEED)
 
 # make coverage [N=40]: instrumented model in build-cov (scripts/coverage.sh)
 coverage: bootstrap

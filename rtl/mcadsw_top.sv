@@ -344,16 +344,19 @@ module mcadsw_top #(
   // In-image bounds of a window starting at x0 (size n) in an image of size w.
   // In-image bounds of a window starting at x0 (size n): the image starts at lo
   // and ends before w.
-  function automatic logic [6:0] lo_bound(input logic signed [CW:0] x0, input logic [1:0] lo);
+  // Bounds are window columns, up to RCOLS - 1 (the right census window).
+  localparam int BW  = $clog2(RCOLS + 1);
+  localparam int RXB = $clog2(RCOLS);                 // right census column index
+  function automatic logic [BW-1:0] lo_bound(input logic signed [CW:0] x0, input logic [1:0] lo);
     logic signed [CW:0] l;
     l = $signed({{(CW - 1){1'b0}}, lo}) - x0;
-    lo_bound = (l > 0) ? 7'(l) : 7'd0;
+    lo_bound = (l > 0) ? BW'(l) : '0;
   endfunction
-  function automatic logic [6:0] hi_bound(input logic signed [CW:0] x0, input logic [CW-1:0] w,
+  function automatic logic [BW-1:0] hi_bound(input logic signed [CW:0] x0, input logic [CW-1:0] w,
                                           input int n);
     logic signed [CW+1:0] h;
     h = $signed({2'b00, w}) - 1 - x0;
-    hi_bound = (32'(h) > n - 1) ? 7'(n - 1) : 7'(h);
+    hi_bound = (32'(h) > n - 1) ? BW'(n - 1) : BW'(h);
   endfunction
 
   logic signed [CW:0] rx0;     // right census window origin
@@ -375,7 +378,8 @@ module mcadsw_top #(
   // reads only the last `shift` strips of its window, where shift (4 or 5) is
   // how many words the aligned origin moved with the block's 18 columns.
   localparam int LSTRIPS = (COLS + 4 + 6) / 4;      // census left  (14)
-  localparam int RSTRIPS = (RCOLS + 4 + 6) / 4;     // census right (30)
+  localparam int RSTRIPS = (RCOLS + 4 + 6) / 4;     // census right (30; 46 at DMAX = 128)
+  localparam int RSB     = $clog2(RSTRIPS + 1);
   localparam int WSTRIPS = COLS / 4 + 1;            // weights      (13)
   function automatic logic [5:0] first_strip(input logic [1:0] xin_ofs, input logic cont,
                                              input int strips);
@@ -483,7 +487,7 @@ module mcadsw_top #(
     .start_i (prep_start), .base_i (base_my_q), .stride_i (stride_q),
     .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (rx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
-    .strips_i (5'(RSTRIPS - 32'(r_first))),
+    .strips_i (RSB'(RSTRIPS - 32'(r_first))),
     .busy_o (rrd_busy_unused),
     .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .gnt_i (rd_gnt[1]),
     .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
@@ -544,14 +548,14 @@ module mcadsw_top #(
   mcadsw_census #(.COLS(RCOLS)) u_census_r (
     .clk_i, .rst_ni,
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
-    .cfg_lo_x_i (lo_bound(rx0, xlo_q)), .cfg_hi_x_i (hi_bound(rx0, xend_q, RCOLS)),
+    .cfg_lo_x_i (RXB'(lo_bound(rx0, xlo_q))), .cfg_hi_x_i (RXB'(hi_bound(rx0, xend_q, RCOLS))),
     .cfg_lo_y_i (6'(lo_bound(prep_y0, 2'd0))), .cfg_hi_y_i (6'(hi_bound(prep_y0, height_q, COLS))),
-    .cfg_ofs_i (rx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (5'(r_first)),
+    .cfg_ofs_i (rx_in[1:0]), .cfg_cont_i (prep_cont), .cfg_first_i (RSB'(r_first)),
     .ring_free_i (!agg_active),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
-    .rd_col_i (7'(32'(vrd_grp) * LANES + DMAX - 1 - 32'(vrd_d))), .rd_data_o (cen_r)
+    .rd_col_i (RXB'(32'(vrd_grp) * LANES + DMAX - 1 - 32'(vrd_d))), .rd_data_o (cen_r)
   );
 
   mcadsw_weight_gen u_weight_gen (

@@ -198,7 +198,7 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
   t.cfg_lr_t_i = uint32_t(c.lr_t) & 0xff;
   t.cfg_width_i = uint32_t(c.width) & 0xfff;
   t.cfg_height_i = uint32_t(c.height) & 0xfff;
-  t.cfg_disp_i = uint32_t(c.disparities) & 0x7f;
+  t.cfg_disp_i = uint32_t(c.disparities) & ((2u << kDispBits) - 1);  // NB = DISP_BITS + 1 bits
   const WeightThresholds thr = weight_thresholds(table);
   for (int i = 0; i < kWeightThresholds; ++i)
     set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);

@@ -7,8 +7,11 @@
 #include <string>
 
 #include "cli_util.hpp"
+#include "mcadsw/params.hpp"
 
 namespace {
+
+const std::string kDRange = "out of range 1.." + std::to_string(mcadsw::kDmax);
 
 namespace fs = std::filesystem;
 using mcadsw::test::CliRun;
@@ -76,8 +79,8 @@ TEST_F(Cli, SizeMismatch) {
 }
 
 TEST_F(Cli, DisparityRangeOutOfRange) {
-  expect_failure(run("match " + pair() + " -d 0 -o " + out_), "out of range 1..64");
-  expect_failure(run("match " + pair() + " -d 65 -o " + out_), "out of range 1..64");
+  expect_failure(run("match " + pair() + " -d 0 -o " + out_), kDRange);
+  expect_failure(run("match " + pair() + " -d " + std::to_string(mcadsw::kDmax + 1) + " -o " + out_), kDRange);
   expect_failure(run("match " + pair() + " -d abc -o " + out_), "must be an integer");
 }
 

@@ -43,12 +43,12 @@ constexpr int kTaps = 2 * kRadius + 2;  // 32: the 31 taps plus one of weight 0,
 constexpr int kPairs = kTaps / 2;       // 16
 constexpr int kRing = 32;               // cost rows held: y-15 .. y+16 (tap 31 reads y+16)
 constexpr int kBandRows = 32;           // output rows per work item
-constexpr int kKeyShift = kDispBits;    // key = E << 6 | d
-// A padded disparity lane (d >= D) starts at this offset, above every real key.
-constexpr uint32_t kPadKey = 0x60000000u;
+constexpr int kKeyShift = kDispBits;    // key = E << kDispBits | d (6 bits at DMAX = 64)
+constexpr uint32_t kKeyD = (1u << kKeyShift) - 1;
+// A padded disparity lane (d >= D) ends as kPadKey, above every real key (its
+// sum may wrap; it is replaced after the sum).
+constexpr uint32_t kPadKey = UINT32_MAX;
 static_assert((uint64_t(kFinalCostMax) << kKeyShift) + kDmax - 1 < kPadKey, "keys of real d");
-static_assert((uint64_t(kFinalCostMax) << kKeyShift) + kDmax - 1 + kPadKey <= UINT32_MAX,
-              "keys of padded d do not wrap");
 static_assert((int64_t(kVertCostMax) << kKeyShift) * 2 <= INT32_MAX, "vpmaddwd pair sum");
 static_assert(kCostMax * kWeightMax * 2 <= INT16_MAX, "vpmaddubsw pair sum");
 static_assert(kVertCostMax <= INT16_MAX, "Ev is a signed 16-bit vpmaddwd operand");
@@ -222,14 +222,15 @@ void band_portable(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out, uin
       const int centre[3] = {f.left[0][size_t(y) * W + x], f.left[1][size_t(y) * W + x],
                              f.left[2][size_t(y) * W + x]};
       const uint8_t* taps[3] = {line[0] + x, line[1] + x, line[2] + x};
-      for (int d = 0; d < Dp; ++d) acc[d] = uint32_t(d) + (d < D ? 0 : kPadKey);
+      for (int d = 0; d < Dp; ++d) acc[d] = uint32_t(d);
       for (int j = 0; j < kWindow; ++j) {
         const uint32_t w = uint32_t(f.table[colour_dist(taps, centre, j)]) << kKeyShift;
         if (w == 0) continue;
         const uint16_t* ev = &s.ev[size_t(clampi(x + j - kRadius, W)) * Dp];
         for (int d = 0; d < Dp; ++d) acc[d] += ev[d] * w;
       }
-      const int d = int(*std::min_element(acc.begin(), acc.end()) & (kDmax - 1));
+      for (int d = D; d < Dp; ++d) acc[d] = kPadKey;
+      const int d = int(*std::min_element(acc.begin(), acc.end()) & kKeyD);
       out[size_t(y) * W + x] = uint8_t(d);
       if (sub) sub[size_t(y) * W + x] = subpixel_from_keys(acc.data(), d, D);
     }
@@ -378,11 +379,16 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out, uint16_
   s.line.resize(3 * line_len);
   uint8_t* const line[3] = {&s.line[0], &s.line[line_len], &s.line[2 * line_len]};
   const WeightUnit wu(f.thr);
-  __m256i key0[kKeyVecs];  // d, or d + kPadKey for padded lanes
+  __m256i key0[kKeyVecs];  // d
+  __m256i pad[kKeyVecs];   // all ones in the padded lanes (d >= D)
   for (int a = 0; a < kKeyVecs; ++a) {
-    alignas(32) uint32_t k[8];
-    for (int i = 0; i < 8; ++i) k[i] = uint32_t(8 * a + i) + (8 * a + i < f.D ? 0 : kPadKey);
+    alignas(32) uint32_t k[8], p[8];
+    for (int i = 0; i < 8; ++i) {
+      k[i] = uint32_t(8 * a + i);
+      p[i] = 8 * a + i < f.D ? 0 : kPadKey;
+    }
     key0[a] = _mm256_load_si256(reinterpret_cast<const __m256i*>(k));
+    pad[a] = _mm256_load_si256(reinterpret_cast<const __m256i*>(p));
   }
 
   // Eq. 3, column by column: Ev of (x, y0..y1-1), two taps per vpmaddubsw.
@@ -475,12 +481,13 @@ void band_avx2(const Frame& f, int y0, int y1, Scratch& s, uint8_t* out, uint16_
         const uint32_t* h = hp + size_t(x + 2 * i) * Dp;  // x' = x - R + 2i
         for (int a = 0; a < kKeyVecs; ++a) madd_add_epi32(acc[a], h + 8 * a, w);
       }
+      for (int a = 0; a < kKeyVecs; ++a) acc[a] = _mm256_or_si256(acc[a], pad[a]);
       __m256i m = acc[0];
       for (int a = 1; a < kKeyVecs; ++a) m = _mm256_min_epu32(m, acc[a]);
       __m128i m4 = _mm_min_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256(m, 1));
       m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0x4E));
       m4 = _mm_min_epu32(m4, _mm_shuffle_epi32(m4, 0xB1));
-      const int d = int(uint32_t(_mm_cvtsi128_si32(m4)) & (kDmax - 1));
+      const int d = int(uint32_t(_mm_cvtsi128_si32(m4)) & kKeyD);
       out[size_t(y) * W + x] = uint8_t(d);
       if (sub) {
         alignas(32) uint32_t keys[Dp];
@@ -528,6 +535,16 @@ BandFn pick_kernel(int Dp, bool portable) {
       case 64: return band_avx2<64>;
       default: break;
     }
+  // Built for a DMAX above 64 (MCADSW_DMAX): the wider kernels too.
+  if constexpr (kDmax > 64) {
+    if (!portable) switch (Dp) {
+        case 80: return band_avx2<80>;
+        case 96: return band_avx2<96>;
+        case 112: return band_avx2<112>;
+        case 128: return band_avx2<128>;
+        default: break;
+      }
+  }
 #else
   (void)Dp;
   (void)portable;
@@ -535,7 +552,7 @@ BandFn pick_kernel(int Dp, bool portable) {
   return band_portable;
 }
 
-static_assert(kDmax <= 64, "the AVX2 kernel is instantiated for Dp = 16..64");
+static_assert(kDmax <= 128, "the AVX2 kernel is instantiated for Dp = 16..128");
 
 }  // namespace
 

@@ -11,8 +11,11 @@
 #include <string>
 
 #include "cli_util.hpp"
+#include "mcadsw/params.hpp"
 
 namespace {
+
+const std::string kDRange = "out of range 1.." + std::to_string(mcadsw::kDmax);
 
 namespace fs = std::filesystem;
 using mcadsw::test::CliRun;
@@ -137,9 +140,9 @@ TEST_F(SimCli, SizeMismatch) {
 }
 
 TEST_F(SimCli, DisparityRangeOutOfRange) {
-  expect_failure(run(pair() + " -d 0" + outputs()), "out of range 1..64");
-  expect_failure(run(pair() + " -d 65" + outputs()), "out of range 1..64");
-  expect_failure(run(pair() + " -d -3" + outputs()), "out of range 1..64");
+  expect_failure(run(pair() + " -d 0" + outputs()), kDRange);
+  expect_failure(run(pair() + " -d " + std::to_string(mcadsw::kDmax + 1) + outputs()), kDRange);
+  expect_failure(run(pair() + " -d -3" + outputs()), kDRange);
   expect_failure(run(pair() + " -d abc" + outputs()), "must be an integer");
 }
 

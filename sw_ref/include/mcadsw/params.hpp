@@ -55,7 +55,14 @@ static_assert((1 << kColorDistBits) > kColorDistMax);
 inline constexpr int kDefaultGamma = 22;  // chosen by the sweep of scripts/eval_pairs.sh, docs/algorithm.md
 
 // ---- Architecture (paper Sec. V) -------------------------------------------
-inline constexpr int kDmax = 64;      // largest disparity range D (d = 0..D-1)
+// Largest disparity range D (d = 0..D-1): a build parameter (CMake MCADSW_DMAX,
+// `make sim-build DMAX=<n>`), 64 by default (the paper's); at most 128.
+#ifndef MCADSW_DMAX
+#define MCADSW_DMAX 64
+#endif
+inline constexpr int kDmax = MCADSW_DMAX;
+inline constexpr int kDmaxDefault = 64;  // the configuration of rtl/mcadsw_pkg.sv and the budgets
+static_assert(kDmax >= 1 && kDmax <= 128, "MCADSW_DMAX must be 1..128");
 inline constexpr int kBlock = 18;     // output block is kBlock x kBlock
 inline constexpr int kLanes = 8;      // columns aggregated per cycle (Fig. 14)
 inline constexpr int kHorzAggregators = 3;  // horizontal aggregators fed 33 Ev (Fig. 12)
