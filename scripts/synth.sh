@@ -41,12 +41,15 @@ rtl=$(cd "$rtl" 2>/dev/null && pwd) || die "RTL directory '${RTL_DIR:-$root/rtl}
 # ---- Configuration checks (before anything is written) ----------------------------------
 # DMAX: the top's disparity range. The cost aggregator, the disparity width
 # (DISP_BITS) and the census read column are sized for the package's DMAX, so the
-# top supports 1 .. mcadsw_pkg::DMAX.
+# top supports 1 .. mcadsw_pkg::DMAX (64) with the package as it is; a DMAX up
+# to 128 is synthesised from a copy of the RTL whose package has that DMAX and
+# its DISP_BITS (as a CMake build with MCADSW_DMAX makes it, CMakeLists.txt).
 pkg_dmax=$(awk '/localparam int DMAX / {v = $5; gsub(/[^0-9]/, "", v); print v}' "$rtl/mcadsw_pkg.sv")
 [[ "$pkg_dmax" =~ ^[0-9]+$ ]] || die "cannot read DMAX from $rtl/mcadsw_pkg.sv"
 dmax=${DMAX:-64}
 dmax_ok=0
-if [[ "$dmax" =~ ^[0-9]{1,6}$ ]] && [ "$((10#$dmax))" -ge 1 ] && [ "$((10#$dmax))" -le "$pkg_dmax" ]; then
+dmax_limit=$(( pkg_dmax > 128 ? pkg_dmax : 128 ))
+if [[ "$dmax" =~ ^[0-9]{1,6}$ ]] && [ "$((10#$dmax))" -ge 1 ] && [ "$((10#$dmax))" -le "$dmax_limit" ]; then
   dmax=$((10#$dmax)); dmax_ok=1
 fi
 # No result of an earlier run may pass for this one's: summary, report and
@@ -62,7 +65,7 @@ if [ -n "$out" ] && [ -d "$out" ]; then
         "$out/sta.log" "$out/sta_endpoints.log"
 fi
 [ "$dmax_ok" = 1 ] ||
-  die "DMAX='$dmax' is not supported: an integer from 1 to $pkg_dmax (mcadsw_pkg::DMAX, the largest disparity range the cost aggregator and the disparity width are built for)"
+  die "DMAX='$dmax' is not supported: an integer from 1 to $dmax_limit (up to mcadsw_pkg::DMAX = $pkg_dmax with the package as it is, above it from a package made for that DMAX)"
 case "${FLAT:-0}" in
   0|"") flat=0 ;;
   1) flat=1 ;;
@@ -80,11 +83,25 @@ done
 [ -f "$lib" ] || die "liberty $lib not found (apt install qflow-tech-osu018)"
 if [ "$flat" = 1 ]; then
   [ -z "${RTL_DIR:-}" ] && [ -z "${YOSYS:-}" ] || die "RTL_DIR and YOSYS apply to the hierarchical flow only"
+  [ "$dmax" -le "$pkg_dmax" ] || die "FLAT=1 takes DMAX up to $pkg_dmax"
   DMAX=$dmax exec "$root/scripts/synth_flat.sh"
 fi
 
 mkdir -p "$out/blocks"
 out=$(cd "$out" && pwd)
+
+# Above the package's DMAX: the RTL with a package for this DMAX.
+if [ "$dmax" -gt "$pkg_dmax" ]; then
+  stage=$out/rtl
+  rm -rf "$stage"; mkdir -p "$stage"
+  cp "$rtl"/mcadsw_*.sv "$stage"/
+  bits=0; v=$((dmax - 1)); while [ "$v" -gt 0 ]; do bits=$((bits + 1)); v=$((v >> 1)); done
+  sed -i -E "s/(localparam int DMAX +)= [0-9]+;/\1= $dmax;/; s/(localparam int DISP_BITS +)= [0-9]+;/\1= $bits;/" \
+    "$stage/mcadsw_pkg.sv"
+  grep -q "localparam int DMAX *= $dmax;" "$stage/mcadsw_pkg.sv" || die "could not make the package for DMAX = $dmax"
+  echo "synth: DMAX = $dmax above the package's $pkg_dmax: RTL with a package for it in $stage"
+  rtl=$stage
+fi
 
 sdc=$root/constraints/mcadsw.sdc
 period_ns=$(awk '/^set period/ {print $3}' "$sdc")
