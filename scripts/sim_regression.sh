@@ -47,7 +47,15 @@ cases=(
   "teddy_lr|middlebury|teddy|60|4|--lr"
   "cones_lr_sub|middlebury|cones|60|4|--lr --subpixel"
   "teddy_crop_lr_sub_latency|cif|teddy|64|4|--crop 100,100,74,38 --lr --subpixel -T 3 --random-latency 4"
+  # Disparities up to about 120 (data/cif_x2: 2x upscaled Teddy and Cones, issue 18) at
+  # D = the build's DMAX (64 by default, 128 with make sim DMAX=128).
+  "cif_x2_teddy_dDMAX|cif_x2|teddy|DMAX|2|"
+  "cif_x2_cones_dDMAX|cif_x2|cones|DMAX|2|"
 )
+# The build's DMAX (CMake MCADSW_DMAX), for the cases above that run at it.
+dmax=$(awk -F= '/^MCADSW_DMAX:/ {print $2}' "$build/CMakeCache.txt" 2>/dev/null)
+dmax=${dmax:-64}
+for i in "${!cases[@]}"; do cases[$i]=${cases[$i]//DMAX/$dmax}; done
 
 selected=()
 for c in "${cases[@]}"; do

@@ -119,5 +119,32 @@ TEST(CifCrops, CommittedCropsMatchTheirGenerator) {
   std::filesystem::remove_all(tmp);
 }
 
+// data/cif_x2 (2x upscaled Teddy and Cones, disparities above 64) likewise; the
+// ground truth keeps its values (scale 2 for the doubled disparities).
+TEST(CifCrops, CommittedUpscaledCropsMatchTheirGenerator) {
+  const auto tmp = std::filesystem::temp_directory_path() / "mcadsw_cif_x2_check";
+  std::filesystem::remove_all(tmp);
+  const std::string cmd = std::string(MCADSW_CIF_TOOL) + " " + (kData / "middlebury").string() +
+                          " " + tmp.string() + " --x2 > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  for (const char* name : {"teddy", "cones"}) {
+    for (const char* f : {"left.png", "right.png", "gt.png", "nonocc.png", "all.png", "disc.png"}) {
+      const cv::Mat a = cv::imread((kData / "cif_x2" / name / f).string(), cv::IMREAD_UNCHANGED);
+      const cv::Mat b = cv::imread((tmp / name / f).string(), cv::IMREAD_UNCHANGED);
+      ASSERT_FALSE(a.empty()) << name << "/" << f;
+      ASSERT_EQ(a.cols, 352);
+      ASSERT_EQ(a.rows, 288);
+      ASSERT_EQ(a.type(), b.type());
+      EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0) << name << "/" << f;
+    }
+    // Disparities well above 64 are there (the crop holds the most of them).
+    double hi = 0;
+    cv::minMaxLoc(cv::imread((kData / "cif_x2" / name / "gt.png").string(), cv::IMREAD_UNCHANGED),
+                  nullptr, &hi);
+    EXPECT_GT(hi / 2, 90) << name;
+  }
+  std::filesystem::remove_all(tmp);
+}
+
 }  // namespace
 }  // namespace mcadsw

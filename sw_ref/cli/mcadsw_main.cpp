@@ -18,13 +18,13 @@
 
 namespace {
 
-const char* kUsage =
-    "usage:\n"
+const std::string kUsage =
+    std::string("usage:\n"
     "  mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]\n"
     "               [--gamma G] [--threads N] -o OUT.png\n"
     "      Disparity map of the left view (MCADSW, bit-exact with the RTL).\n"
     "      Writes the raw 8-bit map (pixel value = disparity) to OUT.png and a\n"
-    "      colour-mapped view to OUT_color.png. 1 <= D <= 64; default gamma 22.\n"
+    "      colour-mapped view to OUT_color.png. 1 <= D <= ") + std::to_string(mcadsw::kDmax) + " (DMAX); default gamma 22.\n"
     "      --lr: left-right check (tolerance T, 0..63, default 1), fill, 3x3 median;\n"
     "      --valid writes the check's mask (255 valid, 0 filled). --subpixel: a\n"
     "      16-bit map of 16 x disparity (parabolic). docs/algorithm.md section 12.\n"
