@@ -45,47 +45,30 @@ echo "gls: model built in $(( $(date +%s) - start )) s"
 
 left=$root/data/cif/teddy/left.png
 right=$root/data/cif/teddy/right.png
-echo "gls: Teddy crop $crop at D = $d, netlist vs reference"
-"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$crop" --name gls \
-    --out "$out/gls.png" --json "$out/gls.json"
-echo "gls: same crop, RTL vs reference"
-"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" --name rtl \
-    --out "$out/rtl.png" --json "$out/rtl.json"
-if cmp -s "$out/gls.png" "$out/rtl.png"; then
-  echo "gls: netlist and RTL disparity maps are identical; both equal the reference"
-else
-  echo "gls: netlist and RTL disparity maps differ ($out/gls.png, $out/rtl.png)" >&2
-  exit 1
-fi
+# gls_vs_rtl NAME CROP WHAT FLAGS...: the crop at D in one mode through the netlist
+# and the RTL (each checked against the reference by the harness); their maps
+# must be identical.
+gls_vs_rtl() {
+  local name=$1 crop=$2 what=$3; shift 3
+  echo "gls: Teddy crop $crop at D = $d, $what, netlist vs reference"
+  "$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$crop" "$@" \
+      --name "gls_$name" --out "$out/gls_$name.png" --json "$out/gls_$name.json"
+  "$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" "$@" \
+      --name "rtl_$name" --out "$out/rtl_$name.png" --json "$out/rtl_$name.json"
+  if cmp -s "$out/gls_$name.png" "$out/rtl_$name.png"; then
+    echo "gls: netlist and RTL maps ($what) are identical; both equal the reference"
+  else
+    echo "gls: netlist and RTL maps ($what) differ ($out/gls_$name.png, $out/rtl_$name.png)" >&2
+    exit 1
+  fi
+}
+gls_vs_rtl raw "$crop" "raw mode"
 # The other modes at gate level: the right view as base (mirrored pass, a width
-# with W % 4 = 2) with sub-pixel output (16-bit PNG).
-mcrop=100,100,42,24
-echo "gls: Teddy crop $mcrop at D = $d, right view as base, sub-pixel, netlist vs reference"
-"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$mcrop" --right --subpixel \
-    --name gls_right_sub --out "$out/gls_right_sub.png" --json "$out/gls_right_sub.json"
-"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$mcrop" --right --subpixel \
-    --name rtl_right_sub --out "$out/rtl_right_sub.png" --json "$out/rtl_right_sub.json"
-if cmp -s "$out/gls_right_sub.png" "$out/rtl_right_sub.png"; then
-  echo "gls: netlist and RTL 16-bit right-reference maps are identical; both equal the reference"
-else
-  echo "gls: netlist and RTL right-reference maps differ ($out/gls_right_sub.png, $out/rtl_right_sub.png)" >&2
-  exit 1
-fi
-# The LR mode at gate level: three passes and the post stage (check, fill,
-# median, mask; the mask plane is compared with the reference by the harness),
-# sub-pixel, a width with W % 4 = 3.
-lcrop=100,100,43,20
-echo "gls: Teddy crop $lcrop at D = $d, LR mode, sub-pixel, T = 2, netlist vs reference"
-"$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$lcrop" --lr --subpixel -T 2 \
-    --name gls_lr_sub --out "$out/gls_lr_sub.png" --json "$out/gls_lr_sub.json"
-"$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$lcrop" --lr --subpixel -T 2 \
-    --name rtl_lr_sub --out "$out/rtl_lr_sub.png" --json "$out/rtl_lr_sub.json"
-if cmp -s "$out/gls_lr_sub.png" "$out/rtl_lr_sub.png"; then
-  echo "gls: netlist and RTL 16-bit LR maps are identical; both equal the reference (and so do the masks)"
-else
-  echo "gls: netlist and RTL LR maps differ ($out/gls_lr_sub.png, $out/rtl_lr_sub.png)" >&2
-  exit 1
-fi
+# with W % 4 = 2) with sub-pixel output (16-bit PNG), and the LR mode (three
+# passes and the post stage: check, fill, median; the harness compares the mask
+# plane with the reference too), sub-pixel, a width with W % 4 = 3.
+gls_vs_rtl right_sub 100,100,42,24 "right view as base, sub-pixel" --right --subpixel
+gls_vs_rtl lr_sub 100,100,43,20 "LR mode, sub-pixel, T = 2" --lr --subpixel -T 2
 if [ "${FRAME:-0}" = 1 ]; then
   echo "gls: whole frame, Tsukuba 384x288 at D = 16, netlist vs reference (about 6 min)"
   mb=$root/data/middlebury/tsukuba

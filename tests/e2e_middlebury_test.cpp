@@ -99,51 +99,44 @@ INSTANTIATE_TEST_SUITE_P(Pairs, MiddleburyPost,
                                            PostCase{"cones", 60, 4, 9.01, 8.05}),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// data/cif is committed; regenerating it from data/middlebury must give the same pixels.
-TEST(CifCrops, CommittedCropsMatchTheirGenerator) {
-  const auto tmp = std::filesystem::temp_directory_path() / "mcadsw_cif_check";
+// Regenerates a committed crop set (make_cif_crops SRC TMP [flag]) and compares
+// every image of `names` in data/<set> with it, pixel for pixel.
+void expect_crops_regenerate(const char* set, const std::string& flag,
+                             std::initializer_list<const char*> names) {
+  const auto tmp = std::filesystem::temp_directory_path() / (std::string("mcadsw_check_") + set);
   std::filesystem::remove_all(tmp);
   const std::string cmd = std::string(MCADSW_CIF_TOOL) + " " + (kData / "middlebury").string() +
-                          " " + tmp.string() + " > /dev/null";
+                          " " + tmp.string() + flag + " > /dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  for (const char* name : {"tsukuba", "venus", "teddy", "cones"})
+  for (const char* name : names)
     for (const char* f : {"left.png", "right.png", "gt.png", "nonocc.png", "all.png", "disc.png"}) {
-      const cv::Mat a = cv::imread((kData / "cif" / name / f).string(), cv::IMREAD_UNCHANGED);
+      const cv::Mat a = cv::imread((kData / set / name / f).string(), cv::IMREAD_UNCHANGED);
       const cv::Mat b = cv::imread((tmp / name / f).string(), cv::IMREAD_UNCHANGED);
-      ASSERT_FALSE(a.empty()) << name << "/" << f;
+      ASSERT_FALSE(a.empty()) << set << "/" << name << "/" << f;
       ASSERT_EQ(a.cols, 352);
       ASSERT_EQ(a.rows, 288);
       ASSERT_EQ(a.type(), b.type());
-      EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0) << name << "/" << f;
+      EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0) << set << "/" << name << "/" << f;
     }
   std::filesystem::remove_all(tmp);
+}
+
+// data/cif is committed; regenerating it from data/middlebury must give the same pixels.
+TEST(CifCrops, CommittedCropsMatchTheirGenerator) {
+  expect_crops_regenerate("cif", "", {"tsukuba", "venus", "teddy", "cones"});
 }
 
 // data/cif_x2 (2x upscaled Teddy and Cones, disparities above 64) likewise; the
 // ground truth keeps its values (scale 2 for the doubled disparities).
 TEST(CifCrops, CommittedUpscaledCropsMatchTheirGenerator) {
-  const auto tmp = std::filesystem::temp_directory_path() / "mcadsw_cif_x2_check";
-  std::filesystem::remove_all(tmp);
-  const std::string cmd = std::string(MCADSW_CIF_TOOL) + " " + (kData / "middlebury").string() +
-                          " " + tmp.string() + " --x2 > /dev/null";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  expect_crops_regenerate("cif_x2", " --x2", {"teddy", "cones"});
   for (const char* name : {"teddy", "cones"}) {
-    for (const char* f : {"left.png", "right.png", "gt.png", "nonocc.png", "all.png", "disc.png"}) {
-      const cv::Mat a = cv::imread((kData / "cif_x2" / name / f).string(), cv::IMREAD_UNCHANGED);
-      const cv::Mat b = cv::imread((tmp / name / f).string(), cv::IMREAD_UNCHANGED);
-      ASSERT_FALSE(a.empty()) << name << "/" << f;
-      ASSERT_EQ(a.cols, 352);
-      ASSERT_EQ(a.rows, 288);
-      ASSERT_EQ(a.type(), b.type());
-      EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0) << name << "/" << f;
-    }
     // Disparities well above 64 are there (the crop holds the most of them).
     double hi = 0;
     cv::minMaxLoc(cv::imread((kData / "cif_x2" / name / "gt.png").string(), cv::IMREAD_UNCHANGED),
                   nullptr, &hi);
     EXPECT_GT(hi / 2, 90) << name;
   }
-  std::filesystem::remove_all(tmp);
 }
 
 }  // namespace
