@@ -51,6 +51,8 @@ cases=(
   # D = the build's DMAX (64 by default, 128 with make sim DMAX=128).
   "cif_x2_teddy_dDMAX|cif_x2|teddy|DMAX|2|"
   "cif_x2_cones_dDMAX|cif_x2|cones|DMAX|2|"
+  # VGA (640x480, data/vga_x2): cycles and frame rate of the wider frames.
+  "vga_x2_teddy_dDMAX|vga_x2|teddy|DMAX|2|"
 )
 # The build's DMAX (CMake MCADSW_DMAX), for the cases above that run at it.
 dmax=$(awk -F= '/^MCADSW_DMAX:/ {print $2}' "$build/CMakeCache.txt" 2>/dev/null)

@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(Pairs, MiddleburyPost,
 // Regenerates a committed crop set (make_cif_crops SRC TMP [flag]) and compares
 // every image of `names` in data/<set> with it, pixel for pixel.
 void expect_crops_regenerate(const char* set, const std::string& flag,
-                             std::initializer_list<const char*> names) {
+                             std::initializer_list<const char*> names, int w = 352, int h = 288) {
   const auto tmp = std::filesystem::temp_directory_path() / (std::string("mcadsw_check_") + set);
   std::filesystem::remove_all(tmp);
   const std::string cmd = std::string(MCADSW_CIF_TOOL) + " " + (kData / "middlebury").string() +
@@ -113,8 +113,8 @@ void expect_crops_regenerate(const char* set, const std::string& flag,
       const cv::Mat a = cv::imread((kData / set / name / f).string(), cv::IMREAD_UNCHANGED);
       const cv::Mat b = cv::imread((tmp / name / f).string(), cv::IMREAD_UNCHANGED);
       ASSERT_FALSE(a.empty()) << set << "/" << name << "/" << f;
-      ASSERT_EQ(a.cols, 352);
-      ASSERT_EQ(a.rows, 288);
+      ASSERT_EQ(a.cols, w);
+      ASSERT_EQ(a.rows, h);
       ASSERT_EQ(a.type(), b.type());
       EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0) << set << "/" << name << "/" << f;
     }
@@ -126,17 +126,20 @@ TEST(CifCrops, CommittedCropsMatchTheirGenerator) {
   expect_crops_regenerate("cif", "", {"tsukuba", "venus", "teddy", "cones"});
 }
 
-// data/cif_x2 (2x upscaled Teddy and Cones, disparities above 64) likewise; the
-// ground truth keeps its values (scale 2 for the doubled disparities).
+// data/cif_x2 and data/vga_x2 (2x upscaled Teddy and Cones, disparities above
+// 64; CIF and VGA windows) likewise; the ground truth keeps its values (scale 2
+// for the doubled disparities).
 TEST(CifCrops, CommittedUpscaledCropsMatchTheirGenerator) {
   expect_crops_regenerate("cif_x2", " --x2", {"teddy", "cones"});
-  for (const char* name : {"teddy", "cones"}) {
-    // Disparities well above 64 are there (the crop holds the most of them).
-    double hi = 0;
-    cv::minMaxLoc(cv::imread((kData / "cif_x2" / name / "gt.png").string(), cv::IMREAD_UNCHANGED),
-                  nullptr, &hi);
-    EXPECT_GT(hi / 2, 90) << name;
-  }
+  expect_crops_regenerate("vga_x2", " --x2 --vga", {"teddy", "cones"}, 640, 480);
+  for (const char* set : {"cif_x2", "vga_x2"})
+    for (const char* name : {"teddy", "cones"}) {
+      // Disparities well above 64 are there (the crop holds the most of them).
+      double hi = 0;
+      cv::minMaxLoc(cv::imread((kData / set / name / "gt.png").string(), cv::IMREAD_UNCHANGED),
+                    nullptr, &hi);
+      EXPECT_GT(hi / 2, 90) << set << "/" << name;
+    }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// make_cif_crops SRC DST [--x2]: cuts the CIF (352x288) crop of every Middlebury pair.
+// make_cif_crops SRC DST [--x2 [--vga]]: cuts the CIF (352x288) crop of every Middlebury pair.
 // The crop is centred: x0 = (W-352)/2, y0 = (H-288)/2 (integer division), taken
 // alike from left.png, right.png, gt.png and the three masks, so the disparity
 // convention (left x matches right x-d) and the GT values are unchanged.
@@ -8,7 +8,8 @@
 // while the ground truth's values stay, so its scale halves: 2 instead of 4
 // (value = 2 x disparity). The crop is not centred but the CIF window, on an
 // 8-pixel grid, with the most ground-truth pixels of disparity above 64 (the
-// first such window in row-major order).
+// first such window in row-major order). --vga: 640x480 windows instead (VGA,
+// for the cycle and frame-rate figures of issue 18).
 #include <filesystem>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
@@ -18,15 +19,15 @@
 
 namespace fs = std::filesystem;
 
-constexpr int kCifW = 352, kCifH = 288;
-
 int main(int argc, char** argv) {
-  const bool x2 = argc == 4 && std::string(argv[3]) == "--x2";
-  if (argc != 3 && !x2) {
-    std::cerr << "usage: make_cif_crops SRC_DIR DST_DIR [--x2] (e.g. data/middlebury data/cif,\n"
-                 "       data/middlebury data/cif_x2 --x2)\n";
+  const bool x2 = argc >= 4 && std::string(argv[3]) == "--x2";
+  const bool vga = x2 && argc == 5 && std::string(argv[4]) == "--vga";
+  if (argc != 3 && !(x2 && (argc == 4 || vga))) {
+    std::cerr << "usage: make_cif_crops SRC_DIR DST_DIR [--x2 [--vga]] (e.g. data/middlebury data/cif,\n"
+                 "       data/middlebury data/cif_x2 --x2, data/middlebury data/vga_x2 --x2 --vga)\n";
     return 2;
   }
+  const int kCifW = vga ? 640 : 352, kCifH = vga ? 480 : 288;
   const fs::path src(argv[1]), dst(argv[2]);
   const std::vector<const char*> names =
       x2 ? std::vector<const char*>{"teddy", "cones"}
@@ -64,7 +65,8 @@ int main(int argc, char** argv) {
         cv::resize(img, img, cv::Size(), 2.0, 2.0, view ? cv::INTER_CUBIC : cv::INTER_NEAREST);
       }
       if (img.empty() || img.cols < kCifW || img.rows < kCifH) {
-        std::cerr << "make_cif_crops: cannot read a >= 352x288 image from " << (src / name / file)
+        std::cerr << "make_cif_crops: cannot read a >= " << kCifW << "x" << kCifH << " image from "
+                  << (src / name / file)
                   << "\n";
         return 1;
       }
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
     }
     ++pairs;
   }
-  std::cout << "make_cif_crops: wrote " << pairs << " CIF pairs to " << dst << (x2 ? " (2x upscaled)" : "")
-            << "\n";
+  std::cout << "make_cif_crops: wrote " << pairs << " pairs of " << kCifW << "x" << kCifH << " to " << dst
+            << (x2 ? " (2x upscaled)" : "") << "\n";
   return 0;
 }
