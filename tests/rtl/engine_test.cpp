@@ -240,6 +240,39 @@ TEST(Engine, LrModeMatchesReference) {
     }
 }
 
+// The LR mode's three passes under the faults of the raw mode: frames back to
+// back without a reset, a reset in each pass (the post stage included) followed
+// by clean frames, and a start while the post stage runs (ignored).
+TEST(Engine, LrModeFaultsAndBackToBackFrames) {
+  const std::string dir = std::string(MCADSW_DATA_DIR) + "/cif/teddy/";
+  const YuvImage left = load_yuv(dir + "left.png"), right = load_yuv(dir + "right.png");
+  Config c1, c2;
+  c1.disparities = 13;
+  c2.disparities = 20;
+  const std::vector<sim::Frame> frames{{crop(left, 150, 90, 37, 19), crop(right, 150, 90, 37, 19), c1},
+                                       {crop(left, 60, 140, 22, 25), crop(right, 60, 140, 22, 25), c2}};
+  EngineOptions opt;
+  opt.lr = true;
+  opt.subpixel = true;
+  opt.lr_tolerance = 2;
+  const std::vector<EngineResult> clean = sim::run_frames(frames, opt);
+  for (const EngineResult& r : clean) expect_exact(r);
+  const long frame0 = clean.at(0).cycles;
+  // Left pass, right pass, post stage (the last few per cent of the frame).
+  for (long at : {frame0 / 5, frame0 * 3 / 5, frame0 * 97 / 100}) {
+    SCOPED_TRACE("reset after " + std::to_string(at) + " of " + std::to_string(frame0) + " cycles");
+    for (const EngineResult& r : sim::run_frames(frames, opt, {sim::Fault::kResetMidFrame, at}))
+      expect_exact(r);
+  }
+  // A second start (with the same, valid, configuration on the ports) in the post stage.
+  const sim::RawConfig other{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 24, 24, 20, 10, 5};
+  const EngineResult r =
+      sim::run_frames({frames[0]}, opt, {sim::Fault::kStartWhileBusy, frame0 * 97 / 100, other}).at(0);
+  expect_exact(r);
+  EXPECT_EQ(r.cycles, frame0) << "a start while busy changed the frame";
+  EXPECT_EQ(r.words_written, clean.at(0).words_written);
+}
+
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,
 // finishes at once and writes nothing.
 TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
