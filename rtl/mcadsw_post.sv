@@ -153,11 +153,9 @@ module mcadsw_post #(
   logic          has_l_q;                      // a valid pixel seen in this row
   logic [VB-1:0] last_l_q;
   logic          p_ok;
-  always_comb begin
-    logic [7:0] dr;
-    dr   = rb_q[8*p_byte_q +: 8];
-    p_ok = p_inb_q && ((p_d_q >= dr) ? (p_d_q - dr) : (dr - p_d_q)) <= {2'b00, tol_q};
-  end
+  logic [7:0]    p_dr;                         // dR(x - d)
+  assign p_dr = rb_q[8*p_byte_q +: 8];
+  assign p_ok = p_inb_q && ((p_d_q >= p_dr) ? (p_d_q - p_dr) : (p_dr - p_d_q)) <= {2'b00, tol_q};
 
   // ---- CD: stage 1 reads column x; 2 fills and writes the mask; 3 sorts the
   // column and shifts it in; 4 takes the median; 5 writes the output ------------------
@@ -235,6 +233,11 @@ module mcadsw_post #(
   // may still push: at most one mask and three output words (stages 1 to 5).
   assign q_room = qc_q <= (QI + 1)'(QD - 5);
   assign q_head = q_q[qr_q*QE +: QE];
+  logic          e_out;                        // the head entry's fields
+  logic [CW-1:0] e_k;
+  logic [3:0]    e_be;
+  logic [31:0]   e_data;
+  assign {e_out, e_k, e_be, e_data} = q_head;
   assign q_pop  = qc_q != '0 && port_free && (st_q == S_CD || st_q == S_NEXT || st_q == S_DONE);
 
   // Stage 2 mask word, stage 5 output word.
@@ -510,11 +513,6 @@ module mcadsw_post #(
       if (qb_push) q_q[qw_b*QE +: QE] <= qb_e;
       qw_q <= qw_q + QI'(qa_push) + QI'(qb_push);
       if (q_pop) begin
-        logic          e_out;
-        logic [CW-1:0] e_k;
-        logic [3:0]    e_be;
-        logic [31:0]   e_data;
-        {e_out, e_k, e_be, e_data} = q_head;
         req_q   <= 1'b1;
         we_q    <= 1'b1;
         addr_q  <= (e_out ? rout_q : rmask_q) + AW'({e_k, 2'b00});
