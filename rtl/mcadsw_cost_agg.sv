@@ -281,6 +281,7 @@ module mcadsw_cost_agg #(
     .d_i     (h3_d_q),
     .grp_i   (h3_grp_q),
     .fc_i    (fc),
+    .lanes_i (1'b1),
     .valid_o (disp_valid_o),
     .grp_o   (disp_grp_o),
     .disp_o  (disp_o),

@@ -11,6 +11,11 @@
 // num = E(d-1) - E(d+1) and den = E(d-1) + E(d+1) - 2 E(d), the second counts
 // the k = 1..8 with 16 |num| >= (2k - 1) den, which is the rounded |offset|.
 // The offset is 0 when the best is at d = 0 or has no later disparity (d = D-1).
+//
+// P disparities a step (issue 18, docs/architecture.md 13): fc_i holds the costs
+// of d_i .. d_i + P - 1 (lane p, pixel m at (p HAGG + m) FB); lanes_i masks the
+// lanes at or above D. The lanes are taken one after the other, as P single
+// steps, so ties still keep the smallest d; P = 1 is the paper's WTA.
 `default_nettype none
 
 module mcadsw_wta #(
@@ -19,6 +24,7 @@ module mcadsw_wta #(
   parameter int FB    = mcadsw_pkg::FCOST_BITS,
   parameter int DB    = mcadsw_pkg::DISP_BITS,
   parameter int SPB   = DB + 4,                  // sub-pixel value: 16 d + offset
+  parameter int P     = 1,                       // disparities a step
   parameter int GB    = $clog2(BLOCK / HAGG)
 ) (
   input  logic                clk_i,
@@ -26,9 +32,10 @@ module mcadsw_wta #(
   input  logic                valid_i,
   input  logic                first_i,    // d == 0: take the cost unconditionally
   input  logic                last_i,     // d == D - 1: emit the winners
-  input  logic [DB-1:0]       d_i,
+  input  logic [DB-1:0]       d_i,        // the step's first disparity
   input  logic [GB-1:0]       grp_i,      // pixels HAGG*grp .. HAGG*grp + HAGG - 1
-  input  logic [HAGG*FB-1:0]  fc_i,
+  input  logic [P*HAGG*FB-1:0] fc_i,
+  input  logic [P-1:0]        lanes_i,    // lane p holds a disparity below D
   output logic                valid_o,
   output logic [GB-1:0]       grp_o,
   output logic [HAGG*DB-1:0]  disp_o,
@@ -54,22 +61,31 @@ module mcadsw_wta #(
   logic [HAGG-1:0]     win_cpok;
 
   for (genvar m = 0; m < HAGG; m++) begin : g_cmp
-    logic [FB-1:0] old_cost, old_prev, old_cm, old_cp, c;
-    logic [DB-1:0] old_d;
-    logic          old_cpok;
-    assign {old_cost, old_prev, old_cm, old_cp, old_d, old_cpok} = head[m*PS +: PS];
-    assign c = fc_i[m*FB +: FB];
-    logic take;
-    assign take = first_i || c < old_cost;
-    assign win_cost[m*FB +: FB] = take ? c : old_cost;
-    assign win_d[m*DB +: DB]    = take ? d_i : old_d;
-    // E(d-1) of a new best is the previous disparity's cost; E(d+1) is the first
-    // cost after the best.
-    assign win_cm[m*FB +: FB] = take ? old_prev : old_cm;
-    assign win_cp[m*FB +: FB] = (!take && !old_cpok) ? c : old_cp;
-    assign win_cpok[m]        = !take;   // the best has a later cost unless it is new
-    assign nxt[m*PS +: PS] = {win_cost[m*FB +: FB], c, win_cm[m*FB +: FB], win_cp[m*FB +: FB],
-                              win_d[m*DB +: DB], win_cpok[m]};
+    // State p (bits p PS ..): the pixel's before lane p (0: from the ring); P: after the step.
+    logic [(P+1)*PS-1:0] st /* verilator split_var */;  // packed: never a memory
+    assign st[0 +: PS] = head[m*PS +: PS];
+    for (genvar p = 0; p < P; p++) begin : g_lane
+      logic [FB-1:0] old_cost, old_prev, old_cm, old_cp, c, cost, cm, cp;
+      logic [DB-1:0] old_d, d, dw;
+      logic          old_cpok, take, cpok;
+      assign {old_cost, old_prev, old_cm, old_cp, old_d, old_cpok} = st[p*PS +: PS];
+      assign c    = fc_i[(p*HAGG + m)*FB +: FB];
+      assign d    = d_i + DB'(p);
+      assign take = (first_i && p == 0) || c < old_cost;
+      assign cost = take ? c : old_cost;
+      assign dw   = take ? d : old_d;
+      // E(d-1) of a new best is the previous disparity's cost; E(d+1) is the first
+      // cost after the best.
+      assign cm   = take ? old_prev : old_cm;
+      assign cp   = (!take && !old_cpok) ? c : old_cp;
+      assign cpok = !take;                 // the best has a later cost unless it is new
+      // A lane at or above D leaves the state as it is.
+      assign st[(p+1)*PS +: PS] = lanes_i[p] ? {cost, c, cm, cp, dw, cpok} : st[p*PS +: PS];
+    end
+    logic [FB-1:0] prev_unused;
+    assign {win_cost[m*FB +: FB], prev_unused, win_cm[m*FB +: FB], win_cp[m*FB +: FB],
+            win_d[m*DB +: DB], win_cpok[m]} = st[P*PS +: PS];
+    assign nxt[m*PS +: PS] = st[P*PS +: PS];
   end
 
   // The ring: no reset needed, every field is written at d = 0 before it is used.
