@@ -102,7 +102,6 @@ module mcadsw_post #(
   typedef enum logic [2:0] { S_IDLE, S_RD, S_BDR, S_CD, S_NEXT, S_DONE } state_e;
   state_e        st_q;
   logic [CW-1:0] y_q;
-  logic          donly_q;                      // the last CD pass: median of row H - 1 only
 
   // ---- RD: requests, responses, the dL word queue ------------------------------------
   logic [CW:0] nr, nt;                         // dR words, dR + dL words of a row
@@ -159,7 +158,7 @@ module mcadsw_post #(
 
   // ---- CD: stage 1 reads column x; 2 fills and writes the mask; 3 sorts the
   // column and shifts it in; 4 takes the median; 5 writes the output ------------------
-  logic          cd_c_q;                       // fill row y (not in the last pass)
+  logic          cd_c_q;                       // fill row y (0: the last pass, median of row H - 1)
   logic          cd_d_q;                       // write medians (not in row 0's pass)
   logic          ups_q, mids_q;                // median row buffers of rows r - 1 and r
   logic [CW-1:0] cx_q;                         // next column to read
@@ -339,7 +338,6 @@ module mcadsw_post #(
       addr_q <= '0;
       wdata_q <= '0;
       y_q <= '0;
-      donly_q <= '0;
       rq_q <= '0;
       rs_q <= '0;
       ra_q <= '0;
@@ -536,7 +534,6 @@ module mcadsw_post #(
           rmask_q <= base_mask_i;
           rout_q <= base_out_i;
           y_q <= '0;
-          donly_q <= 1'b0;
           pf_q <= 1'b0;
           start_reads(base_dr_i);
           start_rd();
@@ -558,13 +555,12 @@ module mcadsw_post #(
           // to row y once it has been written.
           if (y_q != '0) rout_q <= rout_q + ostride_q;
           pf_q <= 1'b0;
-          if (donly_q) st_q <= S_DONE;
+          if (!cd_c_q) st_q <= S_DONE;            // that was the last pass (no fill)
           else if (y_q + CW'(1) < h_q) begin
             y_q     <= y_q + CW'(1);
             rmask_q <= rmask_q + stride_q;
             start_rd();
           end else begin
-            donly_q <= 1'b1;
             start_cd(1'b0, 1'b1);
           end
         end

@@ -79,7 +79,7 @@ module mcadsw_top #(
   logic [CW-1:0]       width_q;        // the image width, for the checks
   logic                lr_q;           // LR mode: three passes (below)
   logic                lr_sub_q;       // LR mode with sub-pixel output
-  logic                pack_q;         // this pass writes the LR scratch format (dL, sub-pixel)
+  logic                pack;           // this pass writes the LR scratch format (dL, sub-pixel)
   logic [1:0]          pass_q;         // LR: 0 left map, 1 right map, 2 post stage
   // LR mode: the planes of the later passes, T.
   logic [AW-1:0]       base_ru_q, base_rv_q, base_dl_q, base_dr_q, base_mask_q, base_fout_q;
@@ -175,6 +175,21 @@ module mcadsw_top #(
       check = 4'd12;
   end
 
+  // The right view as base runs mirrored about W4, the width rounded up to 4
+  // columns; the image then lies in pass columns W4 - W .. W4 - 1.
+  function automatic logic [CW-1:0] w4(input logic [CW-1:0] w);
+    w4 = (w + CW'(3)) & ~(CW'(3));
+  endfunction
+  function automatic logic [1:0] w4_lo(input logic [CW-1:0] w);
+    w4_lo = 2'(CW'(0) - w);
+  endfunction
+
+  // LR mode: the passes' ends, and the scratch format in the first pass.
+  logic pass1_done, pass2_done;
+  assign pass1_done = sched_done && lr_q && pass_q == 2'd0;
+  assign pass2_done = sched_done && lr_q && pass_q == 2'd1;
+  assign pack       = lr_sub_q && pass_q == 2'd0;
+
   // A start is taken only while idle: not while the scheduler runs, nor in the
   // two cycles after an accepted start (chk_q, go_q), when busy_o is already high.
   // The configuration is registered at the start and checked in the next cycle
@@ -187,7 +202,7 @@ module mcadsw_top #(
     if (!rst_ni) begin
       {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q} <= '0;
       {out_stride_q, xend_q, xlo_q, height_q, disp_q, thr_q, sub_q, right_q} <= '0;
-      {width_q, lr_q, lr_sub_q, pack_q, pass_q, chk_q} <= '0;
+      {width_q, lr_q, lr_sub_q, pass_q, chk_q} <= '0;
       {base_ru_q, base_rv_q, base_dl_q, base_dr_q, base_mask_q, base_fout_q, lr_t_q} <= '0;
       done_o       <= 1'b0;
       error_o      <= 1'b0;
@@ -203,14 +218,12 @@ module mcadsw_top #(
         stride_q   <= cfg_stride_i;
         out_stride_q <= cfg_out_stride_i;
         sub_q      <= cfg_sub;
-        // Mirrored: W4 = W rounded up to 4 columns, the image in W4 - W .. W4 - 1.
-        xend_q     <= cfg_right ? (cfg_width_i + CW'(3)) & ~(CW'(3)) : cfg_width_i;
-        xlo_q      <= cfg_right ? 2'(-cfg_width_i) : 2'd0;
+        xend_q     <= cfg_right ? w4(cfg_width_i) : cfg_width_i;
+        xlo_q      <= cfg_right ? w4_lo(cfg_width_i) : 2'd0;
         right_q    <= cfg_right;
         width_q    <= cfg_width_i;
         lr_q       <= cfg_lr;
         lr_sub_q   <= cfg_lr && cfg_sub;
-        pack_q     <= cfg_lr && cfg_sub;
         pass_q     <= 2'd0;
         base_ru_q  <= cfg_base_ru_i;
         base_rv_q  <= cfg_base_rv_i;
@@ -234,20 +247,19 @@ module mcadsw_top #(
       end
       // LR mode: after the left map, the right map (the right view as base,
       // 1 byte a pixel into dR, input stride); after that the post stage.
-      if (sched_done && lr_q && pass_q == 2'd0) begin
+      if (pass1_done) begin
         base_by_q  <= base_my_q;
         base_bu_q  <= base_ru_q;
         base_bv_q  <= base_rv_q;
         base_my_q  <= base_by_q;
         base_out_q <= base_dr_q;
         sub_q      <= 1'b0;
-        pack_q     <= 1'b0;
         right_q    <= 1'b1;
-        xend_q     <= (width_q + CW'(3)) & ~(CW'(3));
-        xlo_q      <= 2'(CW'(0) - width_q);
+        xend_q     <= w4(width_q);
+        xlo_q      <= w4_lo(width_q);
         pass_q     <= 2'd1;
       end
-      if (sched_done && lr_q && pass_q == 2'd1) pass_q <= 2'd2;
+      if (pass2_done) pass_q <= 2'd2;
       if ((sched_done && !lr_q) || post_done) done_o <= 1'b1;
     end
   end
@@ -256,7 +268,7 @@ module mcadsw_top #(
   logic go_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) go_q <= 1'b0;
-    else go_q <= (chk_q && check == 4'd0) || (sched_done && lr_q && pass_q == 2'd0);
+    else go_q <= (chk_q && check == 4'd0) || pass1_done;
   end
 
   // LR mode: the frame runs from the start of the first pass to the post
@@ -267,7 +279,7 @@ module mcadsw_top #(
       lr_run_q     <= 1'b0;
       post_start_q <= 1'b0;
     end else begin
-      post_start_q <= sched_done && lr_q && pass_q == 2'd1;
+      post_start_q <= pass2_done;
       if (chk_q && check == 4'd0 && lr_q) lr_run_q <= 1'b1;
       if (post_done) lr_run_q <= 1'b0;
     end
@@ -636,7 +648,7 @@ module mcadsw_top #(
   end
   assign val_valid = sub_q ? sub_valid : disp_valid;
   assign val_grp   = sub_q ? sub_grp : disp_grp;
-  assign val       = pack_q ? sub_pack : sub_q ? sub_wide : disp_wide;
+  assign val       = pack ? sub_pack : sub_q ? sub_wide : disp_wide;
 
   mcadsw_depth_fifo #(.AW(AW), .CW(CW), .VB(FVB)) u_depth_fifo (
     .clk_i, .rst_ni,

@@ -95,10 +95,8 @@ if [ "$dmax" -gt "$pkg_dmax" ]; then
   stage=$out/rtl
   rm -rf "$stage"; mkdir -p "$stage"
   cp "$rtl"/mcadsw_*.sv "$stage"/
-  bits=0; v=$((dmax - 1)); while [ "$v" -gt 0 ]; do bits=$((bits + 1)); v=$((v >> 1)); done
-  sed -i -E "s/(localparam int DMAX +)= [0-9]+;/\1= $dmax;/; s/(localparam int DISP_BITS +)= [0-9]+;/\1= $bits;/" \
-    "$stage/mcadsw_pkg.sv"
-  grep -q "localparam int DMAX *= $dmax;" "$stage/mcadsw_pkg.sv" || die "could not make the package for DMAX = $dmax"
+  "$root/scripts/rtl_pkg_dmax.sh" "$dmax" "$rtl/mcadsw_pkg.sv" "$stage/mcadsw_pkg.sv" ||
+    die "could not make the package for DMAX = $dmax"
   echo "synth: DMAX = $dmax above the package's $pkg_dmax: RTL with a package for it in $stage"
   rtl=$stage
 fi

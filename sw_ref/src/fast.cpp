@@ -533,18 +533,12 @@ BandFn pick_kernel(int Dp, bool portable) {
       case 32: return band_avx2<32>;
       case 48: return band_avx2<48>;
       case 64: return band_avx2<64>;
+      case 80: return band_avx2<80>;  // 80 .. 128: builds with DMAX above 64 (MCADSW_DMAX)
+      case 96: return band_avx2<96>;
+      case 112: return band_avx2<112>;
+      case 128: return band_avx2<128>;
       default: break;
     }
-  // Built for a DMAX above 64 (MCADSW_DMAX): the wider kernels too.
-  if constexpr (kDmax > 64) {
-    if (!portable) switch (Dp) {
-        case 80: return band_avx2<80>;
-        case 96: return band_avx2<96>;
-        case 112: return band_avx2<112>;
-        case 128: return band_avx2<128>;
-        default: break;
-      }
-  }
 #else
   (void)Dp;
   (void)portable;
