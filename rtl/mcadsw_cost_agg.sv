@@ -16,6 +16,13 @@
 // ping-pong read (registered) and horizontal weight address, c+10 horizontal
 // sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
 // multiplexers out of the horizontal sum's cycle (docs/architecture.md section 10).
+//
+// P disparities a step (issue 18, docs/architecture.md 13): a step evaluates d ..
+// d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +
+// P - 1 lanes, lane j at image column (column of left lane j - (P - 1)) - d, so
+// disparity d + p of left lane l is right lane l + P - 1 - p. The vertical
+// aggregator, the ping-pong buffer and the horizontal aggregators are P copies
+// (the weights are shared); lanes with d + p >= D travel masked to the WTA.
 `default_nettype none
 
 module mcadsw_cost_agg #(
@@ -25,6 +32,7 @@ module mcadsw_cost_agg #(
   parameter int LANES  = mcadsw_pkg::LANES,
   parameter int HAGG   = mcadsw_pkg::HAGG,
   parameter int GROUPS = mcadsw_pkg::GROUPS,
+  parameter int P      = 1,                  // disparities a step (1, 2, 4)
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int VB     = mcadsw_pkg::VCOST_BITS,
@@ -49,10 +57,10 @@ module mcadsw_cost_agg #(
   output logic                          vrd_en_o,
   output logic [RB-1:0]                 vrd_row_o,
   output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
-  output logic [DB-1:0]                 vrd_d_o,
+  output logic [DB-1:0]                 vrd_d_o,      // the step's first disparity
   output logic                          vrd_slot_o,   // weight row slot
   input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
-  input  logic [LANES*WINDOW*CB-1:0]    cen_r_i,
+  input  logic [(LANES+P-1)*WINDOW*CB-1:0] cen_r_i,  // right lanes, see above
   input  logic [LANES*WINDOW*WB-1:0]    wv_i,
   // Horizontal weight buffer (data one cycle after address)
   output logic                          hrd_en_o,
@@ -76,32 +84,35 @@ module mcadsw_cost_agg #(
   output logic [HAGG*DB-1:0]            sub_d_o,      // their integer disparities
   output logic                          sub_busy_o,   // sub-pixel values still to come
   // Monitor taps for verification: vertical and final costs with their tags
+  // (copy p at p LANES VB and p HAGG FB holds disparity d + p; lanes >= D are garbage)
   output logic                          mon_ev_valid_o,
   output logic [RB-1:0]                 mon_ev_row_o,
   output logic [DB-1:0]                 mon_ev_d_o,
   output logic [GB-1:0]                 mon_ev_grp_o,
-  output logic [LANES*VB-1:0]           mon_ev_o,
+  output logic [P*LANES*VB-1:0]         mon_ev_o,
   output logic                          mon_fc_valid_o,
   output logic [RB-1:0]                 mon_fc_row_o,
   output logic [DB-1:0]                 mon_fc_d_o,
   output logic [GB-1:0]                 mon_fc_grp_o,
-  output logic [HAGG*FB-1:0]            mon_fc_o
+  output logic [P*HAGG*FB-1:0]          mon_fc_o
 );
 
   if (GROUPS * LANES != BLOCK + WINDOW - 1 || GROUPS * HAGG != BLOCK ||
-      (1 << DB) < DMAX) begin : g_bad_param
+      (1 << DB) < DMAX || !(P == 1 || P == 2 || P == 4) || DMAX % P != 0) begin : g_bad_param
     mcadsw_error_cost_agg_geometry u_error ();
   end
 
   // A tag travels with each column group and output group: valid, first
-  // (d == 0), last (d == D - 1), block row, d, group. Stages: v1 data cycle,
+  // (d == 0), last (the step holds D - 1), lane mask (d + p < D), block row, d,
+  // group. Stages: v1 data cycle,
   // v2 ping-pong write, h0 bank handover, h1 ping-pong read and horizontal
   // weight address, h2 horizontal sum, h3 WTA.
 
   // ---- Vertical side: issue column-group reads ----------------------------
   logic          busy_q;
   logic [RB-1:0] row_q;
-  logic [DB-1:0] d_q, dlast_q;
+  logic [DB-1:0] d_q, dlast_q, dmax_q;   // step's first d, last step's first d, D - 1
+  logic [P-1:0]  lanes;                  // lane p: d + p < D
   logic [CLB-1:0] last_col_q;
   logic          slot_q;
   logic [GB-1:0] grp_q;
@@ -118,6 +129,7 @@ module mcadsw_cost_agg #(
       row_q   <= '0;
       d_q     <= '0;
       dlast_q <= '0;
+      dmax_q  <= '0;
       grp_q   <= '0;
       last_col_q <= '0;
       slot_q  <= 1'b0;
@@ -127,14 +139,15 @@ module mcadsw_cost_agg #(
       busy_q  <= 1'b1;
       row_q   <= job_row_i;
       d_q     <= '0;
-      dlast_q <= DB'(job_disp_i - NB'(1));
+      dlast_q <= DB'(job_disp_i - NB'(1)) & ~DB'(P - 1);
+      dmax_q  <= DB'(job_disp_i - NB'(1));
       grp_q   <= '0;
     end else if (busy_q) begin
       if (issue_last) begin
         busy_q <= 1'b0;
       end else if (grp_q == GB'(GROUPS - 1)) begin
         grp_q <= '0;
-        d_q   <= d_q + DB'(1);
+        d_q   <= d_q + DB'(P);
       end else begin
         grp_q <= grp_q + GB'(1);
       end
@@ -147,37 +160,55 @@ module mcadsw_cost_agg #(
   assign vrd_d_o   = d_q;
   assign vrd_slot_o = slot_q;
 
+  // d_q + p < D, i.e. p <= D - 1 - d_q (d_q <= D - 1 while busy); lane 0 always.
+  assign lanes[0] = 1'b1;
+  for (genvar p = 1; p < P; p++) begin : g_lanes
+    assign lanes[p] = DB'(p) <= dmax_q - d_q;
+  end
+
   logic          v1_valid_q, v1_first_q, v1_last_q, v2_valid_q, v2_first_q, v2_last_q;
   logic [RB-1:0] v1_row_q, v2_row_q;
   logic [DB-1:0] v1_d_q, v2_d_q;
   logic [GB-1:0] v1_grp_q, v2_grp_q;
   logic [CLB-1:0] v1_lcol_q, v2_lcol_q;  // last in-image Ev column of the block
   logic          v1_slot_q, v2_slot_q, h0_slot_q, h1_slot_q;
+  logic [P-1:0]  v1_lanes_q, v2_lanes_q, h0_lanes_q, h1_lanes_q, h2_lanes_q, h3_lanes_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q} <= '0;
-      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q} <= '0;
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
+       v1_lanes_q} <= '0;
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q,
+       v2_lanes_q} <= '0;
     end else begin
-      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q} <=
-          {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q};
-      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q} <=
-          {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q};
+      {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
+       v1_lanes_q} <= {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q,
+                       lanes};
+      {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q,
+       v2_lanes_q} <= {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q,
+                       v1_slot_q, v1_lanes_q};
     end
   end
 
-  logic              ev_valid;
-  logic [LANES*VB-1:0] ev;
+  // Copy p (disparity d + p) takes right lanes P - 1 - p .. P - 1 - p + LANES - 1.
+  logic [P-1:0]          ev_valid_p;
+  logic                  ev_valid;
+  logic [P*LANES*VB-1:0] ev;
 
-  mcadsw_vert_agg #(
-    .LANES(LANES), .WINDOW(WINDOW), .CB(CB), .WB(WB), .VB(VB)
-  ) u_vert_agg (
-    .clk_i, .rst_ni,
-    .valid_i (v1_valid_q),
-    .cen_l_i, .cen_r_i, .wv_i,
-    .valid_o (ev_valid),
-    .ev_o    (ev)
-  );
+  for (genvar p = 0; p < P; p++) begin : g_vert
+    mcadsw_vert_agg #(
+      .LANES(LANES), .WINDOW(WINDOW), .CB(CB), .WB(WB), .VB(VB)
+    ) u_vert_agg (
+      .clk_i, .rst_ni,
+      .valid_i (v1_valid_q),
+      .cen_l_i,
+      .cen_r_i (cen_r_i[(P-1-p)*WINDOW*CB +: LANES*WINDOW*CB]),
+      .wv_i,
+      .valid_o (ev_valid_p[p]),
+      .ev_o    (ev[p*LANES*VB +: LANES*VB])
+    );
+  end
+  assign ev_valid = ev_valid_p[0];
 
   // ---- Ping-pong buffer (Fig. 13) --------------------------------------------
   logic wbank_q;       // bank the vertical side writes
@@ -198,31 +229,34 @@ module mcadsw_cost_agg #(
   logic [DB-1:0] h0_d_q, h1_d_q, h2_d_q, h3_d_q;
   logic [GB-1:0] h0_grp_q, h1_grp_q, h2_grp_q, h3_grp_q;
   logic [CLB-1:0] h0_lcol_q, h1_lcol_q;
-  logic [(WINDOW+HAGG-1)*VB-1:0] pp_rd, pp_rd_q;
+  localparam int PPW = (WINDOW + HAGG - 1) * VB;   // one copy's ping-pong read
+  logic [P*PPW-1:0] pp_rd, pp_rd_q;
 
-  mcadsw_pingpong #(
-    .COLS(GROUPS*LANES), .LANES(LANES), .HAGG(HAGG), .WINDOW(WINDOW), .VB(VB)
-  ) u_pingpong (
-    .clk_i, .rst_ni,
-    .wr_en_i   (ev_valid && v2_valid_q),
-    .wr_bank_i (wbank_q),
-    .wr_grp_i  (v2_grp_q),
-    .wr_data_i (ev),
-    .rd_bank_i (h1_bank_q),
-    .rd_grp_i  (h1_grp_q),
-    .rd_last_i (h1_lcol_q),
-    .rd_data_o (pp_rd)
-  );
+  for (genvar p = 0; p < P; p++) begin : g_pingpong
+    mcadsw_pingpong #(
+      .COLS(GROUPS*LANES), .LANES(LANES), .HAGG(HAGG), .WINDOW(WINDOW), .VB(VB)
+    ) u_pingpong (
+      .clk_i, .rst_ni,
+      .wr_en_i   (ev_valid && v2_valid_q),
+      .wr_bank_i (wbank_q),
+      .wr_grp_i  (v2_grp_q),
+      .wr_data_i (ev[p*LANES*VB +: LANES*VB]),
+      .rd_bank_i (h1_bank_q),
+      .rd_grp_i  (h1_grp_q),
+      .rd_last_i (h1_lcol_q),
+      .rd_data_o (pp_rd[p*PPW +: PPW])
+    );
+  end
 
   // ---- Horizontal side: 6 output groups per full bank --------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
-       h0_slot_q} <= '0;
+       h0_slot_q, h0_lanes_q} <= '0;
     end else if (bank_full) begin
       {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
-       h0_slot_q} <= {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0), v2_lcol_q,
-                      v2_slot_q};
+       h0_slot_q, h0_lanes_q} <= {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0),
+                                  v2_lcol_q, v2_slot_q, v2_lanes_q};
     end else if (h0_valid_q) begin
       h0_valid_q <= h0_grp_q != GB'(GROUPS - 1);
       h0_grp_q   <= h0_grp_q + GB'(1);
@@ -238,41 +272,49 @@ module mcadsw_cost_agg #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
-       h1_slot_q} <= '0;
-      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <= '0;
-      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <= '0;
+       h1_slot_q, h1_lanes_q} <= '0;
+      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q} <= '0;
+      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <= '0;
       pp_rd_q <= '0;
     end else begin
       {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
-       h1_slot_q} <= {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q,
-                      h0_lcol_q, h0_slot_q};
-      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q} <=
-          {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q};
-      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q} <=
-          {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q};
+       h1_slot_q, h1_lanes_q} <= {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q,
+                                  h0_grp_q, h0_lcol_q, h0_slot_q, h0_lanes_q};
+      {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q} <=
+          {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q, h1_lanes_q};
+      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <=
+          {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q};
       if (h1_valid_q) pp_rd_q <= pp_rd;
     end
   end
 
-  logic                fc_valid;
-  logic [HAGG*FB-1:0]  fc;
+  logic [P-1:0]          fc_valid_p;
+  logic                  fc_valid;
+  logic [P*HAGG*FB-1:0]  fc;     // copy p, pixel m at (p HAGG + m) FB: the WTA's order
 
-  mcadsw_horz_agg #(
-    .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB)
-  ) u_horz_agg (
-    .clk_i, .rst_ni,
-    .valid_i (h2_valid_q),
-    .ev_i    (pp_rd_q),
-    .wh_i,
-    .valid_o (fc_valid),
-    .fc_o    (fc)
-  );
+  for (genvar p = 0; p < P; p++) begin : g_horz
+    mcadsw_horz_agg #(
+      .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB)
+    ) u_horz_agg (
+      .clk_i, .rst_ni,
+      .valid_i (h2_valid_q),
+      .ev_i    (pp_rd_q[p*PPW +: PPW]),
+      .wh_i,
+      .valid_o (fc_valid_p[p]),
+      .fc_o    (fc[p*HAGG*FB +: HAGG*FB])
+    );
+  end
+  assign fc_valid = fc_valid_p[0];
+  // The copies run in lock step: copy 0's valid stands for all. (D - 1 is used by
+  // the lane mask only when P > 1.)
+  logic par_unused;
+  assign par_unused = ^{ev_valid_p, fc_valid_p, dmax_q};
 
   // ---- WTA ------------------------------------------------------------------------
   logic [RB-1:0] disp_row_q;
 
   mcadsw_wta #(
-    .BLOCK(BLOCK), .HAGG(HAGG), .FB(FB), .DB(DB)
+    .BLOCK(BLOCK), .HAGG(HAGG), .FB(FB), .DB(DB), .P(P)
   ) u_wta (
     .clk_i, .rst_ni,
     .valid_i (fc_valid && h3_valid_q),
@@ -281,7 +323,7 @@ module mcadsw_cost_agg #(
     .d_i     (h3_d_q),
     .grp_i   (h3_grp_q),
     .fc_i    (fc),
-    .lanes_i (1'b1),
+    .lanes_i (h3_lanes_q),
     .valid_o (disp_valid_o),
     .grp_o   (disp_grp_o),
     .disp_o  (disp_o),

@@ -3,14 +3,20 @@
 // disparity (Wta) of a block, and every sub-pixel value (subpixel_from_costs,
 // docs/algorithm.md 12.6), with the census and weight buffers modelled from the
 // reference's intermediates. The first mismatch is reported with its
-// coordinates, disparity and both values.
+// coordinates, disparity and both values. Every scenario runs the block built
+// for P = 1 (the paper's), 2 and 4 disparities a step (issue 18): the right
+// census input then holds LANES + P - 1 lanes, and D not a multiple of P leaves
+// lanes masked in the last step.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <memory>
 #include <random>
 #include <sstream>
 
-#include "Vmcadsw_cost_agg.h"
+#include "Vcost_agg_p1.h"
+#include "Vcost_agg_p2.h"
+#include "Vcost_agg_p4.h"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
@@ -36,6 +42,7 @@ struct Result {
   std::string first_error;
 };
 
+template <typename V, int P>
 class CostAggBench {
  public:
   explicit CostAggBench(const Scenario& s) : s_(s), rng_(1234) {
@@ -63,7 +70,8 @@ class CostAggBench {
     std::vector<int> seen(kBlock * kBlock, 0), seen_sub(kBlock * kBlock, 0);
     int next_row = 0;
     long first_accept = -1, last_out = -1;
-    const long limit = long(rows) * (6L * D + 64) + 1000;  // never hang
+    const long steps = (D + P - 1) / P;
+    const long limit = long(rows) * (6L * steps + 64) + 1000;  // never hang
     const int ev_cols = std::min(kBlockCols, W_ - (s_.bx - kRadius));
     const long ev_expected = long(rows) * D * ev_cols;
 
@@ -137,23 +145,30 @@ class CostAggBench {
     top_->eval();
   }
 
+  // d is the step's first disparity. Right lane j (0 .. LANES + P - 2) is the
+  // image column of left lane j - (P - 1), minus d: disparity d + p of left lane l
+  // is right lane l + P - 1 - p.
   void drive_vertical(bool en, int row, int grp, int d) {
     auto& t = *top_;
+    for (int j = 0; j < kLanes + P - 1; ++j) {
+      const int x = s_.bx - kRadius + grp * kLanes + j - (P - 1);
+      for (int k = 0; k < kWindow; ++k) {
+        const int i = j * kWindow + k;
+        const int y = s_.by + row - kRadius + k;
+        // Garbage on every read port when not reading: it must not matter.
+        set_bits(t.cen_r_i, i * kCensusBits, kCensusBits,
+                 en ? ref_.census_right.at(cx(x - d), cy(y)) : (rng_() & 63));
+      }
+    }
     for (int l = 0; l < kLanes; ++l) {
       const int x = s_.bx - kRadius + grp * kLanes + l;
       for (int k = 0; k < kWindow; ++k) {
         const int i = l * kWindow + k;
-        if (!en) {  // garbage on every read port when not reading: it must not matter
-          set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, rng_() & 63);
-          set_bits(t.cen_r_i, i * kCensusBits, kCensusBits, rng_() & 63);
-          set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits, rng_() & 7);
-          continue;
-        }
         const int y = s_.by + row - kRadius + k;
-        set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, ref_.census_left.at(cx(x), cy(y)));
-        set_bits(t.cen_r_i, i * kCensusBits, kCensusBits, ref_.census_right.at(cx(x - d), cy(y)));
+        set_bits(t.cen_l_i, i * kCensusBits, kCensusBits,
+                 en ? ref_.census_left.at(cx(x), cy(y)) : (rng_() & 63));
         set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
-                 weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))));
+                 en ? weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))) : (rng_() & 7));
       }
     }
   }
@@ -174,43 +189,53 @@ class CostAggBench {
     if (res.first_error.empty()) res.first_error = what;
   }
 
+  // Copy p of the monitor holds disparity d + p; copies at d + p >= D are masked
+  // lanes (garbage, not compared).
   void check_ev(Result& res) {
     auto& t = *top_;
-    const int row = t.mon_ev_row_o, d = t.mon_ev_d_o, grp = t.mon_ev_grp_o;
+    const int row = t.mon_ev_row_o, d0 = t.mon_ev_d_o, grp = t.mon_ev_grp_o;
+    if (d0 % P != 0) fail(res, "vertical costs of a step starting at d=" + std::to_string(d0));
     const int y = s_.by + row;
-    for (int l = 0; l < kLanes; ++l) {
-      const int col = grp * kLanes + l;
-      // Columns beyond the right border are not used: the ping-pong buffer
-      // replaces them by the border column (rtl/mcadsw_pingpong.sv).
-      if (s_.bx - kRadius + col >= W_) continue;
-      const int x = ev_col(col);
-      const uint64_t got = get_bits(t.mon_ev_o, l * kVertCostBits, kVertCostBits);
-      const uint64_t want = ref_.vert_cost[d][size_t(y) * W_ + x];
-      ++res.ev_checked;
-      if (got != want) {
-        std::ostringstream o;
-        o << "vertical cost Ev at column x=" << x << " (block col " << grp * kLanes + l
-          << "), y=" << y << ", d=" << d << ": RTL " << got << ", reference " << want;
-        fail(res, o.str());
+    for (int p = 0; p < P && d0 + p < s_.cfg.disparities; ++p) {
+      const int d = d0 + p;
+      for (int l = 0; l < kLanes; ++l) {
+        const int col = grp * kLanes + l;
+        // Columns beyond the right border are not used: the ping-pong buffer
+        // replaces them by the border column (rtl/mcadsw_pingpong.sv).
+        if (s_.bx - kRadius + col >= W_) continue;
+        const int x = ev_col(col);
+        const uint64_t got = get_bits(t.mon_ev_o, (p * kLanes + l) * kVertCostBits, kVertCostBits);
+        const uint64_t want = ref_.vert_cost[d][size_t(y) * W_ + x];
+        ++res.ev_checked;
+        if (got != want) {
+          std::ostringstream o;
+          o << "vertical cost Ev at column x=" << x << " (block col " << grp * kLanes + l
+            << "), y=" << y << ", d=" << d << ": RTL " << got << ", reference " << want;
+          fail(res, o.str());
+        }
       }
     }
   }
 
   void check_fc(Result& res) {
     auto& t = *top_;
-    const int row = t.mon_fc_row_o, d = t.mon_fc_d_o, grp = t.mon_fc_grp_o;
+    const int row = t.mon_fc_row_o, d0 = t.mon_fc_d_o, grp = t.mon_fc_grp_o;
     const int y = s_.by + row;
-    for (int m = 0; m < kHorzAggregators; ++m) {
-      const int x = s_.bx + grp * kHorzAggregators + m;
-      if (x >= W_) continue;  // partial block: outside the image
-      const uint64_t got = get_bits(t.mon_fc_o, m * kFinalCostBits, kFinalCostBits);
-      const uint64_t want = ref_.final_cost[d][size_t(y) * W_ + x];
-      ++res.fc_checked;
-      if (got != want) {
-        std::ostringstream o;
-        o << "final cost at (" << x << "," << y << "), d=" << d << ": RTL " << got
-          << ", reference " << want;
-        fail(res, o.str());
+    for (int p = 0; p < P && d0 + p < s_.cfg.disparities; ++p) {
+      const int d = d0 + p;
+      for (int m = 0; m < kHorzAggregators; ++m) {
+        const int x = s_.bx + grp * kHorzAggregators + m;
+        if (x >= W_) continue;  // partial block: outside the image
+        const uint64_t got =
+            get_bits(t.mon_fc_o, (p * kHorzAggregators + m) * kFinalCostBits, kFinalCostBits);
+        const uint64_t want = ref_.final_cost[d][size_t(y) * W_ + x];
+        ++res.fc_checked;
+        if (got != want) {
+          std::ostringstream o;
+          o << "final cost at (" << x << "," << y << "), d=" << d << ": RTL " << got
+            << ", reference " << want;
+          fail(res, o.str());
+        }
       }
     }
   }
@@ -229,9 +254,13 @@ class CostAggBench {
       ++res.disp_checked;
       if (got != want) {
         std::ostringstream o;
-        o << "disparity at (" << x << "," << y << "): RTL " << got << " (cost "
-          << ref_.final_cost[got][size_t(y) * W_ + x] << "), reference " << want << " (cost "
-          << ref_.final_cost[want][size_t(y) * W_ + x] << ")";
+        o << "disparity at (" << x << "," << y << "): RTL " << got;
+        if (got < s_.cfg.disparities)
+          o << " (cost " << ref_.final_cost[got][size_t(y) * W_ + x] << ")";
+        else
+          o << " (at or above D = " << s_.cfg.disparities << ")";
+        o << ", reference " << want << " (cost " << ref_.final_cost[want][size_t(y) * W_ + x]
+          << ")";
         fail(res, o.str());
       }
     }
@@ -273,21 +302,28 @@ class CostAggBench {
 
   const Scenario& s_;
   std::mt19937 rng_;
-  std::unique_ptr<Vmcadsw_cost_agg> top_ = std::make_unique<Vmcadsw_cost_agg>();
+  std::unique_ptr<V> top_ = std::make_unique<V>();
   Intermediates ref_;
   Plane disp_;
   Plane16 sub_;
   int W_ = 0, H_ = 0;
 };
 
-Result run_scenario(const Scenario& s) {
-  CostAggBench bench(s);
+template <typename V, int P>
+Result run_p(const Scenario& s) {
+  CostAggBench<V, P> bench(s);
   Result r = bench.run();
-  std::printf("[%s] %dx%d block (%d,%d) D=%d: %ld cycles, %ld Ev / %ld final costs / %ld disparities "
-              "/ %ld sub-pixel values (%ld with an offset) checked\n",
-              s.name.c_str(), s.left.width(), s.left.height(), s.bx, s.by, s.cfg.disparities,
+  std::printf("[%s P=%d] %dx%d block (%d,%d) D=%d: %ld cycles, %ld Ev / %ld final costs / %ld "
+              "disparities / %ld sub-pixel values (%ld with an offset) checked\n",
+              s.name.c_str(), P, s.left.width(), s.left.height(), s.bx, s.by, s.cfg.disparities,
               r.cycles, r.ev_checked, r.fc_checked, r.disp_checked, r.sub_checked, r.sub_fractional);
+  if (!r.first_error.empty()) r.first_error = "P=" + std::to_string(P) + ": " + r.first_error;
   return r;
+}
+
+// The scenario at P = 1, 2 and 4: results[0..2].
+std::array<Result, 3> run_scenario(const Scenario& s) {
+  return {run_p<Vcost_agg_p1, 1>(s), run_p<Vcost_agg_p2, 2>(s), run_p<Vcost_agg_p4, 4>(s)};
 }
 
 Scenario random_scenario(const std::string& name, int w, int h, int d, int bx, int by,
@@ -306,46 +342,54 @@ Scenario real_scenario(const std::string& name, int d, int bx, int by) {
   return s;
 }
 
-#define EXPECT_CLEAN(res) EXPECT_TRUE((res).first_error.empty()) << (res).first_error
+#define EXPECT_CLEAN(results)                                          \
+  for (const Result& r_ : (results)) EXPECT_TRUE(r_.first_error.empty()) << r_.first_error
 
 TEST(CostAgg, InteriorBlockRandomImage) {
-  const Result r = run_scenario(random_scenario("interior", 72, 60, 20, 36, 18, 1));
-  EXPECT_CLEAN(r);
-  EXPECT_EQ(r.disp_checked, 18 * 18);
+  const auto rs = run_scenario(random_scenario("interior", 72, 60, 20, 36, 18, 1));
+  EXPECT_CLEAN(rs);
+  for (const Result& r : rs) EXPECT_EQ(r.disp_checked, 18 * 18);
 }
 
 TEST(CostAgg, TopLeftCornerClampsEverythingAtDmax) {
-  const Result r = run_scenario(random_scenario("corner", 40, 40, kDmax, 0, 0, 2));
-  EXPECT_CLEAN(r);
+  EXPECT_CLEAN(run_scenario(random_scenario("corner", 40, 40, kDmax, 0, 0, 2)));
 }
 
 TEST(CostAgg, PartialBlockAtRightAndBottomEdges) {
-  const Result r = run_scenario(random_scenario("partial", 47, 41, 9, 36, 36, 3));
-  EXPECT_CLEAN(r);
-  EXPECT_EQ(r.disp_checked, 11 * 5);
+  const auto rs = run_scenario(random_scenario("partial", 47, 41, 9, 36, 36, 3));
+  EXPECT_CLEAN(rs);
+  for (const Result& r : rs) EXPECT_EQ(r.disp_checked, 11 * 5);
 }
 
 TEST(CostAgg, SingleDisparity) {
-  const Result r = run_scenario(random_scenario("D=1", 40, 30, 1, 18, 0, 4));
-  EXPECT_CLEAN(r);
+  EXPECT_CLEAN(run_scenario(random_scenario("D=1", 40, 30, 1, 18, 0, 4)));
+}
+
+// D = 2, 3, 5, 6, 7: every remainder of D by 2 and 4 (masked lanes in the last step).
+TEST(CostAgg, DisparityCountsNotAMultipleOfP) {
+  for (int d : {2, 3, 5, 6, 7})
+    EXPECT_CLEAN(run_scenario(random_scenario("D=" + std::to_string(d), 44, 40, d, 18, 18, 10 + d)));
 }
 
 TEST(CostAgg, RealImageTeddyCifAtDmax) {
-  const Result r = run_scenario(real_scenario("teddy", kDmax, 180, 126));
-  EXPECT_CLEAN(r);
-  EXPECT_GT(r.sub_fractional, r.sub_checked / 2) << "most pixels of a real block get an offset";
-  // Back-to-back jobs: 6 cycles per disparity per row plus the pipeline fill.
-  const long per_block = 18L * 6 * kDmax;
-  std::printf("cycles per 18-pixel row at D=%d: %.1f (paper: 7 + 6*64 = 391)\n", kDmax,
-              double(r.cycles) / 18);
-  EXPECT_LE(r.cycles, per_block + 16);
+  const auto rs = run_scenario(real_scenario("teddy", kDmax, 180, 126));
+  EXPECT_CLEAN(rs);
+  const int ps[3] = {1, 2, 4};
+  for (int i = 0; i < 3; ++i) {
+    const Result& r = rs[i];
+    EXPECT_GT(r.sub_fractional, r.sub_checked / 2) << "most pixels of a real block get an offset";
+    // Back-to-back jobs: 6 cycles per step (P disparities) per row plus the pipeline fill.
+    const long per_block = 18L * 6 * (kDmax / ps[i]);
+    std::printf("P=%d: cycles per 18-pixel row at D=%d: %.1f (paper, P = 1: 7 + 6*64 = 391)\n",
+                ps[i], kDmax, double(r.cycles) / 18);
+    EXPECT_LE(r.cycles, per_block + 16) << "P=" << ps[i];
+  }
 }
 
 TEST(CostAgg, FlatImagesTieEverywhereToZero) {
   Scenario s{"flat", test::flat_yuv(40, 40), test::flat_yuv(40, 40, 90), Config{}, 18, 18};
   s.cfg.disparities = 12;
-  const Result r = run_scenario(s);
-  EXPECT_CLEAN(r);
+  EXPECT_CLEAN(run_scenario(s));
 }
 
 TEST(CostAgg, MaximumContrastAllWeights64) {
