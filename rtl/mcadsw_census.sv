@@ -35,25 +35,29 @@
 // kernel never needs luma strips behind the stream.
 //
 // Census buffer: a ring of RING census columns (COLS + BLOCK, rounded up to a
-// multiple of 8), each a column word of ROWS codes, in 8 sub-banks (ring
-// column q in sub-bank q % 8), so the read port's LANES consecutive columns
-// come from distinct sub-banks; it delivers LANES columns x WINDOW rows a
-// cycle (Fig. 12). A block that continues its left neighbour starts BLOCK ring
-// columns after it, shares the neighbour's last COLS - BLOCK columns (codes
-// depend only on the clamped image position) and computes only its BLOCK new
-// ones, into ring columns the block before the neighbour used: the scheduler
-// prepares a block only after that one has left the aggregator. The first
-// block of a row band starts COLS ring columns after the previous block, so
-// its first RING - COLS columns land in free ring columns; for the others its
-// kernel waits until the previous block has left the aggregator (ring_free_i).
-// The read port names a block by the bank the scheduler gave it (rd_bank_i,
-// two blocks in flight): the ring position of each bank's window is kept.
+// multiple of CSUB), each a column word of ROWS codes, in CSUB sub-banks (ring
+// column q in sub-bank q % CSUB), so the read port's RL consecutive columns
+// come from distinct sub-banks; it delivers RL columns x WINDOW rows a cycle
+// (Fig. 12). RL = LANES (8) and CSUB = 8 for the paper's engine; the right view
+// of an engine with P disparities a step reads RL = LANES + P - 1 columns
+// (issue 18), CSUB the next power of two (16). A block that continues its left
+// neighbour starts BLOCK ring columns after it, shares the neighbour's last COLS -
+// BLOCK columns (codes depend only on the clamped image position) and computes only
+// its BLOCK new ones, into ring columns the block before the neighbour used: the
+// scheduler prepares a block only after that one has left the aggregator. The first
+// block of a row band starts COLS ring columns after the previous block, so its first
+// RING - COLS columns land in free ring columns; for the others its kernel waits
+// until the previous block has left the aggregator (ring_free_i). The read port names
+// a block by the bank the scheduler gave it (rd_bank_i, two blocks in flight): the
+// ring position of each bank's window is kept.
 `default_nettype none
 
 module mcadsw_census #(
   parameter int COLS   = mcadsw_pkg::BLOCK_COLS,   // census positions per row
   parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,   // census rows (18 + 30)
   parameter int LANES  = mcadsw_pkg::LANES,
+  parameter int RL     = LANES,                    // census columns a read (LANES + P - 1)
+  parameter int CSUB   = 1 << $clog2(RL),          // census sub-banks (8 or 16)
   parameter int BLOCK  = mcadsw_pkg::BLOCK,
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
@@ -62,7 +66,7 @@ module mcadsw_census #(
   parameter int LS     = 4,                        // luma ring strips (a power of 2)
   parameter int SB     = $clog2(STRIPS + 1),
   parameter int XB     = $clog2(COLS),             // column index width
-  parameter int RING   = (COLS + BLOCK + 7) / 8 * 8,  // census buffer columns
+  parameter int RING   = (COLS + BLOCK + CSUB - 1) / CSUB * CSUB,  // census buffer columns
   parameter int QB     = $clog2(RING),             // ring column index width
   parameter int YB     = $clog2(ROWS),             // row index width
   parameter int BB     = (BANKS > 1) ? $clog2(BANKS) : 1
@@ -91,23 +95,25 @@ module mcadsw_census #(
   input  logic                       rd_en_i,
   input  logic [BB-1:0]              rd_bank_i,
   input  logic [YB-1:0]              rd_row_i,    // first of WINDOW rows
-  input  logic [XB-1:0]              rd_col_i,    // first of LANES columns
-  output logic [LANES*WINDOW*CB-1:0] rd_data_o    // lane l, row k at (l*WINDOW + k)*CB
+  input  logic [XB-1:0]              rd_col_i,    // first of RL columns
+  output logic [RL*WINDOW*CB-1:0]    rd_data_o    // lane l, row k at (l*WINDOW + k)*CB
 );
 
-  localparam int SUB    = 8;                       // sub-banks (columns)
+  localparam int SUB    = 8;                       // luma sub-banks (columns)
+  localparam int CSB    = $clog2(CSUB);            // census sub-bank index width
   localparam int LROWS  = ROWS + 4;
   localparam int LSB    = $clog2(LS);
   localparam int LCB    = $clog2(4 * LS);          // ring luma column index
   localparam int LDEPTH = LS * 4 / SUB;            // luma words per sub-bank
-  localparam int CDEPTH = RING / SUB;              // census words per sub-bank
+  localparam int CDEPTH = RING / CSUB;             // census words per sub-bank
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
   localparam int KB     = $clog2(COLS + 4);        // luma column index in the window
 
   if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
-      RING % SUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
-      LDEPTH < 2) begin : g_bad_param
+      RING % CSUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
+      LDEPTH < 2 || RL < LANES || RL > CSUB || (1 << CSB) != CSUB ||
+      RL > COLS) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -329,49 +335,50 @@ module mcadsw_census #(
   logic [QB-1:0] wq, rq;        // ring columns of the column written and of the first read
   assign wq = QB'(wrap(32'(cpos_q) + 32'(col_ki_q), RING));
   assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING));
-  logic [SUB*CWB-1:0] csub_rd;
-  for (genvar b = 0; b < SUB; b++) begin : g_csub
+  logic [CSUB*CWB-1:0] csub_rd;
+  for (genvar b = 0; b < CSUB; b++) begin : g_csub
     logic [CWB-1:0] mem_q [CDEPTH];
     always_ff @(posedge clk_i) begin
-      if (col_valid_q && wq[2:0] == 3'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:3])] <= col_q;
+      if (col_valid_q && wq[CSB-1:0] == CSB'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:CSB])] <= col_q;
     end
-    // The lane of ring columns rq .. rq + 7 that lives in this sub-bank.
+    // The lane of ring columns rq .. rq + CSUB - 1 that lives in this sub-bank.
     // Its word: that of rq, or the next one when b is below rq's sub-bank.
     localparam int CWW = $clog2(CDEPTH + 1);
     logic [CWW-1:0] pw;
-    logic [3:0]     bd;                  // b - (rq mod 8); bit 3: the borrow, b below it
-    logic [2:0]     bd_unused;
-    assign bd = 4'(b) - {1'b0, rq[2:0]};
-    assign bd_unused = bd[2:0];
-    assign pw = CWW'(rq[QB-1:3]) + CWW'(bd[3]);
+    logic [CSB:0]   bd;                  // b - (rq mod CSUB); bit CSB: the borrow, b below it
+    logic [CSB-1:0] bd_unused;
+    assign bd = (CSB + 1)'(b) - {1'b0, rq[CSB-1:0]};
+    assign bd_unused = bd[CSB-1:0];
+    assign pw = CWW'(rq[QB-1:CSB]) + CWW'(bd[CSB]);
     always_ff @(posedge clk_i) begin
       if (rd_en_i)
         csub_rd[b*CWB +: CWB] <= mem_q[$clog2(CDEPTH)'(pw >= CWW'(CDEPTH) ? pw - CWW'(CDEPTH) : pw)];
     end
   end
 
-  logic [YB-1:0] rd_row_q;
-  logic [2:0]    rd_rot_q;
+  logic [YB-1:0]  rd_row_q;
+  logic [CSB-1:0] rd_rot_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rd_row_q <= '0;
       rd_rot_q <= '0;
     end else if (rd_en_i) begin
       rd_row_q <= rd_row_i;
-      rd_rot_q <= 3'(rq);
+      rd_rot_q <= CSB'(rq);
     end
   end
 
-  // Lane l is ring column rq + l, from sub-bank (rq + l) % 8 (an 8:1
+  // Lane l is ring column rq + l, from sub-bank (rq + l) % CSUB (a CSUB:1
   // multiplexer); its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
   // column word (a row shifter).
-  function automatic logic [CWB-1:0] sub_word(input logic [SUB*CWB-1:0] w, input logic [2:0] b);
+  function automatic logic [CWB-1:0] sub_word(input logic [CSUB*CWB-1:0] w,
+                                              input logic [CSB-1:0] b);
     sub_word = '0;
-    for (int i = 0; i < SUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{b == 3'(i)}});
+    for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{b == CSB'(i)}});
   endfunction
-  for (genvar l = 0; l < LANES; l++) begin : g_lane
+  for (genvar l = 0; l < RL; l++) begin : g_lane
     logic [CWB-1:0] col;
-    assign col = sub_word(csub_rd, rd_rot_q + 3'(l));
+    assign col = sub_word(csub_rd, rd_rot_q + CSB'(l));
     assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
   end
 

@@ -1,7 +1,10 @@
 // mcadsw_census (Fig. 10) against census_code(): every position of the census
 // buffer, read through the aggregator's read port at every row and column
-// offset, equals the reference code of the clamped image coordinate. Left and right instances, random input
-// stalls, both banks, borders at all four sides, images smaller than the window.
+// offset, equals the reference code of the clamped image coordinate. Left and
+// right instances, random input stalls, both banks, borders at all four sides,
+// images smaller than the window. The right view is built as the engine builds
+// it for P = 1, 2 and 4 disparities a step (issue 18): 8, 9 and 11 columns a
+// read (8 and 16 census sub-banks).
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -10,6 +13,8 @@
 
 #include "Vcensus_l.h"
 #include "Vcensus_r.h"
+#include "Vcensus_r11.h"
+#include "Vcensus_r9.h"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
 #include "rtl_bench.hpp"
@@ -24,6 +29,26 @@ using sim::set_bits;
 constexpr int kRows = kBlockCols;                     // 48 census rows
 constexpr int kColsLeft = kBlockCols;                 // 48
 constexpr int kColsRight = kBlockCols + kDmax - 1;    // 111
+
+// Census columns the read port delivers (the model's RL).
+template <typename V>
+constexpr int kReadLanes = kLanes;
+template <>
+constexpr int kReadLanes<Vcensus_r9> = kLanes + 1;
+template <>
+constexpr int kReadLanes<Vcensus_r11> = kLanes + 3;
+
+// Runs f(Model<V>{}) for the right-view models.
+template <typename V>
+struct Model {
+  using type = V;
+};
+template <typename F>
+void for_right_models(F f) {
+  f(Model<Vcensus_r>{});
+  f(Model<Vcensus_r9>{});
+  f(Model<Vcensus_r11>{});
+}
 
 // One block's window of one view: origin in image coordinates.
 struct Window {
@@ -122,14 +147,14 @@ class CensusBench {
   std::string check(const Plane& luma, Window w, int bank, long* compared) {
     auto& t = *top_;
     for (int row = 0; row + kWindow <= kRows; ++row) {
-      for (int col = 0; col + kLanes <= cols_; ++col) {
+      for (int col = 0; col + kReadLanes<V> <= cols_; ++col) {
         t.rd_en_i = 1;
         t.rd_bank_i = bank;
         t.rd_row_i = row;
         t.rd_col_i = col;
         tick();
         t.rd_en_i = 0;
-        for (int l = 0; l < kLanes; ++l)
+        for (int l = 0; l < kReadLanes<V>; ++l)
           for (int k = 0; k < kWindow; ++k) {
             const int x = clamp_coord(w.x0 + col + l, luma.width);
             const int y = clamp_coord(w.y0 + row + k, luma.height);
@@ -138,7 +163,7 @@ class CensusBench {
             ++*compared;
             if (got != want) {
               std::ostringstream o;
-              o << "bank " << bank << " census at window (" << col + l << "," << row + k
+              o << kReadLanes<V> << "-lane read, bank " << bank << " census at window (" << col + l << "," << row + k
                 << ") = image (" << x << "," << y << "): RTL " << got << ", reference " << want;
               return o.str();
             }
@@ -163,9 +188,9 @@ void run_case(int cols, const Plane& luma, Window w, int bank, double stall, uin
   long compared = 0;
   const std::string err = bench.check(luma, w, bank, &compared);
   EXPECT_TRUE(err.empty()) << err;
-  std::printf("census %d cols, %dx%d image, window (%d,%d), bank %d: filled in %ld cycles, "
-              "%ld codes compared\n",
-              cols, luma.width, luma.height, w.x0, w.y0, bank, cycles, compared);
+  std::printf("census %d cols (%d-lane reads), %dx%d image, window (%d,%d), bank %d: filled in "
+              "%ld cycles, %ld codes compared\n",
+              cols, kReadLanes<V>, luma.width, luma.height, w.x0, w.y0, bank, cycles, compared);
 }
 
 // Window origins of a block at (bx, by): left x0 = bx - 15, right x0 = bx - 15 - 63.
@@ -207,8 +232,11 @@ TEST(Census, LeftFlatAndMaximumContrast) {
 TEST(Census, RightWindowReachesPastTheLeftBorder) {
   std::mt19937 rng(7);
   const Plane p = test::random_plane(130, 70, rng);
-  run_case<Vcensus_r>(kColsRight, p, right_window(18, 18), 0, 0.3, 7);
-  run_case<Vcensus_r>(kColsRight, p, right_window(108, 36), 1, 0.0, 8);
+  for_right_models([&](auto m) {
+    using V = typename decltype(m)::type;
+    run_case<V>(kColsRight, p, right_window(18, 18), 0, 0.3, 7);
+    run_case<V>(kColsRight, p, right_window(108, 36), 1, 0.0, 8);
+  });
 }
 
 // The census buffer is a ring (docs/architecture.md 5.1): a block's new columns
@@ -237,7 +265,9 @@ TEST(Census, LeftPreviousBlockSurvivesTheNextBlocksColumns) {
 }
 
 TEST(Census, RightPreviousBlockSurvivesTheNextBlocksColumns) {
-  previous_block_survives<Vcensus_r>(kColsRight, right_window, 19);
+  for_right_models([](auto m) {
+    previous_block_survives<typename decltype(m)::type>(kColsRight, right_window, 19);
+  });
 }
 
 // A block that does not continue its neighbour (the first of a row band)
@@ -272,7 +302,9 @@ void band_start_waits(int cols, Window (*window)(int, int), uint32_t seed) {
 TEST(Census, LeftBandStartWaitsUntilTheRingIsFree) { band_start_waits<Vcensus_l>(kColsLeft, left_window, 12); }
 
 TEST(Census, RightBandStartWaitsUntilTheRingIsFree) {
-  band_start_waits<Vcensus_r>(kColsRight, right_window, 13);
+  for_right_models([](auto m) {
+    band_start_waits<typename decltype(m)::type>(kColsRight, right_window, 13);
+  });
 }
 
 // Partial column reuse: a row band of blocks, each block after the first
@@ -294,8 +326,8 @@ void run_row_band(int cols, const Plane& luma, int by, Window (*window)(int, int
       const std::string prev = bench.check(luma, window(bx - kBlock, by), 1 - block % 2, &compared);
       ASSERT_TRUE(prev.empty()) << "block at (" << bx - kBlock << "," << by << ") after the next: " << prev;
     }
-    std::printf("census %d cols, block (%d,%d)%s: filled in %ld cycles\n", cols, bx, by,
-                bx > 0 ? " reusing columns" : "", cycles);
+    std::printf("census %d cols (%d-lane reads), block (%d,%d)%s: filled in %ld cycles\n", cols,
+                kReadLanes<V>, bx, by, bx > 0 ? " reusing columns" : "", cycles);
   }
   std::printf("%ld codes compared\n", compared);
 }
@@ -309,7 +341,9 @@ TEST(Census, LeftRowBandReusesColumns) {
 TEST(Census, RightRowBandReusesColumns) {
   std::mt19937 rng(11);
   const Plane p = test::random_plane(113, 30, rng);
-  run_row_band<Vcensus_r>(kColsRight, p, 0, right_window, 0.1, 11);
+  for_right_models([&](auto m) {
+    run_row_band<typename decltype(m)::type>(kColsRight, p, 0, right_window, 0.1, 11);
+  });
 }
 
 }  // namespace
