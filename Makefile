@@ -7,11 +7,12 @@
 #   make sim-random N=<cases> SEED=<s>  random pairs, sizes, D, tables and memory timing
 #                against the reference (default 200 cases, seed 1)
 #   make sim-build DMAX=<n> PAR=<p>  the reference, RTL and harness built for DMAX (1..128)
-#                disparities in build/dmax<n>_par<p> (bin/mcadsw_sim); make sim and make
-#                sim-random with DMAX= or PAR= use that build (PAR: only 1 so far)
+#                disparities, PAR (1, 2, 4) a step, in build/dmax<n>_par<p> (bin/mcadsw_sim);
+#                make sim and make sim-random with DMAX= or PAR= use that build
 #   make ref-sim the reference model alone: Middlebury error table
 #   make synth   Yosys -> OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
-#                (build/synth/report.md; DMAX=16 for the reduced configuration; FLAT=1 the
+#                (build/synth/report.md; DMAX=16 for the reduced configuration; DMAX=128 PAR=4
+#                another configuration in build/synth_dmax<n>[_par<p>]; FLAT=1 the
 #                whole engine flattened in one Yosys run, 40 min and 13.5 GB)
 #   make synth-check  make synth, then gates, slack and memory against constraints/budget.json (CI)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
@@ -83,10 +84,10 @@ ref-sim: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
 
-# make synth [DMAX=16] [FLAT=1]: gate count, memory inventory and timing (scripts/synth.sh;
+# make synth [DMAX=<n>] [PAR=<p>] [FLAT=1]: gate count, memory inventory and timing (scripts/synth.sh;
 # block by block and incremental, FLAT=1 the flattened flow of scripts/synth_flat.sh)
 synth: bootstrap
-	@DMAX=$(DMAX) FLAT=$(FLAT) scripts/synth.sh
+	@DMAX=$(DMAX) PAR=$(PAR) FLAT=$(FLAT) scripts/synth.sh
 
 # make synth-check: make synth (DMAX=64), then constraints/budget.json (scripts/synth_check.sh)
 synth-check: bootstrap

@@ -139,7 +139,7 @@ module mcadsw_cost_agg #(
       busy_q  <= 1'b1;
       row_q   <= job_row_i;
       d_q     <= '0;
-      dlast_q <= DB'(job_disp_i - NB'(1)) & ~DB'(P - 1);
+      dlast_q <= DB'(job_disp_i - NB'(1)) & ~(DB'(P - 1));
       dmax_q  <= DB'(job_disp_i - NB'(1));
       grp_q   <= '0;
     end else if (busy_q) begin

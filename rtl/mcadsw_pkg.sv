@@ -14,6 +14,7 @@ package mcadsw_pkg;
   localparam int FCOST_BITS       = 25;  // final cost <= 31*11904*64
   localparam int DMAX             = 64;  // largest disparity range
   localparam int DISP_BITS        = 6;  // disparity 0..DMAX-1
+  localparam int PAR              = 1;  // disparities a step (1, 2, 4)
   localparam int BLOCK            = 18;  // output block 18x18
   localparam int LANES            = 8;  // vertical aggregation lanes
   localparam int HAGG             = 3;  // horizontal aggregators

@@ -9,6 +9,7 @@ module mcadsw_top #(
   parameter int AW   = 32,
   parameter int CW   = 12,                          // width / height / coordinate bits
   parameter int DMAX = mcadsw_pkg::DMAX,
+  parameter int PAR  = mcadsw_pkg::PAR,             // disparities a step (1, 2, 4; issue 18)
   parameter int NB   = $clog2(DMAX + 1),
   parameter int NTHR = mcadsw_pkg::WTHRESHOLDS,
   parameter int DCB  = mcadsw_pkg::COLOR_DIST_BITS
@@ -63,6 +64,13 @@ module mcadsw_top #(
   localparam int CB     = mcadsw_pkg::CENSUS_BITS;
   localparam int WB     = mcadsw_pkg::WEIGHT_CODE_BITS;
   localparam int DB     = mcadsw_pkg::DISP_BITS;
+  localparam int RLANES = LANES + PAR - 1;            // right census columns a read
+
+  // The right census read of a step stays in the window only if DMAX is a
+  // multiple of PAR (the last step's first d is then at most DMAX - PAR).
+  if (!(PAR == 1 || PAR == 2 || PAR == 4) || DMAX % PAR != 0) begin : g_bad_param
+    mcadsw_error_top_par_not_1_2_4_or_dmax_not_a_multiple u_error ();
+  end
 
   // ---- Configuration registers and checks ------------------------------------------
   // The pass's planes: base view Y, U, V (census and weights) and match view
@@ -540,7 +548,8 @@ module mcadsw_top #(
   logic [2:0]                 vrd_grp, hrd_grp;
   logic                       vrd_slot, hrd_slot, hrd_rel;
   logic [DB-1:0]              vrd_d;
-  logic [LANES*WINDOW*CB-1:0] cen_l, cen_r;
+  logic [LANES*WINDOW*CB-1:0]  cen_l;
+  logic [RLANES*WINDOW*CB-1:0] cen_r;   // see mcadsw_cost_agg: lane j at column - d + j - (PAR-1)
   logic [LANES*WINDOW*WB-1:0] wv;
   logic [HAGG*WINDOW*WB-1:0]  wh;
 
@@ -557,7 +566,10 @@ module mcadsw_top #(
     .rd_col_i (6'(32'(vrd_grp) * LANES)), .rd_data_o (cen_l)
   );
 
-  mcadsw_census #(.COLS(RCOLS)) u_census_r (
+  // A step reads disparities d .. d + PAR - 1 (d = vrd_d): left lane l's columns
+  // minus d + PAR - 1 .. minus d, RLANES right columns from column grp LANES +
+  // DMAX - 1 - d - (PAR - 1) of the window (0 .. RCOLS - RLANES: d <= DMAX - PAR).
+  mcadsw_census #(.COLS(RCOLS), .RL(RLANES)) u_census_r (
     .clk_i, .rst_ni,
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (RXB'(lo_bound(rx0, xlo_q))), .cfg_hi_x_i (RXB'(hi_bound(rx0, xend_q, RCOLS))),
@@ -567,7 +579,7 @@ module mcadsw_top #(
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
-    .rd_col_i (RXB'(32'(vrd_grp) * LANES + DMAX - 1 - 32'(vrd_d))), .rd_data_o (cen_r)
+    .rd_col_i (RXB'(32'(vrd_grp) * LANES + DMAX - PAR - 32'(vrd_d))), .rd_data_o (cen_r)
   );
 
   mcadsw_weight_gen u_weight_gen (
@@ -610,10 +622,10 @@ module mcadsw_top #(
   logic [4:0]           mon_ev_row, mon_fc_row;
   logic [DB-1:0]        mon_ev_d, mon_fc_d;
   logic [2:0]           mon_ev_grp, mon_fc_grp;
-  logic [LANES*mcadsw_pkg::VCOST_BITS-1:0] mon_ev;
-  logic [HAGG*mcadsw_pkg::FCOST_BITS-1:0]  mon_fc;
+  logic [PAR*LANES*mcadsw_pkg::VCOST_BITS-1:0] mon_ev;
+  logic [PAR*HAGG*mcadsw_pkg::FCOST_BITS-1:0]  mon_fc;
 
-  mcadsw_cost_agg u_cost_agg (
+  mcadsw_cost_agg #(.P(PAR)) u_cost_agg (
     .clk_i, .rst_ni,
     .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
     .job_disp_i (disp_q), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),

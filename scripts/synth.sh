@@ -6,6 +6,8 @@
 #
 #   scripts/synth.sh              full configuration (DMAX = 64)
 #   DMAX=16 scripts/synth.sh      reduced configuration (build/synth_dmax16)
+#   PAR=2 scripts/synth.sh        2 disparities a step (1, 2, 4; issue 18), in
+#                                 build/synth_dmax<N>_par<P>
 #   FLAT=1 scripts/synth.sh       the earlier flow: the whole engine in one Yosys process
 #                                 (scripts/synth_flat.sh; 40 min, 13.5 GB at DMAX = 64)
 #   OUT=dir                       output directory (default build/synth, or
@@ -47,6 +49,7 @@ rtl=$(cd "$rtl" 2>/dev/null && pwd) || die "RTL directory '${RTL_DIR:-$root/rtl}
 pkg_dmax=$(awk '/localparam int DMAX / {v = $5; gsub(/[^0-9]/, "", v); print v}' "$rtl/mcadsw_pkg.sv")
 [[ "$pkg_dmax" =~ ^[0-9]+$ ]] || die "cannot read DMAX from $rtl/mcadsw_pkg.sv"
 dmax=${DMAX:-64}
+par=${PAR:-1}
 dmax_ok=0
 dmax_limit=$(( pkg_dmax > 128 ? pkg_dmax : 128 ))
 if [[ "$dmax" =~ ^[0-9]{1,6}$ ]] && [ "$((10#$dmax))" -ge 1 ] && [ "$((10#$dmax))" -le "$dmax_limit" ]; then
@@ -58,7 +61,8 @@ fi
 out=""
 if [ -n "${OUT:-}" ]; then out=$OUT
 elif [ "$dmax_ok" = 1 ]; then
-  if [ "$dmax" = 64 ]; then out=$root/build/synth; else out=$root/build/synth_dmax$dmax; fi
+  if [ "$par" != 1 ] && [[ "$par" =~ ^[124]$ ]]; then out=$root/build/synth_dmax${dmax}_par$par
+  elif [ "$dmax" = 64 ]; then out=$root/build/synth; else out=$root/build/synth_dmax$dmax; fi
 fi
 if [ -n "$out" ] && [ -d "$out" ]; then
   rm -f "$out/summary.json" "$out/report.md" "$out/mcadsw_top_osu018.v" "$out/mcadsw_top_sta.v" \
@@ -66,6 +70,9 @@ if [ -n "$out" ] && [ -d "$out" ]; then
 fi
 [ "$dmax_ok" = 1 ] ||
   die "DMAX='$dmax' is not supported: an integer from 1 to $dmax_limit (up to mcadsw_pkg::DMAX = $pkg_dmax with the package as it is, above it from a package made for that DMAX)"
+# PAR, the disparities a step: a parameter of the top (chparam), DMAX a multiple of it.
+[[ "$par" =~ ^[124]$ ]] || die "PAR='$par' is not supported: 1, 2 or 4"
+[ $((dmax % par)) -eq 0 ] || die "DMAX=$dmax is not a multiple of PAR=$par"
 case "${FLAT:-0}" in
   0|"") flat=0 ;;
   1) flat=1 ;;
@@ -84,6 +91,7 @@ done
 if [ "$flat" = 1 ]; then
   [ -z "${RTL_DIR:-}" ] && [ -z "${YOSYS:-}" ] || die "RTL_DIR and YOSYS apply to the hierarchical flow only"
   [ "$dmax" -le "$pkg_dmax" ] || die "FLAT=1 takes DMAX up to $pkg_dmax"
+  [ "$par" = 1 ] || die "FLAT=1 takes PAR = 1 only"
   DMAX=$dmax exec "$root/scripts/synth_flat.sh"
 fi
 
@@ -146,10 +154,11 @@ cat > "$out/elab.ys" <<YS
 read_verilog -sv mcadsw_pkg.sv $mods
 read_verilog -lib $root/sim/gls/mcadsw_ram_model.v
 chparam -set DMAX $dmax mcadsw_top
+chparam -set PAR $par mcadsw_top
 hierarchy -check -top mcadsw_top
 write_rtlil $out/elab_raw.il
 YS
-echo "synth: DMAX=$dmax, clock ${period_ns} ns, liberty $(basename "$lib"); elaborating (log: $out/elab.log)"
+echo "synth: DMAX=$dmax, PAR=$par, clock ${period_ns} ns, liberty $(basename "$lib"); elaborating (log: $out/elab.log)"
 if ! timed "$out/elab_time.txt" "$yosys_bin" -q -l "$out/elab.log" "$out/elab.ys" > /dev/null 2> "$out/elab.err"; then
   { tail -8 "$out/elab.log" 2>/dev/null || cat "$out/elab.err"; } | sed 's/^/  | /' >&2
   err=$(grep -h -m1 "ERROR" "$out/elab.log" "$out/elab.err" 2>/dev/null | awk 'NR == 1' || true)
@@ -159,7 +168,7 @@ if ! timed "$out/elab_time.txt" "$yosys_bin" -q -l "$out/elab.log" "$out/elab.ys
   if [ -n "$efile" ] && [ -f "$out/blocks.txt" ]; then
     eblocks=$(awk -v f="$(basename "$efile")" '{n = split($5, a, ","); for (i = 1; i <= n; i++) if (a[i] == f) print $1}' "$out/blocks.txt" | tr '\n' ' ' | sed 's/ $//')
   fi
-  echo "synth: elaboration of mcadsw_top failed${eblocks:+ in block $eblocks}: ${err:-see the log} (DMAX=$dmax, sources $rtl; log: $out/elab.log)" >&2
+  echo "synth: elaboration of mcadsw_top failed${eblocks:+ in block $eblocks}: ${err:-see the log} (DMAX=$dmax, PAR=$par, sources $rtl; log: $out/elab.log)" >&2
   exit 1
 fi
 rm -f "$out"/blocks/*.sig "$out/blocks.txt"
@@ -290,7 +299,7 @@ yosys_wall=$(( $(date +%s) - t_start ))
 # One file, the top first, then each block module once; MCADSW_RAM stays a black
 # box (sim/gls/mcadsw_ram_model.v for simulation, a generated liberty for STA).
 {
-  echo "// mcadsw_top, DMAX = $dmax: OSU 0.18 um netlist assembled by scripts/synth.sh from the"
+  echo "// mcadsw_top, DMAX = $dmax, PAR = $par: OSU 0.18 um netlist assembled by scripts/synth.sh from the"
   echo "// block netlists in $out/blocks (each synthesised on its own)."
   cat "$out/blocks/top/netlist.v"
   awk '$1 != "top" {print $1}' "$out/blocks.txt" | while read -r label; do cat "$out/blocks/$label/netlist.v"; done
@@ -443,7 +452,7 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   esac
 }
 {
-  echo "# Synthesis report (\`make synth\`, DMAX = $dmax, hierarchical)"
+  echo "# Synthesis report (\`make synth\`, DMAX = $dmax, PAR = $par, hierarchical)"
   echo
   echo "Yosys 0.23 to OSU 0.18 um standard cells (\`$(basename "$lib")\`), block by block: each block"
   echo "(each module parameterisation the top instantiates, sub-modules flattened into it) and the top's own"
@@ -470,10 +479,10 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "| clock target | $clock_mhz MHz | 95 MHz |"
   echo "| worst slack (WNS) | $slack ns ($wns ns) | |"
   echo "| achievable clock (1 / (period - slack)) | $fmax MHz | 95 MHz |"
-  if [ -n "$cif_cycles" ] && [ "$dmax" = 64 ]; then
+  if [ -n "$cif_cycles" ] && [ "$dmax" = 64 ] && [ "$par" = 1 ]; then
     echo "| CIF frame at D = 64 (\`make sim\`) | $cif_cycles cycles = $(awk -v c="$cif_cycles" -v f="$fmax" 'BEGIN {printf "%.1f", f * 1e6 / c}') fps at $fmax MHz, $(awk -v c="$cif_cycles" 'BEGIN {printf "%.1f", 95e6 / c}') fps at 95 MHz | 42 fps at 95 MHz |"
   fi
-  if [ "$dmax" = 64 ]; then
+  if [ "$dmax" = 64 ] && [ "$par" = 1 ]; then
     echo
     echo "The flattened flow (\`make synth FLAT=1\`: one Yosys process, 2370 s and 13 450 MB on the RTL of"
     echo "commit 42dc1ac) against this one on the same RTL: docs/architecture.md section 11."
@@ -557,8 +566,8 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
 } > "$out/report.md.tmp"
 
 {
-  printf '{"dmax": %d, "flow": "hierarchical", "nand2_eq": %d, "memory_bits": %d, "memory_kB": %s, "memory_macros": %d, ' \
-    "$dmax" "$nand2_total" "$mem_bits" "$mem_kb" "$mem_count"
+  printf '{"dmax": %d, "par": %d, "flow": "hierarchical", "nand2_eq": %d, "memory_bits": %d, "memory_kB": %s, "memory_macros": %d, ' \
+    "$dmax" "$par" "$nand2_total" "$mem_bits" "$mem_kb" "$mem_count"
   printf '"memory_kB_engine": %s, "post_stage_nand2_eq": %d, "post_stage_memory_bits": %d, "post_stage_memory_kB": %s, ' \
     "$eng_kb" "$post_nand2" "$post_bits" "$post_kb"
   printf '"async_read_macros": %d, "data_register_bits": %d, ' "$async_count" "$reg_bits"

@@ -26,6 +26,7 @@ int main() {
   p("FCOST_BITS", kFinalCostBits, "final cost <= 31*11904*64");
   p("DMAX", kDmax, "largest disparity range");
   p("DISP_BITS", kDispBits, "disparity 0..DMAX-1");
+  p("PAR", kPar, "disparities a step (1, 2, 4)");
   p("BLOCK", kBlock, "output block 18x18");
   p("LANES", kLanes, "vertical aggregation lanes");
   p("HAGG", kHorzAggregators, "horizontal aggregators");

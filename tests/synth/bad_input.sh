@@ -39,6 +39,10 @@ expect dmax_text  2 "DMAX='abc' is not supported" -- DMAX=abc
 expect dmax_above 2 "DMAX='129' is not supported" -- DMAX=129
 expect dmax_neg   2 "DMAX='-4' is not supported" -- DMAX=-4
 expect flat_bad   2 "FLAT='yes' is not 0 or 1" -- FLAT=yes
+# PAR: 1, 2 or 4, and DMAX a multiple of it.
+expect par_three  2 "PAR='3' is not supported: 1, 2 or 4" -- PAR=3
+expect par_text   2 "PAR='x' is not supported" -- PAR=x
+expect par_dmax   2 "DMAX=18 is not a multiple of PAR=4" -- DMAX=18 PAR=4
 
 # A missing tool: a PATH with everything the script needs except yosys.
 bin=$work/bin; mkdir -p "$bin"

@@ -63,6 +63,14 @@ inline constexpr int kDefaultGamma = 22;  // chosen by the sweep of scripts/eval
 inline constexpr int kDmax = MCADSW_DMAX;
 inline constexpr int kDmaxDefault = 64;  // the configuration of rtl/mcadsw_pkg.sv and the budgets
 static_assert(kDmax >= 1 && kDmax <= 128, "MCADSW_DMAX must be 1..128");
+// Disparities the engine evaluates a step (CMake MCADSW_PAR, `make sim-build
+// PAR=<p>`): 1 (the paper's), 2 or 4. The RTL only; the disparities are the same.
+#ifndef MCADSW_PAR
+#define MCADSW_PAR 1
+#endif
+inline constexpr int kPar = MCADSW_PAR;
+static_assert(kPar == 1 || kPar == 2 || kPar == 4, "MCADSW_PAR must be 1, 2 or 4");
+static_assert(kDmax % kPar == 0, "MCADSW_DMAX must be a multiple of MCADSW_PAR");
 inline constexpr int kBlock = 18;     // output block is kBlock x kBlock
 inline constexpr int kLanes = 8;      // columns aggregated per cycle (Fig. 14)
 inline constexpr int kHorzAggregators = 3;  // horizontal aggregators fed 33 Ev (Fig. 12)
