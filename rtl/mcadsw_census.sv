@@ -356,29 +356,37 @@ module mcadsw_census #(
     end
   end
 
+  // Lane l is ring column rq + l, from sub-bank (rq + l) % CSUB: a CSUB:1
+  // multiplexer whose one-hot select is decoded from the address and registered
+  // with it, so no adder or decoder lies between the sub-bank words and the
+  // aggregator. Its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
+  // column word (a row shifter).
+  logic [RL*CSUB-1:0] lsel, lsel_q;   // lane l takes sub-bank b when bit l CSUB + b is set
+  for (genvar l = 0; l < RL; l++) begin : g_lsel
+    logic [CSB-1:0] b;
+    assign b = CSB'(rq) + CSB'(l);
+    assign lsel[l*CSUB +: CSUB] = CSUB'(1) << b;
+  end
+
   logic [YB-1:0]  rd_row_q;
-  logic [CSB-1:0] rd_rot_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rd_row_q <= '0;
-      rd_rot_q <= '0;
+      lsel_q   <= '0;
     end else if (rd_en_i) begin
       rd_row_q <= rd_row_i;
-      rd_rot_q <= CSB'(rq);
+      lsel_q   <= lsel;
     end
   end
 
-  // Lane l is ring column rq + l, from sub-bank (rq + l) % CSUB (a CSUB:1
-  // multiplexer); its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
-  // column word (a row shifter).
   function automatic logic [CWB-1:0] sub_word(input logic [CSUB*CWB-1:0] w,
-                                              input logic [CSB-1:0] b);
+                                              input logic [CSUB-1:0] onehot);
     sub_word = '0;
-    for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{b == CSB'(i)}});
+    for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{onehot[i]}});
   endfunction
   for (genvar l = 0; l < RL; l++) begin : g_lane
     logic [CWB-1:0] col;
-    assign col = sub_word(csub_rd, rd_rot_q + CSB'(l));
+    assign col = sub_word(csub_rd, lsel_q[l*CSUB +: CSUB]);
     assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
   end
 
