@@ -7,7 +7,8 @@
 // full, the horizontal side reads it for 6 cycles (33 costs a cycle, 3 final
 // costs) while the vertical side fills the other bank with d + 1 (Fig. 13).
 // The WTA keeps the best d of the 18 pixels and emits them, 3 a cycle, on the
-// last disparity. Jobs run back to back: 6*D cycles a row in steady state.
+// last disparity. Jobs run back to back: 6*D cycles a row in steady state
+// (6 ceil(D / P) with P disparities a step, below).
 //
 // Read ports are synchronous: data arrive the cycle after the address (the
 // census and weight buffers are RAMs). Pipeline, from the issue cycle c of a
