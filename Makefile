@@ -103,7 +103,8 @@ lint: bootstrap
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
 	@$(BUILD_DIR)/bin/gen_rtl_pkg > rtl/mcadsw_pkg.sv
-	@echo "rtl/mcadsw_pkg.sv regenerated from sw_ref/include/mcadsw/params.hpp"
+	@$(BUILD_DIR)/bin/gen_rtl_pkg regs-doc > docs/registers.md
+	@echo "rtl/mcadsw_pkg.sv and docs/registers.md regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp"
 
 bench: build
 	@$(BUILD_DIR)/bin/bench_ref

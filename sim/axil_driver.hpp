@@ -1,0 +1,190 @@
+// AXI4-Lite master for a Verilated model with the s_aw*/s_w*/s_b*/s_ar*/s_r*
+// slave ports of rtl/mcadsw_regs.sv, as a driver would use it, with random
+// VALID delays and READY back-pressure, and a protocol monitor of the slave's
+// side (AMBA AXI4-Lite):
+//   - BVALID / RVALID held until BREADY / RREADY, with a stable payload;
+//   - no B response without an accepted AW and W, no R response without an accepted AR;
+//   - a response arrives within a bound (no hang).
+// The master's own side follows the same rules: VALID held with a stable
+// payload until READY, AW and W raised independently after random delays (either
+// may come first), one transaction at a time.
+//
+// The bench supplies `step`: one clock cycle of everything else (the engine and
+// its memory, or nothing), called between the falling and the rising edge of
+// the model's clock, after the driver sampled the outputs.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace mcadsw::sim {
+
+template <typename V>
+class AxilDriver {
+ public:
+  // `stall` in [0, 1): the probability that a VALID or READY the driver controls is
+  // held back in a cycle.
+  AxilDriver(V& t, std::function<void()> step, uint32_t seed, double stall)
+      : t_(t), step_(std::move(step)), rng_(seed), stall_(stall) {
+    t_.s_awvalid_i = 0;
+    t_.s_wvalid_i = 0;
+    t_.s_bready_i = 0;
+    t_.s_arvalid_i = 0;
+    t_.s_rready_i = 0;
+  }
+
+  // Returns BRESP (0 OKAY, 2 SLVERR).
+  int write(uint32_t addr, uint32_t data, uint32_t strb = 0xF) {
+    bool aw_done = false, w_done = false;
+    long aw_wait = delay(), w_wait = delay();
+    for (long n = 0;; ++n) {
+      if (n > kLimit) fail("write to 0x" + hex(addr) + ": no B response");
+      // Raise VALID after its delay; once up it stays up with the same payload.
+      if (!aw_done && aw_wait-- <= 0) {
+        t_.s_awvalid_i = 1;
+        t_.s_awaddr_i = addr;
+      }
+      if (!w_done && w_wait-- <= 0) {
+        t_.s_wvalid_i = 1;
+        t_.s_wdata_i = data;
+        t_.s_wstrb_i = strb;
+      }
+      if (aw_done && w_done) t_.s_bready_i = coin() ? 0 : 1;
+      fall();
+      const bool aw_hs = t_.s_awvalid_i && t_.s_awready_o;
+      const bool w_hs = t_.s_wvalid_i && t_.s_wready_o;
+      const bool b_hs = t_.s_bvalid_o && t_.s_bready_i;
+      const int bresp = t_.s_bresp_o;
+      if (aw_hs) ++aw_accepted_;
+      if (w_hs) ++w_accepted_;
+      rise();
+      if (aw_hs) {
+        aw_done = true;
+        t_.s_awvalid_i = 0;
+      }
+      if (w_hs) {
+        w_done = true;
+        t_.s_wvalid_i = 0;
+      }
+      if (b_hs) {
+        t_.s_bready_i = 0;
+        return bresp;
+      }
+    }
+  }
+
+  // Returns RDATA; *resp gets RRESP.
+  uint32_t read(uint32_t addr, int* resp = nullptr) {
+    bool ar_done = false;
+    long ar_wait = delay();
+    for (long n = 0;; ++n) {
+      if (n > kLimit) fail("read of 0x" + hex(addr) + ": no R response");
+      if (!ar_done && ar_wait-- <= 0) {
+        t_.s_arvalid_i = 1;
+        t_.s_araddr_i = addr;
+      }
+      if (ar_done) t_.s_rready_i = coin() ? 0 : 1;
+      fall();
+      const bool ar_hs = t_.s_arvalid_i && t_.s_arready_o;
+      const bool r_hs = t_.s_rvalid_o && t_.s_rready_i;
+      const uint32_t data = t_.s_rdata_o;
+      const int rresp = t_.s_rresp_o;
+      if (ar_hs) ++ar_accepted_;
+      rise();
+      if (ar_hs) {
+        ar_done = true;
+        t_.s_arvalid_i = 0;
+      }
+      if (r_hs) {
+        t_.s_rready_i = 0;
+        if (resp) *resp = rresp;
+        return data;
+      }
+    }
+  }
+
+  // Cycles without a transaction (the monitor still runs).
+  void idle(long cycles) {
+    for (long i = 0; i < cycles; ++i) {
+      fall();
+      rise();
+    }
+  }
+
+  long cycles() const { return cycles_; }
+
+ private:
+  static constexpr long kLimit = 10000;
+
+  bool coin() { return std::bernoulli_distribution(stall_)(rng_); }
+  long delay() {
+    long d = 0;
+    while (coin()) ++d;
+    return d;
+  }
+  static std::string hex(uint32_t v) {
+    std::ostringstream o;
+    o << std::hex << v;
+    return o.str();
+  }
+  [[noreturn]] void fail(const std::string& what) {
+    throw std::runtime_error("AXI4-Lite: " + what + " (cycle " + std::to_string(cycles_) + ")");
+  }
+
+  // Falling edge and settle; the monitor samples the slave's outputs.
+  void fall() {
+    t_.clk_i = 0;
+    t_.eval();
+    monitor();
+  }
+  void rise() {
+    step_();
+    t_.clk_i = 1;
+    t_.eval();
+    ++cycles_;
+  }
+
+  void monitor() {
+    // Responses held with a stable payload until taken.
+    if (b_pending_ && !t_.s_bvalid_o) fail("BVALID dropped before BREADY");
+    if (b_pending_ && t_.s_bresp_o != bresp_) fail("BRESP changed while BVALID waited");
+    if (r_pending_ && !t_.s_rvalid_o) fail("RVALID dropped before RREADY");
+    if (r_pending_ && (t_.s_rdata_o != rdata_ || t_.s_rresp_o != rresp_))
+      fail("RDATA/RRESP changed while RVALID waited");
+    // No response without a request.
+    if (t_.s_bvalid_o && !b_pending_) {
+      if (aw_accepted_ <= b_count_ || w_accepted_ <= b_count_) fail("B response without AW and W");
+    }
+    if (t_.s_rvalid_o && !r_pending_) {
+      if (ar_accepted_ <= r_count_) fail("R response without AR");
+    }
+    // This cycle's state for the next check.
+    const bool b_taken = t_.s_bvalid_o && t_.s_bready_i;
+    const bool r_taken = t_.s_rvalid_o && t_.s_rready_i;
+    if (t_.s_bvalid_o) bresp_ = t_.s_bresp_o;
+    if (t_.s_rvalid_o) {
+      rdata_ = t_.s_rdata_o;
+      rresp_ = t_.s_rresp_o;
+    }
+    b_pending_ = t_.s_bvalid_o && !b_taken;
+    r_pending_ = t_.s_rvalid_o && !r_taken;
+    b_count_ += b_taken;
+    r_count_ += r_taken;
+  }
+
+  V& t_;
+  std::function<void()> step_;
+  std::mt19937 rng_;
+  double stall_;
+  long cycles_ = 0;
+  long aw_accepted_ = 0, w_accepted_ = 0, ar_accepted_ = 0, b_count_ = 0, r_count_ = 0;
+  bool b_pending_ = false, r_pending_ = false;
+  int bresp_ = 0, rresp_ = 0;
+  uint32_t rdata_ = 0;
+};
+
+}  // namespace mcadsw::sim

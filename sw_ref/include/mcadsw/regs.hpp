@@ -1,0 +1,161 @@
+// Register map of the engine's AXI4-Lite slave (issue 19): the single source of
+// truth. rtl/mcadsw_regs_pkg.sv (offsets and field positions for
+// rtl/mcadsw_regs.sv) and docs/registers.md are generated from this file by
+// build/bin/gen_rtl_pkg (`make rtl-pkg`); tests fail when either is stale. A
+// driver includes this header for the offsets and fields.
+//
+// 32-bit registers at word-aligned byte offsets. Reads of an unmapped offset
+// return 0 with SLVERR, writes to one are dropped with SLVERR; writes to
+// read-only registers are dropped with OKAY. WSTRB is honoured byte by byte.
+#pragma once
+
+#include <cstdint>
+
+#include "mcadsw/params.hpp"  // kColorDistBits
+
+namespace mcadsw::regs {
+
+enum class Access { kRO, kRW, kW1C, kWO };  // kWO: write-only pulse, reads 0
+
+struct Reg {
+  const char* name;
+  uint32_t offset;
+  Access access;
+  const char* doc;
+};
+
+struct Field {
+  const char* reg;
+  const char* name;
+  int lsb;
+  int width;
+  Access access;
+  const char* doc;
+};
+
+// ---- Offsets ---------------------------------------------------------------------------
+inline constexpr uint32_t kId = 0x00;
+inline constexpr uint32_t kVersion = 0x04;
+inline constexpr uint32_t kHwConfig = 0x08;
+inline constexpr uint32_t kCtrl = 0x10;
+inline constexpr uint32_t kStatus = 0x14;
+inline constexpr uint32_t kIrqEnable = 0x18;
+inline constexpr uint32_t kIrqStatus = 0x1C;
+inline constexpr uint32_t kBaseLy = 0x20;
+inline constexpr uint32_t kBaseLu = 0x24;
+inline constexpr uint32_t kBaseLv = 0x28;
+inline constexpr uint32_t kBaseRy = 0x2C;
+inline constexpr uint32_t kBaseRu = 0x30;
+inline constexpr uint32_t kBaseRv = 0x34;
+inline constexpr uint32_t kBaseOut = 0x38;
+inline constexpr uint32_t kBaseDl = 0x3C;
+inline constexpr uint32_t kBaseDr = 0x40;
+inline constexpr uint32_t kBaseMask = 0x44;
+inline constexpr uint32_t kStride = 0x48;
+inline constexpr uint32_t kOutStride = 0x4C;
+inline constexpr uint32_t kSize = 0x50;
+inline constexpr uint32_t kDisp = 0x54;
+inline constexpr uint32_t kLrT = 0x58;
+inline constexpr uint32_t kThr0 = 0x60;  // THR0 .. THR6 at kThr0 + 4 i
+inline constexpr uint32_t kCycles = 0x80;
+inline constexpr uint32_t kWordsRead = 0x84;
+inline constexpr uint32_t kWordsWritten = 0x88;
+inline constexpr uint32_t kStalls = 0x8C;
+inline constexpr uint32_t kSpan = 0x100;  // address bits decoded: offsets 0 .. kSpan - 4
+
+// ---- Constants read from ID and VERSION ---------------------------------------------------
+inline constexpr uint32_t kIdValue = 0x4D434144;  // "MCAD"
+inline constexpr uint32_t kVersionMajor = 1;
+inline constexpr uint32_t kVersionMinor = 0;
+
+// ---- Fields (lsb, width) ---------------------------------------------------------------
+inline constexpr int kCtrlStartLsb = 0;
+inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
+inline constexpr int kStatusBusyLsb = 0;
+inline constexpr int kStatusDoneLsb = 1;
+inline constexpr int kStatusErrorLsb = 2;
+inline constexpr int kStatusCodeLsb = 4, kStatusCodeWidth = 4;
+inline constexpr int kIrqDoneLsb = 0;
+inline constexpr int kIrqErrorLsb = 1;
+inline constexpr int kSizeWidthLsb = 0, kSizeHeightLsb = 16, kSizeBits = 12;
+inline constexpr int kDispBitsReg = 8;  // D, whatever DMAX (<= 128); D > DMAX is error code 3
+inline constexpr int kLrTBits = 8;
+inline constexpr int kThrBits = kColorDistBits;
+
+inline constexpr Reg kRegs[] = {
+    {"ID", kId, Access::kRO, "identification, \"MCAD\""},
+    {"VERSION", kVersion, Access::kRO, "register map version"},
+    {"HWCONFIG", kHwConfig, Access::kRO, "build parameters"},
+    {"CTRL", kCtrl, Access::kRW, "start and output mode"},
+    {"STATUS", kStatus, Access::kRW, "busy, sticky done and error (write 1 to clear), error code"},
+    {"IRQ_ENABLE", kIrqEnable, Access::kRW, "interrupt enables"},
+    {"IRQ_STATUS", kIrqStatus, Access::kRO, "pending interrupts: STATUS sticky bits and IRQ_ENABLE"},
+    {"BASE_LY", kBaseLy, Access::kRW, "byte address of the left Y plane"},
+    {"BASE_LU", kBaseLu, Access::kRW, "left U plane"},
+    {"BASE_LV", kBaseLv, Access::kRW, "left V plane"},
+    {"BASE_RY", kBaseRy, Access::kRW, "right Y plane"},
+    {"BASE_RU", kBaseRu, Access::kRW, "right U plane (right view as base, or LR)"},
+    {"BASE_RV", kBaseRv, Access::kRW, "right V plane (idem)"},
+    {"BASE_OUT", kBaseOut, Access::kRW, "disparity plane"},
+    {"BASE_DL", kBaseDl, Access::kRW, "LR: scratch plane of the left map"},
+    {"BASE_DR", kBaseDr, Access::kRW, "LR: scratch plane of the right map"},
+    {"BASE_MASK", kBaseMask, Access::kRW, "LR: validity mask plane"},
+    {"STRIDE", kStride, Access::kRW, "bytes per row of the input planes"},
+    {"OUT_STRIDE", kOutStride, Access::kRW, "bytes per row of the disparity plane"},
+    {"SIZE", kSize, Access::kRW, "image width and height"},
+    {"DISP", kDisp, Access::kRW, "D, the disparities searched"},
+    {"LR_T", kLrT, Access::kRW, "LR: check tolerance T"},
+    {"THR0", kThr0 + 0, Access::kRW, "weight table threshold 0"},
+    {"THR1", kThr0 + 4, Access::kRW, "threshold 1"},
+    {"THR2", kThr0 + 8, Access::kRW, "threshold 2"},
+    {"THR3", kThr0 + 12, Access::kRW, "threshold 3"},
+    {"THR4", kThr0 + 16, Access::kRW, "threshold 4"},
+    {"THR5", kThr0 + 20, Access::kRW, "threshold 5"},
+    {"THR6", kThr0 + 24, Access::kRW, "threshold 6"},
+    {"CYCLES", kCycles, Access::kRO, "cycles of the last frame"},
+    {"WORDS_READ", kWordsRead, Access::kRO, "memory words read in the last frame"},
+    {"WORDS_WRITTEN", kWordsWritten, Access::kRO, "memory words written in the last frame"},
+    {"STALLS", kStalls, Access::kRO, "cycles with a memory request not granted"},
+};
+
+inline constexpr Field kFields[] = {
+    {"ID", "VALUE", 0, 32, Access::kRO, "0x4D434144"},
+    {"VERSION", "MINOR", 0, 8, Access::kRO, "minor version"},
+    {"VERSION", "MAJOR", 8, 8, Access::kRO, "major version"},
+    {"HWCONFIG", "DMAX", 0, 8, Access::kRO, "largest D of this build"},
+    {"HWCONFIG", "PAR", 8, 4, Access::kRO, "disparities a step of this build"},
+    {"CTRL", "START", kCtrlStartLsb, 1, Access::kWO,
+     "write 1: start a frame with the registers as they are after this write; ignored while "
+     "busy; reads 0"},
+    {"CTRL", "MODE", kCtrlModeLsb, kCtrlModeWidth, Access::kRW,
+     "bit 0 sub-pixel, bit 1 LR, bit 2 right view as base (docs/memory_map.md)"},
+    {"STATUS", "BUSY", kStatusBusyLsb, 1, Access::kRO, "a frame is running"},
+    {"STATUS", "DONE", kStatusDoneLsb, 1, Access::kW1C,
+     "a frame finished or was rejected since the bit was cleared"},
+    {"STATUS", "ERROR", kStatusErrorLsb, 1, Access::kW1C,
+     "a start was rejected since the bit was cleared"},
+    {"STATUS", "ERROR_CODE", kStatusCodeLsb, kStatusCodeWidth, Access::kRO,
+     "error code of the last start (0: accepted; docs/memory_map.md)"},
+    {"IRQ_ENABLE", "DONE", kIrqDoneLsb, 1, Access::kRW, "interrupt on STATUS.DONE"},
+    {"IRQ_ENABLE", "ERROR", kIrqErrorLsb, 1, Access::kRW, "interrupt on STATUS.ERROR"},
+    {"IRQ_STATUS", "DONE", kIrqDoneLsb, 1, Access::kRO, "STATUS.DONE and IRQ_ENABLE.DONE"},
+    {"IRQ_STATUS", "ERROR", kIrqErrorLsb, 1, Access::kRO, "STATUS.ERROR and IRQ_ENABLE.ERROR"},
+    {"SIZE", "WIDTH", kSizeWidthLsb, kSizeBits, Access::kRW, "width in pixels"},
+    {"SIZE", "HEIGHT", kSizeHeightLsb, kSizeBits, Access::kRW, "height in pixels"},
+    {"DISP", "D", 0, kDispBitsReg, Access::kRW, "1 .. DMAX"},
+    {"LR_T", "T", 0, kLrTBits, Access::kRW, "0 .. 63"},
+};
+
+// Every offset word-aligned, inside the decoded span, and unique.
+constexpr bool offsets_valid() {
+  const int n = int(sizeof(kRegs) / sizeof(kRegs[0]));
+  for (int i = 0; i < n; ++i) {
+    if (kRegs[i].offset % 4 != 0 || kRegs[i].offset >= kSpan) return false;
+    for (int j = i + 1; j < n; ++j)
+      if (kRegs[i].offset == kRegs[j].offset) return false;
+  }
+  return true;
+}
+static_assert(offsets_valid(), "register offsets must be aligned, in the span and unique");
+
+}  // namespace mcadsw::regs

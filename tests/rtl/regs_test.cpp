@@ -1,0 +1,265 @@
+// mcadsw_regs (issue 19): the AXI4-Lite register block against the register
+// map of sw_ref/include/mcadsw/regs.hpp, through sim::AxilDriver (random VALID
+// delays and READY back-pressure, protocol monitor of the slave's side). Every
+// read-write register with random data and byte strobes (read back and on the
+// engine ports), read-only and unmapped offsets, CTRL.START and MODE, the sticky
+// STATUS bits with write-1-to-clear, the interrupt and its enables, D above DMAX.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "Vmcadsw_regs.h"
+#include "axil_driver.hpp"
+#include "mcadsw/regs.hpp"
+#include "vbits.hpp"
+
+namespace mcadsw {
+namespace {
+
+using namespace regs;
+constexpr int kOkay = 0, kSlverr = 2;
+
+uint32_t mask(int width) { return width >= 32 ? ~0u : (1u << width) - 1; }
+
+// The bits each read-write register keeps (the rest read 0).
+std::map<uint32_t, uint32_t> writable_bits() {
+  std::map<uint32_t, uint32_t> m;
+  for (uint32_t o = kBaseLy; o <= kBaseMask; o += 4) m[o] = ~0u;
+  m[kStride] = m[kOutStride] = ~0u;
+  m[kSize] = (mask(kSizeBits) << kSizeWidthLsb) | (mask(kSizeBits) << kSizeHeightLsb);
+  m[kDisp] = mask(kDispBitsReg);
+  m[kLrT] = mask(kLrTBits);
+  for (int i = 0; i < 7; ++i) m[kThr0 + 4 * i] = mask(kThrBits);
+  m[kIrqEnable] = (1u << kIrqDoneLsb) | (1u << kIrqErrorLsb);
+  m[kCtrl] = mask(kCtrlModeWidth) << kCtrlModeLsb;
+  return m;
+}
+
+class Bench {
+ public:
+  Bench(uint32_t seed, double stall) : axi(t, [this] { step(); }, seed, stall) {
+    t.rst_ni = 0;
+    t.clk_i = 0;
+    t.busy_i = 0;
+    t.done_i = 0;
+    t.error_i = 0;
+    t.error_code_i = 0;
+    t.cnt_cycles_i = 0;
+    t.cnt_words_read_i = 0;
+    t.cnt_words_written_i = 0;
+    t.cnt_stall_i = 0;
+    t.eval();
+    t.clk_i = 1;
+    t.eval();
+    t.rst_ni = 1;
+    axi.idle(2);
+  }
+
+  // The engine-side value of a read-write register, rebuilt from the cfg_* ports.
+  uint32_t port_value(uint32_t off) {
+    switch (off) {
+      case kBaseLy: return t.cfg_base_ly_o;
+      case kBaseLu: return t.cfg_base_lu_o;
+      case kBaseLv: return t.cfg_base_lv_o;
+      case kBaseRy: return t.cfg_base_ry_o;
+      case kBaseRu: return t.cfg_base_ru_o;
+      case kBaseRv: return t.cfg_base_rv_o;
+      case kBaseOut: return t.cfg_base_out_o;
+      case kBaseDl: return t.cfg_base_dl_o;
+      case kBaseDr: return t.cfg_base_dr_o;
+      case kBaseMask: return t.cfg_base_mask_o;
+      case kStride: return t.cfg_stride_o;
+      case kOutStride: return t.cfg_out_stride_o;
+      case kSize: return (uint32_t(t.cfg_width_o) << kSizeWidthLsb) | (uint32_t(t.cfg_height_o) << kSizeHeightLsb);
+      case kDisp: return t.cfg_disp_o;  // D <= DMAX here
+      case kLrT: return t.cfg_lr_t_o;
+      case kCtrl: return uint32_t(t.cfg_mode_o) << kCtrlModeLsb;
+      case kIrqEnable: return ~0u;      // no port: not compared
+      default:
+        if (off >= kThr0 && off < kThr0 + 28)
+          return uint32_t(sim::get_bits(t.cfg_thr_o, int(off - kThr0) / 4 * kThrBits, kThrBits));
+        return ~0u;
+    }
+  }
+
+  Vmcadsw_regs t;
+  sim::AxilDriver<Vmcadsw_regs> axi;
+  int starts = 0;             // cycles with start_o
+  int mode_at_start = -1;     // cfg_mode_o in the last of them
+
+ private:
+  // Between the falling and the rising edge: the outputs are settled.
+  void step() {
+    if (t.start_o) {
+      ++starts;
+      mode_at_start = t.cfg_mode_o;
+    }
+  }
+};
+
+class Regs : public ::testing::TestWithParam<double> {};  // parameter: stall probability
+
+TEST_P(Regs, IdentificationAndResetValues) {
+  Bench b(1, GetParam());
+  int resp = -1;
+  EXPECT_EQ(b.axi.read(kId, &resp), kIdValue);
+  EXPECT_EQ(resp, kOkay);
+  EXPECT_EQ(b.axi.read(kVersion), (kVersionMajor << 8) | kVersionMinor);
+  EXPECT_EQ(b.axi.read(kHwConfig), uint32_t(kDmax) | (uint32_t(kPar) << 8));
+  for (const auto& [off, bits] : writable_bits()) EXPECT_EQ(b.axi.read(off), 0u) << "offset " << off;
+  EXPECT_EQ(b.axi.read(kStatus), 0u);
+  EXPECT_EQ(b.axi.read(kIrqStatus), 0u);
+  EXPECT_FALSE(b.t.irq_o);
+}
+
+TEST_P(Regs, EveryReadWriteRegisterWithRandomDataAndStrobes) {
+  Bench b(2, GetParam());
+  std::mt19937 rng(22);
+  const auto bits = writable_bits();
+  std::map<uint32_t, uint32_t> model;
+  for (const auto& [off, m] : bits) model[off] = 0;
+  std::vector<uint32_t> offs;
+  for (const auto& [off, m] : bits) offs.push_back(off);
+  for (int i = 0; i < 600; ++i) {
+    const uint32_t off = offs[rng() % offs.size()];
+    uint32_t data = rng();
+    if (off == kCtrl) data &= ~(1u << kCtrlStartLsb);  // no start here
+    if (off == kDisp) data = (data & ~0xFFu) | (rng() % (kDmax + 1));  // D <= DMAX on the port
+    const uint32_t strb = rng() & 0xF;
+    ASSERT_EQ(b.axi.write(off, data, strb), kOkay) << "offset " << off;
+    uint32_t bytes = 0;
+    for (int k = 0; k < 4; ++k)
+      if (strb >> k & 1) bytes |= 0xFFu << (8 * k);
+    model[off] = ((model[off] & ~bytes) | (data & bytes)) & bits.at(off);
+    // Read back a random register and check every engine port.
+    const uint32_t roff = offs[rng() % offs.size()];
+    ASSERT_EQ(b.axi.read(roff), model[roff]) << "offset " << roff << " after writing " << off;
+    for (const auto& [o, v] : model) {
+      const uint32_t p = b.port_value(o);
+      if (p != ~0u && (o != kDisp || v <= uint32_t(kDmax))) {
+        ASSERT_EQ(p, v) << "port of offset " << o;
+      }
+    }
+  }
+  EXPECT_EQ(b.starts, 0);
+}
+
+TEST_P(Regs, ReadOnlyWritesAreDroppedUnmappedOffsetsAnswerSlverr) {
+  Bench b(3, GetParam());
+  b.t.cnt_cycles_i = 0x12345678;
+  b.t.cnt_words_read_i = 111;
+  b.t.cnt_words_written_i = 222;
+  b.t.cnt_stall_i = 333;
+  ASSERT_EQ(b.axi.write(kStride, 0xCAFEF00D), kOkay);
+  for (uint32_t off : {kId, kVersion, kHwConfig, kIrqStatus, kCycles, kWordsRead, kWordsWritten, kStalls})
+    EXPECT_EQ(b.axi.write(off, 0xFFFFFFFF), kOkay) << "read-only offset " << off;
+  EXPECT_EQ(b.axi.read(kId), kIdValue);
+  EXPECT_EQ(b.axi.read(kCycles), 0x12345678u);
+  EXPECT_EQ(b.axi.read(kWordsRead), 111u);
+  EXPECT_EQ(b.axi.read(kWordsWritten), 222u);
+  EXPECT_EQ(b.axi.read(kStalls), 333u);
+  EXPECT_EQ(b.axi.read(kIrqStatus), 0u);
+  // Every word slot not in the map, and misaligned offsets of mapped ones.
+  std::vector<bool> mapped(kSpan / 4, false);
+  for (const Reg& r : kRegs) mapped[r.offset / 4] = true;
+  int unmapped = 0;
+  for (uint32_t off = 0; off < kSpan; ++off) {
+    if (off % 4 == 0 && mapped[off / 4]) continue;
+    if (off % 4 != 0 && off % 7 != 1) continue;  // a sample of the misaligned ones
+    int resp = -1;
+    EXPECT_EQ(b.axi.read(off, &resp), 0u) << "offset " << off;
+    EXPECT_EQ(resp, kSlverr) << "read of offset " << off;
+    EXPECT_EQ(b.axi.write(off, 0xFFFFFFFF), kSlverr) << "write to offset " << off;
+    ++unmapped;
+  }
+  EXPECT_GT(unmapped, 30);
+  // Nothing changed, and nothing started.
+  EXPECT_EQ(b.axi.read(kStride), 0xCAFEF00Du);
+  for (uint32_t off : {kBaseLy, kCtrl, kSize, kDisp, kIrqEnable}) EXPECT_EQ(b.axi.read(off), 0u) << off;
+  EXPECT_EQ(b.starts, 0);
+  EXPECT_FALSE(b.t.irq_o);
+}
+
+TEST_P(Regs, StartPulsesOnceWithTheModeOfTheSameWrite) {
+  Bench b(4, GetParam());
+  for (uint32_t mode : {5u, 2u, 0u, 7u}) {
+    const int before = b.starts;
+    ASSERT_EQ(b.axi.write(kCtrl, (mode << kCtrlModeLsb) | 1u), kOkay);
+    b.axi.idle(3);
+    EXPECT_EQ(b.starts, before + 1) << "one start cycle per write of START";
+    EXPECT_EQ(uint32_t(b.mode_at_start), mode) << "the start sees the mode written with it";
+    EXPECT_EQ(b.axi.read(kCtrl), mode << kCtrlModeLsb) << "START reads 0";
+  }
+  // START with its byte strobe off: no start, the mode byte still written.
+  const int before = b.starts;
+  ASSERT_EQ(b.axi.write(kCtrl, (3u << kCtrlModeLsb) | 1u, 0x2), kOkay);
+  b.axi.idle(3);
+  EXPECT_EQ(b.starts, before);
+  EXPECT_EQ(b.axi.read(kCtrl), 3u << kCtrlModeLsb);
+}
+
+TEST_P(Regs, StickyDoneAndErrorClearedByWritingOneAndTheInterrupt) {
+  Bench b(5, GetParam());
+  auto& t = b.t;
+  const uint32_t done = 1u << kStatusDoneLsb, error = 1u << kStatusErrorLsb;
+  // A frame: busy, then done rises (a level until the next start).
+  t.busy_i = 1;
+  b.axi.idle(3);
+  EXPECT_EQ(b.axi.read(kStatus) & 1u, 1u) << "BUSY";
+  t.busy_i = 0;
+  t.done_i = 1;
+  b.axi.idle(2);
+  EXPECT_EQ(b.axi.read(kStatus), done);
+  EXPECT_FALSE(t.irq_o) << "interrupt not enabled";
+  ASSERT_EQ(b.axi.write(kIrqEnable, 1u << kIrqDoneLsb), kOkay);
+  b.axi.idle(1);
+  EXPECT_TRUE(t.irq_o);
+  EXPECT_EQ(b.axi.read(kIrqStatus), 1u << kIrqDoneLsb);
+  // Writing 0, or 1 without the byte strobe, clears nothing.
+  ASSERT_EQ(b.axi.write(kStatus, 0), kOkay);
+  ASSERT_EQ(b.axi.write(kStatus, done, 0xE), kOkay);
+  EXPECT_EQ(b.axi.read(kStatus), done);
+  ASSERT_EQ(b.axi.write(kStatus, done), kOkay);
+  b.axi.idle(1);
+  EXPECT_EQ(b.axi.read(kStatus), 0u) << "W1C";
+  EXPECT_FALSE(t.irq_o);
+  // The done level staying high does not set the bit again: only a rising edge does.
+  b.axi.idle(5);
+  EXPECT_EQ(b.axi.read(kStatus), 0u);
+  // A rejected start: done and error rise together, with a code.
+  t.done_i = 0;
+  b.axi.idle(2);
+  t.done_i = 1;
+  t.error_i = 1;
+  t.error_code_i = 9;
+  b.axi.idle(2);
+  EXPECT_EQ(b.axi.read(kStatus), done | error | (9u << kStatusCodeLsb));
+  EXPECT_TRUE(t.irq_o);
+  ASSERT_EQ(b.axi.write(kIrqEnable, 1u << kIrqErrorLsb), kOkay);
+  ASSERT_EQ(b.axi.write(kStatus, error), kOkay);
+  b.axi.idle(1);
+  EXPECT_FALSE(t.irq_o) << "done pending but not enabled, error cleared";
+  EXPECT_EQ(b.axi.read(kIrqStatus), 0u);
+  EXPECT_EQ(b.axi.read(kStatus), done | (9u << kStatusCodeLsb));
+}
+
+TEST_P(Regs, DisparitiesAboveDmaxReachTheEngineAsZero) {
+  Bench b(6, GetParam());
+  ASSERT_EQ(b.axi.write(kDisp, uint32_t(kDmax)), kOkay);
+  EXPECT_EQ(int(b.t.cfg_disp_o), kDmax);
+  ASSERT_EQ(b.axi.write(kDisp, uint32_t(kDmax) + 1), kOkay);
+  EXPECT_EQ(int(b.t.cfg_disp_o), 0) << "the engine then rejects the start with code 3";
+  EXPECT_EQ(b.axi.read(kDisp), uint32_t(kDmax) + 1) << "the register keeps what was written";
+  ASSERT_EQ(b.axi.write(kDisp, 255), kOkay);
+  EXPECT_EQ(int(b.t.cfg_disp_o), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(BackPressure, Regs, ::testing::Values(0.0, 0.5, 0.85),
+                         [](const auto& info) { return "stall" + std::to_string(int(info.param * 100)); });
+
+}  // namespace
+}  // namespace mcadsw
