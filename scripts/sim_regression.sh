@@ -107,7 +107,8 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
   # first prep_done (times in ps, fstminer lists first occurrences), a tenth
   # more on each side, marker at prep_done. gtkwave shows 2^-zoom time units in
   # 200 pixels (calczoom()): zoom = -log2(span * 200 / 1000) for a 1000-pixel wave pane.
-  first() { fstminer -d "$out/$only.fst" -m 1 2>/dev/null | awk -v s="TOP.mcadsw_top.$1" '!f && $2 == s {sub(/^#/, "", $1); print $1; f = 1}'; }
+  eng=mcadsw_axi_top.u_engine   # the engine inside the model's top (rtl/mcadsw_axi_top.sv)
+  first() { fstminer -d "$out/$only.fst" -m 1 2>/dev/null | awk -v s="TOP.$eng.$1" '!f && $2 == s {sub(/^#/, "", $1); print $1; f = 1}'; }
   t0=$(first prep_start); t1=$(first prep_done)
   window=""
   if [ -n "$t0" ] && [ -n "$t1" ]; then
@@ -123,15 +124,16 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
     echo "[dumpfile] \"$out/$only.fst\""
     echo "[size] 1600 900"
     [ -n "$window" ] && echo "$window"
-    for grp in "Top:mcadsw_top:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i" \
-               "Scheduler:mcadsw_top.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
-               "Memory controller:mcadsw_top.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \
-               "Census left:mcadsw_top.u_census_l:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
-               "Census right:mcadsw_top.u_census_r:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
-               "Weight generator:mcadsw_top.u_weight_gen:state_q pix_valid_i pix_ready_o done_o r_q occ_q row_ready_o row_take_i" \
-               "Cost aggregator:mcadsw_top.u_cost_agg:busy_q row_q d_q grp_q h2_valid_q disp_valid_o disp_grp_o" \
-               "Depth FIFO:mcadsw_top.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o" \
-               "Post stage (LR):mcadsw_top.u_post:st_q y_q bx_q cx_q qc_q mem_req_o mem_gnt_i mem_we_o mem_addr_o"; do
+    for grp in "Registers (AXI4-Lite):mcadsw_axi_top.u_regs:s_awvalid_i s_awready_o s_wvalid_i s_wready_o s_bvalid_o s_bready_i s_arvalid_i s_rvalid_o start_o irq_o" \
+               "Top:$eng:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i" \
+               "Scheduler:$eng.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
+               "Memory controller:$eng.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \
+               "Census left:$eng.u_census_l:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
+               "Census right:$eng.u_census_r:state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o" \
+               "Weight generator:$eng.u_weight_gen:state_q pix_valid_i pix_ready_o done_o r_q occ_q row_ready_o row_take_i" \
+               "Cost aggregator:$eng.u_cost_agg:busy_q row_q d_q grp_q h2_valid_q disp_valid_o disp_grp_o" \
+               "Depth FIFO:$eng.u_depth_fifo:count_q ready_q wr_req_o wr_gnt_i wr_addr_o wr_be_o" \
+               "Post stage (LR):$eng.u_post:st_q y_q bx_q cx_q qc_q mem_req_o mem_gnt_i mem_we_o mem_addr_o"; do
       IFS=: read -r title scope sigs <<<"$grp"
       echo "@800200"; echo "-$title"; echo "@22"   # values in hex
       for s in $sigs; do

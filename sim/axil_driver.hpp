@@ -9,9 +9,10 @@
 // payload until READY, AW and W raised independently after random delays (either
 // may come first), one transaction at a time.
 //
-// The bench supplies `step`: one clock cycle of everything else (the engine and
-// its memory, or nothing), called between the falling and the rising edge of
-// the model's clock, after the driver sampled the outputs.
+// The bench supplies `cycle`: one clock cycle of the model and everything around
+// it (its memory, the waves), which calls `at_sample` once the outputs of the
+// cycle have settled, before the rising edge. The driver sets its inputs before
+// the cycle and samples handshakes in `at_sample`.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +29,9 @@ class AxilDriver {
  public:
   // `stall` in [0, 1): the probability that a VALID or READY the driver controls is
   // held back in a cycle.
-  AxilDriver(V& t, std::function<void()> step, uint32_t seed, double stall)
-      : t_(t), step_(std::move(step)), rng_(seed), stall_(stall) {
+  using Cycle = std::function<void(const std::function<void()>& at_sample)>;
+  AxilDriver(V& t, Cycle cycle, uint32_t seed, double stall)
+      : t_(t), cycle_(std::move(cycle)), rng_(seed), stall_(stall) {
     t_.s_awvalid_i = 0;
     t_.s_wvalid_i = 0;
     t_.s_bready_i = 0;
@@ -54,14 +56,16 @@ class AxilDriver {
         t_.s_wstrb_i = strb;
       }
       if (aw_done && w_done) t_.s_bready_i = coin() ? 0 : 1;
-      fall();
-      const bool aw_hs = t_.s_awvalid_i && t_.s_awready_o;
-      const bool w_hs = t_.s_wvalid_i && t_.s_wready_o;
-      const bool b_hs = t_.s_bvalid_o && t_.s_bready_i;
-      const int bresp = t_.s_bresp_o;
-      if (aw_hs) ++aw_accepted_;
-      if (w_hs) ++w_accepted_;
-      rise();
+      bool aw_hs = false, w_hs = false, b_hs = false;
+      int bresp = 0;
+      tick([&] {
+        aw_hs = t_.s_awvalid_i && t_.s_awready_o;
+        w_hs = t_.s_wvalid_i && t_.s_wready_o;
+        b_hs = t_.s_bvalid_o && t_.s_bready_i;
+        bresp = t_.s_bresp_o;
+        aw_accepted_ += aw_hs;
+        w_accepted_ += w_hs;
+      });
       if (aw_hs) {
         aw_done = true;
         t_.s_awvalid_i = 0;
@@ -88,13 +92,16 @@ class AxilDriver {
         t_.s_araddr_i = addr;
       }
       if (ar_done) t_.s_rready_i = coin() ? 0 : 1;
-      fall();
-      const bool ar_hs = t_.s_arvalid_i && t_.s_arready_o;
-      const bool r_hs = t_.s_rvalid_o && t_.s_rready_i;
-      const uint32_t data = t_.s_rdata_o;
-      const int rresp = t_.s_rresp_o;
-      if (ar_hs) ++ar_accepted_;
-      rise();
+      bool ar_hs = false, r_hs = false;
+      uint32_t data = 0;
+      int rresp = 0;
+      tick([&] {
+        ar_hs = t_.s_arvalid_i && t_.s_arready_o;
+        r_hs = t_.s_rvalid_o && t_.s_rready_i;
+        data = t_.s_rdata_o;
+        rresp = t_.s_rresp_o;
+        ar_accepted_ += ar_hs;
+      });
       if (ar_hs) {
         ar_done = true;
         t_.s_arvalid_i = 0;
@@ -109,10 +116,7 @@ class AxilDriver {
 
   // Cycles without a transaction (the monitor still runs).
   void idle(long cycles) {
-    for (long i = 0; i < cycles; ++i) {
-      fall();
-      rise();
-    }
+    for (long i = 0; i < cycles; ++i) tick([] {});
   }
 
   long cycles() const { return cycles_; }
@@ -135,16 +139,14 @@ class AxilDriver {
     throw std::runtime_error("AXI4-Lite: " + what + " (cycle " + std::to_string(cycles_) + ")");
   }
 
-  // Falling edge and settle; the monitor samples the slave's outputs.
-  void fall() {
-    t_.clk_i = 0;
-    t_.eval();
-    monitor();
-  }
-  void rise() {
-    step_();
-    t_.clk_i = 1;
-    t_.eval();
+  // One cycle; at its sample point the monitor checks the slave's outputs (before
+  // it records this cycle's handshakes), then `sample` runs.
+  template <typename F>
+  void tick(F sample) {
+    cycle_([&] {
+      monitor();
+      sample();
+    });
     ++cycles_;
   }
 
@@ -177,7 +179,7 @@ class AxilDriver {
   }
 
   V& t_;
-  std::function<void()> step_;
+  Cycle cycle_;
   std::mt19937 rng_;
   double stall_;
   long cycles_ = 0;

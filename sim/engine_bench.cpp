@@ -9,11 +9,21 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
+// The model: mcadsw_axi_top, programmed through its AXI4-Lite registers as a
+// driver would (issue 19), or, for the gate-level netlist of mcadsw_top
+// (MCADSW_DUT_AXIL 0, scripts/gls.sh), the engine's configuration ports.
+#if MCADSW_DUT_AXIL
+#include "Vmcadsw_axi_top.h"
+#include "axil_driver.hpp"
+#include "mcadsw/regs.hpp"
+#else
 #include "Vmcadsw_top.h"
+#endif
 #if VM_COVERAGE
 #include <unistd.h>
 #include <verilated_cov.h>
@@ -25,6 +35,12 @@
 
 namespace mcadsw::sim {
 namespace {
+
+#if MCADSW_DUT_AXIL
+using Dut = Vmcadsw_axi_top;
+#else
+using Dut = Vmcadsw_top;
+#endif
 
 // Memory layout of a frame (docs/memory_map.md): six input planes (left Y, U,
 // V, right Y, U, V) of stride bytes per row (default: the width rounded up to
@@ -105,7 +121,13 @@ class Engine {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
     // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
-    top_ = std::make_unique<Vmcadsw_top>(ctx_.get());
+    top_ = std::make_unique<Dut>(ctx_.get());
+#if MCADSW_DUT_AXIL
+    // READY and VALID of the register bus held back 30 % of the cycles.
+    axi_ = std::make_unique<AxilDriver<Dut>>(
+        *top_, [this](const std::function<void()>& at_sample) { cycle(at_sample); },
+        opt.latency.seed + 77, 0.3);
+#endif
     if (!opt.waves.empty()) {
 #if VM_TRACE_FST
       trace_ = std::make_unique<VerilatedFstC>();
@@ -117,7 +139,9 @@ class Engine {
     }
     top_->clk_i = 0;
     top_->rst_ni = 0;
+#if !MCADSW_DUT_AXIL
     top_->start_i = 0;
+#endif
     top_->mem_gnt_i = 0;
     top_->mem_rvalid_i = 0;
     top_->eval();
@@ -126,7 +150,9 @@ class Engine {
   // Asynchronous reset for 4 cycles, with the memory system.
   void reset() {
     top_->rst_ni = 0;
+#if !MCADSW_DUT_AXIL
     top_->start_i = 0;
+#endif
     top_->eval();
     mem_.reset();
     for (int i = 0; i < 4; ++i) cycle();
@@ -148,14 +174,19 @@ class Engine {
 #endif
   }
 
-  Vmcadsw_top& top() { return *top_; }
+  Dut& top() { return *top_; }
+#if MCADSW_DUT_AXIL
+  AxilDriver<Dut>& axi() { return *axi_; }
+#endif
 
-  void cycle() {
+  // One clock cycle; `at_sample` runs once the cycle's outputs have settled.
+  void cycle(const std::function<void()>& at_sample = {}) {
     auto& t = *top_;
     mem_.drive_response(t);
     t.clk_i = 0;
     t.eval();
     mem_.serve(t);
+    if (at_sample) at_sample();
 #if VM_TRACE_FST
     // Inputs change at the start of the low phase; the rising edge is half a
     // period later.
@@ -174,14 +205,70 @@ class Engine {
   MemoryModel& mem_;
   const EngineOptions& opt_;
   std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
-  std::unique_ptr<Vmcadsw_top> top_;
+  std::unique_ptr<Dut> top_;
+#if MCADSW_DUT_AXIL
+  std::unique_ptr<AxilDriver<Dut>> axi_;
+#endif
 #if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> trace_;
 #endif
   uint64_t time_ = 0;
 };
 
-void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
+#if MCADSW_DUT_AXIL
+// The configuration as register writes (docs/registers.md); CTRL gets the mode,
+// START is written by start(). Each write must answer OKAY.
+void program(Engine& e, const RawConfig& c, const WeightTable& table) {
+  auto& axi = e.axi();
+  const auto wr = [&axi](uint32_t off, uint32_t v) {
+    if (axi.write(off, v) != 0)
+      throw std::runtime_error("register write to offset " + std::to_string(off) + " not OKAY");
+  };
+  wr(regs::kBaseLy, c.base_ly);
+  wr(regs::kBaseLu, c.base_lu);
+  wr(regs::kBaseLv, c.base_lv);
+  wr(regs::kBaseRy, c.base_ry);
+  wr(regs::kBaseRu, c.base_ru);
+  wr(regs::kBaseRv, c.base_rv);
+  wr(regs::kBaseOut, c.base_out);
+  wr(regs::kBaseDl, c.base_dl);
+  wr(regs::kBaseDr, c.base_dr);
+  wr(regs::kBaseMask, c.base_mask);
+  wr(regs::kStride, c.stride);
+  wr(regs::kOutStride, c.out_stride);
+  wr(regs::kSize, (uint32_t(c.width) & 0xfff) << regs::kSizeWidthLsb |
+                      (uint32_t(c.height) & 0xfff) << regs::kSizeHeightLsb);
+  wr(regs::kDisp, uint32_t(c.disparities) & 0xff);
+  wr(regs::kLrT, uint32_t(c.lr_t) & 0xff);
+  const WeightThresholds thr = weight_thresholds(table);
+  for (int i = 0; i < kWeightThresholds; ++i) wr(regs::kThr0 + 4 * uint32_t(i), thr[i]);
+  wr(regs::kCtrl, (uint32_t(c.mode) & 7) << regs::kCtrlModeLsb);
+  wr(regs::kIrqEnable, 1u << regs::kIrqDoneLsb | 1u << regs::kIrqErrorLsb);
+}
+
+// Clears the sticky status bits and writes CTRL.START with the mode programmed.
+void start(Engine& e) {
+  auto& axi = e.axi();
+  axi.write(regs::kStatus, 1u << regs::kStatusDoneLsb | 1u << regs::kStatusErrorLsb);
+  axi.write(regs::kCtrl, (axi.read(regs::kCtrl) & ~1u) | 1u << regs::kCtrlStartLsb);
+}
+
+bool frame_over(Engine& e) { return e.top().irq_o; }
+
+// Status and counters, read as a driver reads them.
+void read_status(Engine& e, EngineResult& r) {
+  auto& axi = e.axi();
+  const uint32_t st = axi.read(regs::kStatus);
+  r.error = st >> regs::kStatusErrorLsb & 1;
+  r.error_code = int(st >> regs::kStatusCodeLsb & 15);
+  r.cycles = long(axi.read(regs::kCycles));
+  r.words_read = long(axi.read(regs::kWordsRead));
+  r.words_written = long(axi.read(regs::kWordsWritten));
+  r.stall_cycles = long(axi.read(regs::kStalls));
+}
+#else
+void program(Engine& e, const RawConfig& c, const WeightTable& table) {
+  auto& t = e.top();
   t.cfg_base_ly_i = c.base_ly;
   t.cfg_base_lu_i = c.base_lu;
   t.cfg_base_lv_i = c.base_lv;
@@ -204,40 +291,53 @@ void program(Vmcadsw_top& t, const RawConfig& c, const WeightTable& table) {
     set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
 }
 
-// Runs from start until done_o or the cycle limit; `again` > 0 programs
-// `other` and pulses start_i again that many cycles after the start (the
-// configuration ports keep `other` until the frame ends).
-struct StartAgain {
-  long at = 0;
-  RawConfig other{};
-  const WeightTable* table = nullptr;
-};
-void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const StartAgain& again = {}) {
-  auto& t = e.top();
-  t.start_i = 1;
+void start(Engine& e) {
+  e.top().start_i = 1;
   e.cycle();
-  t.start_i = 0;
-  const auto t0 = std::chrono::steady_clock::now();
-  long n = 0;
-  while (!t.done_o) {
-    if (++n > limit) {
-      r.timed_out = true;
-      break;
-    }
-    if (n == again.at) program(t, again.other, *again.table);
-    t.start_i = n == again.at;
-    e.cycle();
-    t.start_i = 0;
-    if (progress && n % 2000000 == 0)
-      std::fprintf(stderr, "  ... %ld Mcycles simulated\n", n / 1000000);
-  }
-  r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  e.top().start_i = 0;
+}
+
+bool frame_over(Engine& e) { return e.top().done_o; }
+
+void read_status(Engine& e, EngineResult& r) {
+  auto& t = e.top();
   r.cycles = long(t.cnt_cycles_o);
   r.words_read = long(t.cnt_words_read_o);
   r.words_written = long(t.cnt_words_written_o);
   r.stall_cycles = long(t.cnt_stall_o);
   r.error = t.error_o;
   r.error_code = int(t.error_code_o);
+}
+#endif
+
+// Runs from start until the frame is over (done, or the interrupt) or the cycle
+// limit; `again` > 0 programs `other` and starts again that many cycles after
+// the start (the configuration keeps `other` until the frame ends).
+struct StartAgain {
+  long at = 0;
+  RawConfig other{};
+  const WeightTable* table = nullptr;
+};
+void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const StartAgain& again = {}) {
+  start(e);
+  const auto t0 = std::chrono::steady_clock::now();
+  long n = 0;
+  while (!frame_over(e)) {
+    if (++n > limit) {
+      r.timed_out = true;
+      break;
+    }
+    if (n == again.at) {
+      program(e, again.other, *again.table);
+      start(e);
+    } else {
+      e.cycle();
+    }
+    if (progress && n % 2000000 == 0)
+      std::fprintf(stderr, "  ... %ld Mcycles simulated\n", n / 1000000);
+  }
+  r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  read_status(e, r);
 }
 
 // Generous: four times the memory-bound estimate of 8000 cycles per block.
@@ -428,7 +528,7 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
   if (!opt.dump_dir.empty()) dump_before(opt.dump_dir, mem, raw, cfg.table);
   {
     Engine e(mem, opt);
-    program(e.top(), raw, cfg.table);
+    program(e, raw, cfg.table);
     run_frame(e, r, frame_limit(W, H, opt), opt.progress);
   }
   if (!opt.dump_dir.empty()) dump_after(opt.dump_dir, mem, lay, r);
@@ -459,7 +559,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
     r.disparities = f.cfg.disparities;
     // Only this frame's planes may be touched while it runs.
     mem.set_regions(lay.regions());
-    program(e.top(), lay.raw(f.cfg.disparities), f.cfg.table);
+    program(e, lay.raw(f.cfg.disparities), f.cfg.table);
     if (k == 0 && fault.kind == Fault::kResetMidFrame) {
       EngineResult aborted;
       run_frame(e, aborted, fault.at_cycle, false);
@@ -467,7 +567,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
       e.reset();
       // The aborted frame's writes are not this frame's: checks start again.
       mem.set_regions(lay.regions());
-      program(e.top(), lay.raw(f.cfg.disparities), f.cfg.table);
+      program(e, lay.raw(f.cfg.disparities), f.cfg.table);
     }
     StartAgain again;
     if (fault.kind == Fault::kStartWhileBusy) again = {fault.at_cycle, fault.other, &f.cfg.table};
@@ -483,7 +583,7 @@ EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles
   EngineResult r;
   {
     Engine e(mem, opt);
-    program(e.top(), raw, make_weight_table(kDefaultGamma));
+    program(e, raw, make_weight_table(kDefaultGamma));
     run_frame(e, r, cycles, false);
   }
   r.bus = mem.violations();

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "Vmcadsw_top.h"
+#include "Vmcadsw_axi_top.h"
 #include "engine_bench.hpp"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
@@ -396,7 +396,7 @@ TEST(EngineDeathTest, AssertionStopsTheSimulation) {
   const auto spurious_read_data = [] {
     dup2(2, 1);  // Verilator reports on stdout; the death test reads stderr
     VerilatedContext ctx;
-    Vmcadsw_top top{&ctx};
+    Vmcadsw_axi_top top{&ctx};
     const auto cycle = [&] {
       top.clk_i = 0;
       top.eval();

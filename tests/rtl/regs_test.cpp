@@ -6,6 +6,7 @@
 // STATUS bits with write-1-to-clear, the interrupt and its enables, D above DMAX.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <random>
@@ -41,7 +42,8 @@ std::map<uint32_t, uint32_t> writable_bits() {
 
 class Bench {
  public:
-  Bench(uint32_t seed, double stall) : axi(t, [this] { step(); }, seed, stall) {
+  Bench(uint32_t seed, double stall)
+      : axi(t, [this](const std::function<void()>& at_sample) { cycle(at_sample); }, seed, stall) {
     t.rst_ni = 0;
     t.clk_i = 0;
     t.busy_i = 0;
@@ -92,12 +94,16 @@ class Bench {
   int mode_at_start = -1;     // cfg_mode_o in the last of them
 
  private:
-  // Between the falling and the rising edge: the outputs are settled.
-  void step() {
+  void cycle(const std::function<void()>& at_sample) {
+    t.clk_i = 0;
+    t.eval();
+    at_sample();
     if (t.start_o) {
       ++starts;
       mode_at_start = t.cfg_mode_o;
     }
+    t.clk_i = 1;
+    t.eval();
   }
 };
 

@@ -112,9 +112,11 @@ TEST_F(SimCli, WavesUseTheRealClockPeriod) {
   }
   EXPECT_EQ(timescale, "1ps");
   EXPECT_EQ(odd, 0) << "time stamps off the half periods of " << period << " ps";
-  // Reset (4 cycles) and start come before the counted cycles.
+  // Reset (4 cycles), the register writes that program and start the engine and
+  // the status reads after the frame (AXI4-Lite with random stalls: 26 writes
+  // and 6 reads, a few hundred cycles) come on top of the counted cycles.
   EXPECT_GE(last, cycles * period);
-  EXPECT_LE(last, (cycles + 10) * period);
+  EXPECT_LE(last, (cycles + 600) * period);
 }
 
 TEST_F(SimCli, MissingFile) {
