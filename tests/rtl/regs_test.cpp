@@ -90,6 +90,7 @@ class Bench {
 
   Vmcadsw_regs t;
   sim::AxilDriver<Vmcadsw_regs> axi;
+  std::function<void()> on_sample;  // a test's hook, at the sample point of every cycle
   int starts = 0;             // cycles with start_o
   int mode_at_start = -1;     // cfg_mode_o in the last of them
 
@@ -98,6 +99,7 @@ class Bench {
     t.clk_i = 0;
     t.eval();
     at_sample();
+    if (on_sample) on_sample();
     if (t.start_o) {
       ++starts;
       mode_at_start = t.cfg_mode_o;
@@ -251,6 +253,34 @@ TEST_P(Regs, StickyDoneAndErrorClearedByWritingOneAndTheInterrupt) {
   EXPECT_FALSE(t.irq_o) << "done pending but not enabled, error cleared";
   EXPECT_EQ(b.axi.read(kIrqStatus), 0u);
   EXPECT_EQ(b.axi.read(kStatus), done | (9u << kStatusCodeLsb));
+}
+
+// The engine's done rises in the very cycle a write of 1 to STATUS.DONE takes
+// effect: the event wins, the bit stays set (a frame's end is never lost).
+TEST(RegsRace, DoneRisingInTheCycleOfItsClearWins) {
+  Bench b(7, 0.0);  // no stalls: AW and W in the same cycle, the write one cycle later
+  auto& t = b.t;
+  t.done_i = 1;
+  b.axi.idle(2);
+  ASSERT_EQ(b.axi.read(kStatus), 1u << kStatusDoneLsb);
+  t.done_i = 0;
+  b.axi.idle(2);
+  // Arm: the cycle after AW and W to STATUS are accepted, raise done.
+  int armed = 0;
+  b.on_sample = [&] {
+    if (armed == 1) {
+      t.done_i = 1;  // seen at this cycle's rising edge, with the write
+      armed = 2;
+    }
+    if (armed == 0 && t.s_awvalid_i && t.s_awready_o && t.s_awaddr_i == kStatus) armed = 1;
+  };
+  ASSERT_EQ(b.axi.write(kStatus, 1u << kStatusDoneLsb), kOkay);
+  b.on_sample = nullptr;
+  ASSERT_EQ(armed, 2);
+  EXPECT_EQ(b.axi.read(kStatus), 1u << kStatusDoneLsb) << "the rising done must win over the clear";
+  // Without the race the same write clears.
+  ASSERT_EQ(b.axi.write(kStatus, 1u << kStatusDoneLsb), kOkay);
+  EXPECT_EQ(b.axi.read(kStatus), 0u);
 }
 
 TEST_P(Regs, DisparitiesAboveDmaxReachTheEngineAsZero) {
