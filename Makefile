@@ -15,6 +15,8 @@
 #                another configuration in build/synth_dmax<n>[_par<p>]; FLAT=1 the
 #                whole engine flattened in one Yosys run, 40 min and 13.5 GB)
 #   make synth-check  make synth, then gates, slack and memory against constraints/budget.json (CI)
+#   make fpga    FPGA estimate: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_axi_top,
+#                whether it fits an XC7Z020 and an XC7A100T (build/fpga/summary.json)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
 #                (FRAME=1 also a whole Tsukuba frame against the reference)
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
@@ -29,7 +31,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -92,6 +94,10 @@ synth: bootstrap
 # make synth-check: make synth (DMAX=64), then constraints/budget.json (scripts/synth_check.sh)
 synth-check: bootstrap
 	@scripts/synth_check.sh
+
+# make fpga [DMAX=<n>] [PAR=<p>]: Yosys synth_xilinx estimate, build/fpga/summary.json (scripts/fpga.sh)
+fpga: bootstrap
+	@DMAX=$(DMAX) PAR=$(PAR) scripts/fpga.sh
 
 # make gls [DMAX=64]: the netlist in the Verilator harness (scripts/gls.sh)
 gls: bootstrap
