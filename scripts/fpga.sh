@@ -17,8 +17,13 @@ die() { echo "fpga: $*" >&2; exit 2; }
 dmax=${DMAX:-64}
 par=${PAR:-1}
 top=${TOP:-mcadsw_axi_top}
-[[ "$dmax" =~ ^[0-9]{1,3}$ ]] && [ "$dmax" -ge 1 ] && [ "$dmax" -le 128 ] || die "DMAX='$dmax' is not 1..128"
-[[ "$par" =~ ^[124]$ ]] || die "PAR='$par' is not 1, 2 or 4"
+# No result of an earlier run may pass for this one's: with OUT given, its summary
+# goes before anything is checked.
+[ -z "${OUT:-}" ] || rm -f "$OUT/summary.json" "$OUT/report.md"
+[[ "$dmax" =~ ^[0-9]{1,3}$ ]] && [ "$((10#$dmax))" -ge 1 ] && [ "$((10#$dmax))" -le 128 ] ||
+  die "DMAX='$dmax' is not supported: an integer from 1 to 128"
+dmax=$((10#$dmax))
+[[ "$par" =~ ^[124]$ ]] || die "PAR='$par' is not supported: 1, 2 or 4"
 [ $((dmax % par)) -eq 0 ] || die "DMAX=$dmax is not a multiple of PAR=$par"
 if [ -n "${OUT:-}" ]; then out=$OUT
 elif [ "$dmax" = 64 ] && [ "$par" = 1 ]; then out=$root/build/fpga

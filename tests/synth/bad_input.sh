@@ -12,20 +12,23 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fails=0
 
-# expect NAME RC_WANTED REGEX -- ENV... : run synth.sh with a stale summary.json in
-# its OUT and check exit code, message, and that the stale files are gone.
+# expect NAME RC_WANTED REGEX -- ENV... : run $synth with stale result files
+# ($stale_files) in its OUT and check exit code, message, and that they are gone.
+stale_files="summary.json mcadsw_top_osu018.v"
 expect() {
   local name=$1 want_rc=$2 regex=$3; shift 4
   local out=$work/out_$name
   mkdir -p "$out"
-  echo '{"nand2_eq": 1, "stale": true}' > "$out/summary.json"
-  echo "stale" > "$out/mcadsw_top_osu018.v"
+  local f
+  for f in $stale_files; do echo '{"stale": true}' > "$out/$f"; done
   local t0=$SECONDS rc=0
   env OUT="$out" "$@" "$synth" > "$work/$name.out" 2> "$work/$name.err" || rc=$?
   local ok=1
   if [ "$rc" != "$want_rc" ]; then echo "  exit $rc, wanted $want_rc"; ok=0; fi
   if ! grep -Eq "$regex" "$work/$name.err"; then echo "  stderr lacks /$regex/"; ok=0; fi
-  if [ -e "$out/summary.json" ] || [ -e "$out/mcadsw_top_osu018.v" ]; then echo "  stale summary.json or netlist left in OUT"; ok=0; fi
+  for f in $stale_files; do
+    if [ -e "$out/$f" ]; then echo "  stale $f left in OUT"; ok=0; fi
+  done
   if [ "$ok" = 1 ]; then
     echo "ok   $name (exit $rc, $((SECONDS - t0)) s): $(grep -E "$regex" "$work/$name.err" | head -1)"
   else
@@ -43,6 +46,17 @@ expect flat_bad   2 "FLAT='yes' is not 0 or 1" -- FLAT=yes
 expect par_three  2 "PAR='3' is not supported: 1, 2 or 4" -- PAR=3
 expect par_text   2 "PAR='x' is not supported" -- PAR=x
 expect par_dmax   2 "DMAX=18 is not a multiple of PAR=4" -- DMAX=18 PAR=4
+
+# make fpga (scripts/fpga.sh): the same checks, before any synthesis.
+synth_saved=$synth
+synth=$root/scripts/fpga.sh
+stale_files="summary.json report.md"
+expect fpga_dmax_zero 2 "DMAX='0' is not supported: an integer from 1 to 128" -- DMAX=0
+expect fpga_dmax_text 2 "DMAX='x1' is not supported" -- DMAX=x1
+expect fpga_par_three 2 "PAR='3' is not supported: 1, 2 or 4" -- PAR=3
+expect fpga_par_dmax  2 "DMAX=10 is not a multiple of PAR=4" -- DMAX=10 PAR=4
+synth=$synth_saved
+stale_files="summary.json mcadsw_top_osu018.v"
 
 # A missing tool: a PATH with everything the script needs except yosys.
 bin=$work/bin; mkdir -p "$bin"
