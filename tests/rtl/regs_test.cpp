@@ -34,7 +34,7 @@ std::map<uint32_t, uint32_t> writable_bits() {
   m[kSize] = (mask(kSizeBits) << kSizeWidthLsb) | (mask(kSizeBits) << kSizeHeightLsb);
   m[kDisp] = mask(kDispBitsReg);
   m[kLrT] = mask(kLrTBits);
-  for (int i = 0; i < 7; ++i) m[kThr0 + 4 * i] = mask(kThrBits);
+  for (int i = 0; i < kWeightThresholds; ++i) m[kThr0 + 4 * i] = mask(kThrBits);
   m[kIrqEnable] = (1u << kIrqDoneLsb) | (1u << kIrqErrorLsb);
   m[kCtrl] = mask(kCtrlModeWidth) << kCtrlModeLsb;
   return m;
@@ -82,7 +82,7 @@ class Bench {
       case kCtrl: return uint32_t(t.cfg_mode_o) << kCtrlModeLsb;
       case kIrqEnable: return ~0u;      // no port: not compared
       default:
-        if (off >= kThr0 && off < kThr0 + 28)
+        if (off >= kThr0 && off < kThr0 + 4 * kWeightThresholds)
           return uint32_t(sim::get_bits(t.cfg_thr_o, int(off - kThr0) / 4 * kThrBits, kThrBits));
         return ~0u;
     }
@@ -116,8 +116,9 @@ TEST_P(Regs, IdentificationAndResetValues) {
   int resp = -1;
   EXPECT_EQ(b.axi.read(kId, &resp), kIdValue);
   EXPECT_EQ(resp, kOkay);
-  EXPECT_EQ(b.axi.read(kVersion), (kVersionMajor << 8) | kVersionMinor);
-  EXPECT_EQ(b.axi.read(kHwConfig), uint32_t(kDmax) | (uint32_t(kPar) << 8));
+  EXPECT_EQ(b.axi.read(kVersion), kVersionMajor << kVersionMajorLsb | kVersionMinor << kVersionMinorLsb);
+  EXPECT_EQ(b.axi.read(kHwConfig),
+            uint32_t(kDmax) << kHwConfigDmaxLsb | uint32_t(kPar) << kHwConfigParLsb);
   for (const auto& [off, bits] : writable_bits()) EXPECT_EQ(b.axi.read(off), 0u) << "offset " << off;
   EXPECT_EQ(b.axi.read(kStatus), 0u);
   EXPECT_EQ(b.axi.read(kIrqStatus), 0u);

@@ -69,6 +69,8 @@ inline constexpr uint32_t kVersionMajor = 1;
 inline constexpr uint32_t kVersionMinor = 0;
 
 // ---- Fields (lsb, width) ---------------------------------------------------------------
+inline constexpr int kVersionMinorLsb = 0, kVersionMajorLsb = 8;
+inline constexpr int kHwConfigDmaxLsb = 0, kHwConfigParLsb = 8;
 inline constexpr int kCtrlStartLsb = 0;
 inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
 inline constexpr int kStatusBusyLsb = 0;
@@ -120,10 +122,10 @@ inline constexpr Reg kRegs[] = {
 
 inline constexpr Field kFields[] = {
     {"ID", "VALUE", 0, 32, Access::kRO, "0x4D434144"},
-    {"VERSION", "MINOR", 0, 8, Access::kRO, "minor version"},
-    {"VERSION", "MAJOR", 8, 8, Access::kRO, "major version"},
-    {"HWCONFIG", "DMAX", 0, 8, Access::kRO, "largest D of this build"},
-    {"HWCONFIG", "PAR", 8, 4, Access::kRO, "disparities a step of this build"},
+    {"VERSION", "MINOR", kVersionMinorLsb, 8, Access::kRO, "minor version"},
+    {"VERSION", "MAJOR", kVersionMajorLsb, 8, Access::kRO, "major version"},
+    {"HWCONFIG", "DMAX", kHwConfigDmaxLsb, 8, Access::kRO, "largest D of this build"},
+    {"HWCONFIG", "PAR", kHwConfigParLsb, 4, Access::kRO, "disparities a step of this build"},
     {"CTRL", "START", kCtrlStartLsb, 1, Access::kWO,
      "write 1: start a frame with the registers as they are after this write; ignored while "
      "busy; reads 0"},
