@@ -1,8 +1,13 @@
 // MCADSW engine for an SoC (issue 19): the engine (mcadsw_top) behind the
-// AXI4-Lite register block (mcadsw_regs, docs/registers.md) with its interrupt.
-// The external memory port is still the engine's 32-bit request/grant port
-// (docs/memory_map.md); the AXI4 master that replaces it is the next step of
-// issue 19.
+// AXI4-Lite register block (mcadsw_regs, docs/registers.md) with its interrupt,
+// and its memory port on an AXI4 master (mcadsw_axi_master).
+//
+// A frame ends early, with DONE and ERROR, when a read or write response is
+// SLVERR or DECERR (error code 13 or 14) or CTRL.ABORT is written while busy
+// (code 15): the engine is held in reset (drain_q) while the AXI4 master
+// completes the transactions in flight (the writes already granted go out,
+// read data is dropped), then released; STATUS.BUSY stays high until then.
+// The first cause is reported. The counters restart from 0 with the engine.
 `default_nettype none
 
 module mcadsw_axi_top #(
@@ -31,15 +36,32 @@ module mcadsw_axi_top #(
   output logic [31:0]     s_rdata_o,
   output logic [1:0]      s_rresp_o,
   output logic            irq_o,
-  // External memory (mcadsw_top's port)
-  output logic            mem_req_o,
-  input  logic            mem_gnt_i,
-  output logic            mem_we_o,
-  output logic [3:0]      mem_be_o,
-  output logic [31:0]     mem_addr_o,
-  output logic [31:0]     mem_wdata_o,
-  input  logic            mem_rvalid_i,
-  input  logic [31:0]     mem_rdata_i
+  // AXI4 master: frame memory (one ID, 32-bit data)
+  output logic            m_arvalid_o,
+  input  logic            m_arready_i,
+  output logic [31:0]     m_araddr_o,
+  output logic [7:0]      m_arlen_o,
+  output logic [2:0]      m_arsize_o,
+  output logic [1:0]      m_arburst_o,
+  input  logic            m_rvalid_i,
+  output logic            m_rready_o,
+  input  logic [31:0]     m_rdata_i,
+  input  logic [1:0]      m_rresp_i,
+  input  logic            m_rlast_i,
+  output logic            m_awvalid_o,
+  input  logic            m_awready_i,
+  output logic [31:0]     m_awaddr_o,
+  output logic [7:0]      m_awlen_o,
+  output logic [2:0]      m_awsize_o,
+  output logic [1:0]      m_awburst_o,
+  output logic            m_wvalid_o,
+  input  logic            m_wready_i,
+  output logic [31:0]     m_wdata_o,
+  output logic [3:0]      m_wstrb_o,
+  output logic            m_wlast_o,
+  input  logic            m_bvalid_i,
+  output logic            m_bready_o,
+  input  logic [1:0]      m_bresp_i
 );
 
   localparam int AW   = 32;
@@ -55,8 +77,10 @@ module mcadsw_axi_top #(
   logic [CW-1:0]       width, height;
   logic [NB-1:0]       disp;
   logic [NTHR*DCB-1:0] thr;
-  logic                start, busy, done, error;
+  logic                start, abort, busy, done, error;
   logic [3:0]          error_code;
+  logic                eng_busy, eng_done, eng_error;
+  logic [3:0]          eng_code;
   logic [31:0]         cnt_cycles, cnt_words_read, cnt_words_written, cnt_stall;
 
   mcadsw_regs #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NB(NB), .NTHR(NTHR), .DCB(DCB),
@@ -70,25 +94,72 @@ module mcadsw_axi_top #(
     .cfg_base_out_o (base_out), .cfg_base_dl_o (base_dl), .cfg_base_dr_o (base_dr),
     .cfg_base_mask_o (base_mask), .cfg_stride_o (stride), .cfg_out_stride_o (out_stride),
     .cfg_mode_o (mode), .cfg_lr_t_o (lr_t), .cfg_width_o (width), .cfg_height_o (height),
-    .cfg_disp_o (disp), .cfg_thr_o (thr), .start_o (start),
+    .cfg_disp_o (disp), .cfg_thr_o (thr), .start_o (start), .abort_o (abort),
     .busy_i (busy), .done_i (done), .error_i (error), .error_code_i (error_code),
     .cnt_cycles_i (cnt_cycles), .cnt_words_read_i (cnt_words_read),
     .cnt_words_written_i (cnt_words_written), .cnt_stall_i (cnt_stall)
   );
 
+  // ---- Early end: a response error or an abort ---------------------------------------------
+  logic       drain_q, ended_q, bus_idle, wr_idle, rd_err, wr_err, eng_rst_n;
+  logic [3:0] end_code_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      drain_q    <= 1'b0;
+      ended_q    <= 1'b0;
+      end_code_q <= '0;
+    end else begin
+      if (!drain_q && (rd_err || wr_err || (abort && eng_busy))) begin
+        drain_q    <= 1'b1;
+        end_code_q <= rd_err ? mcadsw_pkg::ERR_READ_RESPONSE :
+                      wr_err ? mcadsw_pkg::ERR_WRITE_RESPONSE : mcadsw_pkg::ERR_ABORTED;
+      end else if (drain_q && bus_idle) begin
+        drain_q <= 1'b0;
+        ended_q <= 1'b1;
+      end
+      if (start && !busy) ended_q <= 1'b0;
+    end
+  end
+  // The engine's reset: the system's, or the drain (a register, so glitch-free).
+  assign eng_rst_n  = rst_ni && !drain_q;
+  assign busy       = eng_busy || drain_q;
+  assign done       = eng_done || ended_q;
+  assign error      = eng_error || ended_q;
+  assign error_code = ended_q ? end_code_q : eng_code;
+
+  logic          mem_req, mem_gnt, mem_we, mem_rvalid;
+  logic [3:0]    mem_be;
+  logic [AW-1:0] mem_addr;
+  logic [31:0]   mem_wdata, mem_rdata;
+
   mcadsw_top #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NB(NB), .NTHR(NTHR), .DCB(DCB)) u_engine (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni (eng_rst_n),
     .cfg_base_ly_i (base_ly), .cfg_base_lu_i (base_lu), .cfg_base_lv_i (base_lv),
     .cfg_base_ry_i (base_ry), .cfg_base_ru_i (base_ru), .cfg_base_rv_i (base_rv),
     .cfg_base_out_i (base_out), .cfg_base_dl_i (base_dl), .cfg_base_dr_i (base_dr),
     .cfg_base_mask_i (base_mask), .cfg_stride_i (stride), .cfg_out_stride_i (out_stride),
     .cfg_mode_i (mode), .cfg_lr_t_i (lr_t), .cfg_width_i (width), .cfg_height_i (height),
     .cfg_disp_i (disp), .cfg_thr_i (thr), .start_i (start),
-    .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
+    .busy_o (eng_busy), .done_o (eng_done), .error_o (eng_error), .error_code_o (eng_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_words_read),
     .cnt_words_written_o (cnt_words_written), .cnt_stall_o (cnt_stall),
-    .mem_req_o, .mem_gnt_i, .mem_we_o, .mem_be_o, .mem_addr_o, .mem_wdata_o, .mem_rvalid_i,
-    .mem_rdata_i
+    .mem_req_o (mem_req), .mem_gnt_i (mem_gnt), .mem_we_o (mem_we), .mem_be_o (mem_be),
+    .mem_addr_o (mem_addr), .mem_wdata_o (mem_wdata), .mem_rvalid_i (mem_rvalid),
+    .mem_rdata_i (mem_rdata), .mem_wr_idle_i (wr_idle)
+  );
+
+  mcadsw_axi_master #(.AW(AW)) u_axi_master (
+    .clk_i, .rst_ni,
+    .mem_req_i (mem_req), .mem_gnt_o (mem_gnt), .mem_we_i (mem_we), .mem_be_i (mem_be),
+    .mem_addr_i (mem_addr), .mem_wdata_i (mem_wdata), .mem_rvalid_o (mem_rvalid),
+    .mem_rdata_o (mem_rdata),
+    .drain_i (drain_q), .wr_idle_o (wr_idle), .idle_o (bus_idle), .rd_err_o (rd_err),
+    .wr_err_o (wr_err),
+    .m_arvalid_o, .m_arready_i, .m_araddr_o, .m_arlen_o, .m_arsize_o, .m_arburst_o,
+    .m_rvalid_i, .m_rready_o, .m_rdata_i, .m_rresp_i, .m_rlast_i,
+    .m_awvalid_o, .m_awready_i, .m_awaddr_o, .m_awlen_o, .m_awsize_o, .m_awburst_o,
+    .m_wvalid_o, .m_wready_i, .m_wdata_o, .m_wstrb_o, .m_wlast_o,
+    .m_bvalid_i, .m_bready_o, .m_bresp_i
   );
 
 endmodule

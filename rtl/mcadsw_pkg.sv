@@ -46,7 +46,7 @@ package mcadsw_pkg;
   localparam int REG_ID             = 'h00;  // RO identification, "MCAD"
   localparam int REG_VERSION        = 'h04;  // RO register map version
   localparam int REG_HWCONFIG       = 'h08;  // RO build parameters
-  localparam int REG_CTRL           = 'h10;  // RW start and output mode
+  localparam int REG_CTRL           = 'h10;  // RW start, abort and output mode
   localparam int REG_STATUS         = 'h14;  // RW busy, sticky done and error (write 1 to clear), error code
   localparam int REG_IRQ_ENABLE     = 'h18;  // RW interrupt enables
   localparam int REG_IRQ_STATUS     = 'h1C;  // RO pending interrupts: STATUS sticky bits and IRQ_ENABLE
@@ -76,6 +76,10 @@ package mcadsw_pkg;
   localparam int REG_WORDS_READ     = 'h84;  // RO memory words read in the last frame
   localparam int REG_WORDS_WRITTEN  = 'h88;  // RO memory words written in the last frame
   localparam int REG_STALLS         = 'h8C;  // RO cycles with a memory request not granted
+  // Error codes of a frame ended early (STATUS.ERROR_CODE)
+  localparam logic [3:0] ERR_READ_RESPONSE = 4'd13;
+  localparam logic [3:0] ERR_WRITE_RESPONSE = 4'd14;
+  localparam logic [3:0] ERR_ABORTED = 4'd15;
   // Fields: <register>_<field>_LSB and _W
   localparam int ID_VALUE_LSB           = 0;
   localparam int ID_VALUE_W             = 32;
@@ -89,6 +93,8 @@ package mcadsw_pkg;
   localparam int HWCONFIG_PAR_W         = 4;
   localparam int CTRL_START_LSB         = 0;
   localparam int CTRL_START_W           = 1;
+  localparam int CTRL_ABORT_LSB         = 1;
+  localparam int CTRL_ABORT_W           = 1;
   localparam int CTRL_MODE_LSB          = 8;
   localparam int CTRL_MODE_W            = 3;
   localparam int STATUS_BUSY_LSB        = 0;

@@ -14,7 +14,8 @@
 //
 // CTRL.START written 1 starts a frame in the next cycle, with the registers as
 // they are after the write (the engine samples its configuration at the start
-// and ignores a start while busy). STATUS.DONE and STATUS.ERROR are set when
+// and ignores a start while busy); CTRL.ABORT written 1 pulses abort_o
+// (mcadsw_axi_top ends a running frame with it). STATUS.DONE and STATUS.ERROR are set when
 // the engine's done / error rise (a frame finished, a start was rejected) and
 // cleared by writing 1; an event in the cycle of the clear wins. irq_o is
 // STATUS.{DONE, ERROR} and IRQ_ENABLE, OR-ed: a level until cleared.
@@ -71,6 +72,7 @@ module mcadsw_regs #(
   output logic [NB-1:0]       cfg_disp_o,      // 0 (error code 3) when DISP.D > DMAX
   output logic [NTHR*DCB-1:0] cfg_thr_o,
   output logic                start_o,
+  output logic                abort_o,         // CTRL.ABORT written 1 (a pulse)
   // Engine status
   input  logic                busy_i,
   input  logic                done_i,
@@ -104,6 +106,7 @@ module mcadsw_regs #(
   localparam int S_STALL  = mcadsw_pkg::REG_STALLS / 4;
   localparam int NBASE    = 10;
   localparam int F_START  = mcadsw_pkg::CTRL_START_LSB;
+  localparam int F_ABORT  = mcadsw_pkg::CTRL_ABORT_LSB;
   localparam int F_MODE   = mcadsw_pkg::CTRL_MODE_LSB;
   localparam int F_BUSY   = mcadsw_pkg::STATUS_BUSY_LSB;
   localparam int F_DONE   = mcadsw_pkg::STATUS_DONE_LSB;
@@ -145,7 +148,7 @@ module mcadsw_regs #(
   logic [NTHR*DCB-1:0]   thr_q;      // threshold i at DCB i
   logic                  done_q, error_q;      // STATUS sticky bits
   logic [1:0]            irq_en_q;             // bit 0 done, bit 1 error
-  logic                  start_q;
+  logic                  start_q, abort_q;
   logic                  done_d_q, error_d_q;  // the engine's levels a cycle ago
 
   // ---- Write channel -----------------------------------------------------------------
@@ -229,10 +232,11 @@ module mcadsw_regs #(
   end
 
   // W1C: a byte not written clears nothing. START: the bit written 1.
-  logic clr_done, clr_error, start;
+  logic clr_done, clr_error, start, abort;
   assign clr_done  = hit[S_STATUS] && wstrb_q[F_DONE / 8] && wdata_q[F_DONE];
   assign clr_error = hit[S_STATUS] && wstrb_q[F_ERROR / 8] && wdata_q[F_ERROR];
   assign start     = hit[S_CTRL] && wstrb_q[F_START / 8] && wdata_q[F_START];
+  assign abort     = hit[S_CTRL] && wstrb_q[F_ABORT / 8] && wdata_q[F_ABORT];
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -245,6 +249,7 @@ module mcadsw_regs #(
       lr_t_q       <= '0;
       irq_en_q     <= '0;
       start_q      <= 1'b0;
+      abort_q      <= 1'b0;
       done_q       <= 1'b0;
       error_q      <= 1'b0;
       done_d_q     <= 1'b0;
@@ -261,6 +266,7 @@ module mcadsw_regs #(
       if (hit[S_IRQEN]) irq_en_q <= {wnew[F_IERR], wnew[F_IDONE]};
       if (hit[S_CTRL]) mode_q <= wnew[F_MODE +: 3];
       start_q   <= start;
+      abort_q   <= abort;
       done_d_q  <= done_i;
       error_d_q <= error_i;
       // Sticky events; a rising edge wins over a clear in the same cycle.
@@ -353,6 +359,7 @@ module mcadsw_regs #(
   assign cfg_disp_o       = (32'(disp_q) > DMAX) ? '0 : NB'(disp_q);
   assign cfg_thr_o        = thr_q;
   assign start_o          = start_q;
+  assign abort_o          = abort_q;
 
 endmodule
 

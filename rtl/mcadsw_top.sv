@@ -53,7 +53,11 @@ module mcadsw_top #(
   output logic [AW-1:0]       mem_addr_o,
   output logic [31:0]         mem_wdata_o,
   input  logic                mem_rvalid_i,
-  input  logic [31:0]         mem_rdata_i
+  input  logic [31:0]         mem_rdata_i,
+  // No write requested, buffered or unanswered in the memory system (AXI4:
+  // mcadsw_axi_master's wr_idle_o; a port that completes writes at their grant:
+  // 1). The LR post stage starts, and done_o rises, only with it.
+  input  logic                mem_wr_idle_i
 );
 
   localparam int COLS   = mcadsw_pkg::BLOCK_COLS;      // 48
@@ -197,6 +201,9 @@ module mcadsw_top #(
   assign pass1_done = sched_done && lr_q && pass_q == 2'd0;
   assign pass2_done = sched_done && lr_q && pass_q == 2'd1;
   assign pack       = lr_sub_q && pass_q == 2'd0;
+  logic lr_run_q, post_start_q, post_wait_q, post_busy, post_done;
+  logic frame_end, fin_q;
+  assign frame_end = (sched_done && !lr_q) || post_done;
 
   // A start is taken only while idle: not while the scheduler runs, nor in the
   // two cycles after an accepted start (chk_q, go_q), when busy_o is already high.
@@ -268,7 +275,7 @@ module mcadsw_top #(
         pass_q     <= 2'd1;
       end
       if (pass2_done) pass_q <= 2'd2;
-      if ((sched_done && !lr_q) || post_done) done_o <= 1'b1;
+      if ((frame_end || fin_q) && mem_wr_idle_i) done_o <= 1'b1;
     end
   end
 
@@ -280,17 +287,27 @@ module mcadsw_top #(
   end
 
   // LR mode: the frame runs from the start of the first pass to the post
-  // stage's done; between the passes the scheduler is idle for a cycle.
-  logic lr_run_q, post_start_q, post_busy, post_done;
+  // stage's done; between the passes the scheduler is idle for a cycle. The
+  // post stage reads dL and dR back, so it starts once every write of the
+  // passes is answered (post_wait_q: waiting for mem_wr_idle_i).
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       lr_run_q     <= 1'b0;
       post_start_q <= 1'b0;
+      post_wait_q  <= 1'b0;
     end else begin
-      post_start_q <= pass2_done;
+      post_start_q <= (pass2_done || post_wait_q) && mem_wr_idle_i;
+      post_wait_q  <= (pass2_done || post_wait_q) && !mem_wr_idle_i;
       if (chk_q && check == 4'd0 && lr_q) lr_run_q <= 1'b1;
       if (post_done) lr_run_q <= 1'b0;
     end
+  end
+
+  // The frame's last block row (or the post stage) is over: done_o rises once
+  // every write is answered (fin_q: waiting for mem_wr_idle_i).
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) fin_q <= 1'b0;
+    else fin_q <= (frame_end || fin_q) && !mem_wr_idle_i;
   end
 
   // ---- Counters --------------------------------------------------------------------------
@@ -305,14 +322,14 @@ module mcadsw_top #(
       cnt_words_read_o    <= '0;
       cnt_words_written_o <= '0;
       cnt_stall_o         <= '0;
-    end else if (sched_busy || lr_run_q) begin
+    end else if (sched_busy || lr_run_q || fin_q) begin
       cnt_cycles_o        <= cnt_cycles_o + 32'd1;
       cnt_words_read_o    <= cnt_words_read_o + 32'(mem_req_o && mem_gnt_i && !mem_we_o);
       cnt_words_written_o <= cnt_words_written_o + 32'(mem_req_o && mem_gnt_i && mem_we_o);
       cnt_stall_o         <= cnt_stall_o + 32'(mem_req_o && !mem_gnt_i);
     end
   end
-  assign busy_o = sched_busy || go_q || chk_q || lr_run_q;
+  assign busy_o = sched_busy || go_q || chk_q || lr_run_q || fin_q;
 
   // ---- Block scheduler -----------------------------------------------------------------
   logic               prep_start, prep_bank, agg_bank;

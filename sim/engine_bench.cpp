@@ -19,6 +19,7 @@
 // (MCADSW_DUT_AXIL 0, scripts/gls.sh), the engine's configuration ports.
 #if MCADSW_DUT_AXIL
 #include "Vmcadsw_axi_top.h"
+#include "axi_memory.hpp"
 #include "axil_driver.hpp"
 #include "mcadsw/regs.hpp"
 #else
@@ -117,7 +118,12 @@ void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
 
 class Engine {
  public:
-  Engine(MemoryModel& mem, const EngineOptions& opt) : mem_(mem), opt_(opt) {
+  Engine(MemoryModel& mem, const EngineOptions& opt)
+      : mem_(mem), opt_(opt)
+#if MCADSW_DUT_AXIL
+        , axi_mem_(mem, opt.latency, opt.axi_fault, opt.axi_write_latency)
+#endif
+  {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
     // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
@@ -141,9 +147,10 @@ class Engine {
     top_->rst_ni = 0;
 #if !MCADSW_DUT_AXIL
     top_->start_i = 0;
-#endif
     top_->mem_gnt_i = 0;
     top_->mem_rvalid_i = 0;
+    top_->mem_wr_idle_i = 1;  // the port completes a write at its grant
+#endif
     top_->eval();
     reset();
   }
@@ -155,6 +162,9 @@ class Engine {
 #endif
     top_->eval();
     mem_.reset();
+#if MCADSW_DUT_AXIL
+    axi_mem_.reset();
+#endif
     for (int i = 0; i < 4; ++i) cycle();
     top_->rst_ni = 1;
   }
@@ -177,15 +187,23 @@ class Engine {
   Dut& top() { return *top_; }
 #if MCADSW_DUT_AXIL
   AxilDriver<Dut>& axi() { return *axi_; }
+  const AxiMemory& axi_mem() const { return axi_mem_; }
 #endif
 
   // One clock cycle; `at_sample` runs once the cycle's outputs have settled.
   void cycle(const std::function<void()>& at_sample = {}) {
     auto& t = *top_;
+#if MCADSW_DUT_AXIL
+    axi_mem_.drive(t);
+    t.clk_i = 0;
+    t.eval();
+    axi_mem_.sample(t);
+#else
     mem_.drive_response(t);
     t.clk_i = 0;
     t.eval();
     mem_.serve(t);
+#endif
     if (at_sample) at_sample();
 #if VM_TRACE_FST
     // Inputs change at the start of the low phase; the rising edge is half a
@@ -204,6 +222,9 @@ class Engine {
  private:
   MemoryModel& mem_;
   const EngineOptions& opt_;
+#if MCADSW_DUT_AXIL
+  AxiMemory axi_mem_;
+#endif
   std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
   std::unique_ptr<Dut> top_;
 #if MCADSW_DUT_AXIL
@@ -255,6 +276,8 @@ void start(Engine& e) {
 
 bool frame_over(Engine& e) { return e.top().irq_o; }
 
+void abort_frame(Engine& e) { e.axi().write(regs::kCtrl, 1u << regs::kCtrlAbortLsb); }
+
 // Status and counters, read as a driver reads them.
 void read_status(Engine& e, EngineResult& r) {
   auto& axi = e.axi();
@@ -265,6 +288,8 @@ void read_status(Engine& e, EngineResult& r) {
   r.words_read = long(axi.read(regs::kWordsRead));
   r.words_written = long(axi.read(regs::kWordsWritten));
   r.stall_cycles = long(axi.read(regs::kStalls));
+  r.read_bursts = e.axi_mem().read_bursts();
+  r.write_bursts = e.axi_mem().write_bursts_done();
 }
 #else
 void program(Engine& e, const RawConfig& c, const WeightTable& table) {
@@ -299,6 +324,10 @@ void start(Engine& e) {
 
 bool frame_over(Engine& e) { return e.top().done_o; }
 
+void abort_frame(Engine&) {
+  throw std::runtime_error("abort: the gate-level model has no register block (no CTRL.ABORT)");
+}
+
 void read_status(Engine& e, EngineResult& r) {
   auto& t = e.top();
   r.cycles = long(t.cnt_cycles_o);
@@ -312,13 +341,21 @@ void read_status(Engine& e, EngineResult& r) {
 
 // Runs from start until the frame is over (done, or the interrupt) or the cycle
 // limit; `again` > 0 programs `other` and starts again that many cycles after
-// the start (the configuration keeps `other` until the frame ends).
+// the start (the configuration keeps `other` until the frame ends), or, with
+// `abort`, writes CTRL.ABORT then (at 0: just before the start).
 struct StartAgain {
   long at = 0;
   RawConfig other{};
   const WeightTable* table = nullptr;
+  bool abort = false;
 };
 void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const StartAgain& again = {}) {
+  if (again.abort && again.at == 0) abort_frame(e);
+  EngineResult before;
+#if MCADSW_DUT_AXIL
+  before.read_bursts = e.axi_mem().read_bursts();
+  before.write_bursts = e.axi_mem().write_bursts_done();
+#endif
   start(e);
   const auto t0 = std::chrono::steady_clock::now();
   long n = 0;
@@ -327,7 +364,9 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const Star
       r.timed_out = true;
       break;
     }
-    if (n == again.at) {
+    if (n == again.at && again.abort) {
+      abort_frame(e);
+    } else if (n == again.at) {
       program(e, again.other, *again.table);
       start(e);
     } else {
@@ -338,6 +377,8 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const Star
   }
   r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   read_status(e, r);
+  r.read_bursts -= before.read_bursts;
+  r.write_bursts -= before.write_bursts;
 }
 
 // Generous: four times the memory-bound estimate of 8000 cycles per block.
@@ -571,6 +612,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
     }
     StartAgain again;
     if (fault.kind == Fault::kStartWhileBusy) again = {fault.at_cycle, fault.other, &f.cfg.table};
+    if (fault.kind == Fault::kAbort && k == 0) again = {fault.at_cycle, {}, nullptr, true};
     run_frame(e, r, frame_limit(W, H, opt), opt.progress, again);
     score(mem, lay, f.left, f.right, f.cfg, opt, r);
   }

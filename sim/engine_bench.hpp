@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "axi_memory.hpp"
 #include "memory_model.hpp"
 #include "mcadsw/ref.hpp"
 
@@ -17,7 +18,9 @@ namespace mcadsw::sim {
 constexpr uint64_t kClockPeriodPs = 10526;
 
 struct EngineOptions {
-  MemoryModel::Latency latency;
+  MemoryModel::Latency latency;  // memory latency and back-pressure (sim/axi_memory.hpp)
+  AxiMemory::Fault axi_fault;    // a read or write burst answered SLVERR / DECERR
+  long axi_write_latency = 0;    // further cycles before each write response (and its landing)
   uint32_t stride = 0;           // bytes per row of the input planes; 0: width rounded up to 4
   bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
   bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
@@ -37,6 +40,7 @@ struct EngineResult {
   int width = 0, height = 0, disparities = 0;
   long cycles = 0;               // engine's cycle counter
   long words_read = 0, words_written = 0, stall_cycles = 0;
+  long read_bursts = 0, write_bursts = 0;  // AXI4 bursts the memory model served in the frame
   long mismatches = 0;           // pixels differing from the reference (incl. never written)
   MemoryModel::Violations bus;   // port and address checks of the memory model
   bool timed_out = false;
@@ -64,7 +68,11 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
 //                    which is then started again from the beginning;
 //   kStartWhileBusy  start_i pulsed again while the frame runs, with the
 //                    configuration `other` on the configuration ports (must be
-//                    ignored: the frame, its status and counters unchanged).
+//                    ignored: the frame, its status and counters unchanged);
+//   kAbort           CTRL.ABORT written in frame 0 (at_cycle 0: just before its
+//                    start, while idle, which must be ignored).
+// EngineOptions::axi_fault answers a read or write burst with an error (counted
+// over the whole run, so a small burst number falls in frame 0).
 struct Frame {
   YuvImage left, right;
   Config cfg;
@@ -78,7 +86,7 @@ struct RawConfig {
   uint32_t base_dl = 0, base_dr = 0, base_mask = 0;  // LR mode's scratch and mask planes
   int lr_t = kLrToleranceDefault;
 };
-enum class Fault { kNone, kResetMidFrame, kStartWhileBusy };
+enum class Fault { kNone, kResetMidFrame, kStartWhileBusy, kAbort };
 struct FaultSpec {
   Fault kind = Fault::kNone;
   long at_cycle = 0;

@@ -189,6 +189,10 @@ int main(int argc, char** argv) {
                 ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
     std::printf("  (%.1f s, %.0f kcycles/s)\n", res.sim_seconds, res.cycles / res.sim_seconds / 1e3);
+    if (res.write_bursts > 0)
+      std::printf("  AXI4: %ld read bursts (%.2f beats), %ld write bursts (%.2f beats)\n",
+                  res.read_bursts, double(res.words_read) / double(res.read_bursts),
+                  res.write_bursts, double(res.words_written) / double(res.write_bursts));
     if (res.timed_out) std::printf("  TIMEOUT: the engine did not finish\n");
     if (res.error) std::printf("  engine rejected the configuration, error code %d\n", res.error_code);
     std::fputs(res.report.c_str(), stdout);
@@ -200,7 +204,8 @@ int main(int argc, char** argv) {
         << ", \"lr\": " << (opt.lr ? "true" : "false")
         << ", \"cycles\": " << res.cycles
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
-        << ", \"stall_cycles\": " << res.stall_cycles << ", \"mismatches\": " << res.mismatches
+        << ", \"stall_cycles\": " << res.stall_cycles << ", \"read_bursts\": " << res.read_bursts
+        << ", \"write_bursts\": " << res.write_bursts << ", \"mismatches\": " << res.mismatches
         << ", \"bus_violations\": " << res.bus.total() << ", \"stride\": " << (opt.stride ? opt.stride : (res.width + 3) / 4 * 4)
         << ", \"error_all\": " << (err_all >= 0 ? std::to_string(err_all) : "null")
         << ", \"sim_seconds\": " << res.sim_seconds << "}\n";

@@ -65,8 +65,11 @@ class MemoryModel {
     long bad_writes = 0;         // bytes written outside the output pixels (or writes with no byte)
     long double_writes = 0;      // output bytes written a second time
     long unstable_requests = 0;  // stalled requests changed or withdrawn before their grant
-    std::string first_bad_read, first_bad_write, first_double_write, first_unstable;
-    long total() const { return bad_reads + bad_writes + double_writes + unstable_requests; }
+    long protocol = 0;           // AXI4 rules broken (sim/axi_memory.hpp)
+    std::string first_bad_read, first_bad_write, first_double_write, first_unstable, first_protocol;
+    long total() const {
+      return bad_reads + bad_writes + double_writes + unstable_requests + protocol;
+    }
     std::string describe() const;
   };
 
@@ -129,6 +132,23 @@ class MemoryModel {
   }
 
   void end_cycle() { ++cycle_; }
+  long cycle() const { return cycle_; }
+
+  // One word access, with the address checks above; what the port's grant and
+  // the AXI4 model (sim/axi_memory.hpp) perform. A word outside the modelled
+  // memory or misaligned throws.
+  uint32_t read_word(uint32_t addr) {
+    check_range(addr);
+    note_read(addr);
+    uint32_t v = 0;
+    for (int b = 0; b < 4; ++b) v |= uint32_t(mem_[addr + b]) << (8 * b);
+    return v;
+  }
+  void write_word(uint32_t addr, unsigned be, uint32_t wdata);
+  // A broken bus rule, counted with the other violations.
+  void protocol_violation(const std::string& what) {
+    if (v_.protocol++ == 0) v_.first_protocol = "cycle " + std::to_string(cycle_) + ": " + what;
+  }
   // The memory system is reset with the engine: responses still in flight are
   // dropped (docs/memory_map.md), and a stalled request is forgotten.
   void reset() {
@@ -175,33 +195,26 @@ class MemoryModel {
   }
 
   void access(const Request& q) {
-    const uint32_t addr = q.addr;
-    if (addr % 4 != 0 || size_t(addr) + 4 > mem_.size())
-      throw std::runtime_error("memory access out of range or misaligned: 0x" + hex(addr));
     if (q.we) {
-      if (q.be == 0 && v_.bad_writes++ == 0)
-        v_.first_bad_write = "write with no byte enabled at 0x" + hex(addr);
-      for (int b = 0; b < 4; ++b) {
-        if (!((q.be >> b) & 1)) continue;
-        int x = 0, y = 0;
-        size_t k = 0;
-        while (k < outs_.size() &&
-               !pixel_of(outs_[k].base, outs_[k].stride, uint32_t(regions_.width * outs_[k].bpp),
-                         addr + b, x, y))
-          ++k;
-        if (k == outs_.size()) {
-          if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
-        } else if (written_[k][size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x)]++ &&
-                   v_.double_writes++ == 0) {
-          v_.first_double_write = "pixel (" + std::to_string(x / outs_[k].bpp) + "," +
-                                  std::to_string(y) + ") of output plane " + std::to_string(k) +
-                                  " written again (word 0x" + hex(addr) + ", be " +
-                                  std::to_string(q.be) + ")";
-        }
-        mem_[addr + b] = uint8_t(q.wdata >> (8 * b));
-      }
+      write_word(q.addr, q.be, q.wdata);
       return;
     }
+    const uint32_t v = read_word(q.addr);
+    int extra = lat_.fixed;
+    if (lat_.random) extra += std::uniform_int_distribution<int>(0, lat_.max_random)(rng_);
+    // In order, at most one response a cycle.
+    long due = cycle_ + 1 + extra;
+    if (!pending_.empty()) due = std::max(due, pending_.back().due + 1);
+    pending_.push_back({due, v});
+  }
+
+  void check_range(uint32_t addr) const {
+    if (addr % 4 != 0 || size_t(addr) + 4 > mem_.size())
+      throw std::runtime_error("memory access out of range or misaligned: 0x" + hex(addr));
+  }
+
+  // A read must touch a pixel of an input plane (or of a readable output plane).
+  void note_read(uint32_t addr) {
     bool inside = false;
     for (uint32_t base : regions_.inputs)
       for (int b = 0; b < 4 && !inside; ++b) {
@@ -215,14 +228,6 @@ class MemoryModel {
       }
     if (!inside && v_.bad_reads++ == 0)
       v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
-    uint32_t v = 0;
-    for (int b = 0; b < 4; ++b) v |= uint32_t(mem_[addr + b]) << (8 * b);
-    int extra = lat_.fixed;
-    if (lat_.random) extra += std::uniform_int_distribution<int>(0, lat_.max_random)(rng_);
-    // In order, at most one response a cycle.
-    long due = cycle_ + 1 + extra;
-    if (!pending_.empty()) due = std::max(due, pending_.back().due + 1);
-    pending_.push_back({due, v});
   }
 
   static std::string hex(uint32_t v) {
@@ -244,6 +249,31 @@ class MemoryModel {
   Request held_;
 };
 
+inline void MemoryModel::write_word(uint32_t addr, unsigned be, uint32_t wdata) {
+  check_range(addr);
+  if (be == 0 && v_.bad_writes++ == 0)
+    v_.first_bad_write = "write with no byte enabled at 0x" + hex(addr);
+  for (int b = 0; b < 4; ++b) {
+    if (!((be >> b) & 1)) continue;
+    int x = 0, y = 0;
+    size_t k = 0;
+    while (k < outs_.size() &&
+           !pixel_of(outs_[k].base, outs_[k].stride, uint32_t(regions_.width * outs_[k].bpp),
+                     addr + b, x, y))
+      ++k;
+    if (k == outs_.size()) {
+      if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
+    } else if (written_[k][size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x)]++ &&
+               v_.double_writes++ == 0) {
+      v_.first_double_write = "pixel (" + std::to_string(x / outs_[k].bpp) + "," +
+                              std::to_string(y) + ") of output plane " + std::to_string(k) +
+                              " written again (word 0x" + hex(addr) + ", be " + std::to_string(be) +
+                              ")";
+    }
+    mem_[addr + b] = uint8_t(wdata >> (8 * b));
+  }
+}
+
 inline std::string MemoryModel::Violations::describe() const {
   std::string s;
   auto line = [&](long n, const char* what, const std::string& first) {
@@ -253,6 +283,7 @@ inline std::string MemoryModel::Violations::describe() const {
   line(bad_writes, "bytes written outside the output pixels", first_bad_write);
   line(double_writes, "output bytes written twice", first_double_write);
   line(unstable_requests, "stalled requests changed before their grant", first_unstable);
+  line(protocol, "AXI4 protocol violations", first_protocol);
   return s;
 }
 

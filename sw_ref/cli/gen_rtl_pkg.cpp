@@ -33,6 +33,10 @@ void print_regs_pkg() {
   for (const Reg& r : kRegs)
     std::printf("  localparam int REG_%-14s = 'h%02X;  // %s %s\n", r.name, r.offset, access_name(r.access),
                 r.doc);
+  std::printf("  // Error codes of a frame ended early (STATUS.ERROR_CODE)\n");
+  std::printf("  localparam logic [3:0] ERR_READ_RESPONSE = 4'd%d;\n", kErrReadResponse);
+  std::printf("  localparam logic [3:0] ERR_WRITE_RESPONSE = 4'd%d;\n", kErrWriteResponse);
+  std::printf("  localparam logic [3:0] ERR_ABORTED = 4'd%d;\n", kErrAborted);
   std::printf("  // Fields: <register>_<field>_LSB and _W\n");
   for (const Field& f : kFields) {
     const std::string n = std::string(f.reg) + "_" + f.name;

@@ -1,9 +1,11 @@
-// Second simulator (Icarus Verilog, 4-state): mcadsw_top on the memory image
-// the C++ harness dumped (mcadsw_sim --dump DIR), with a zero-latency memory
-// (grant in the cycle of the request, read data the cycle after, as the C++
-// model's latency 0). Checks that no output is X or Z after reset, writes the
-// disparity plane and the counters for tests/icarus/run.sh to compare with the
-// Verilator run.
+// Second simulator (Icarus Verilog, 4-state): mcadsw_top and its AXI4 master
+// (mcadsw_axi_master, as in mcadsw_axi_top) on the memory image the C++
+// harness dumped (mcadsw_sim --dump DIR), with a zero-latency AXI4 memory timed
+// as the C++ model's (sim/axi_memory.hpp, latency 0): always ready, an R beat
+// the cycle after its AR, a burst written and answered (B) the cycle after its
+// AW and last W beat are both in. Checks that no output is X or Z after reset,
+// writes the disparity plane and the counters for tests/icarus/run.sh to
+// compare with the Verilator run.
 `timescale 1ns/1ps
 module tb_mcadsw_top;
   localparam int MAXW = 1 << 20;           // memory words
@@ -30,9 +32,16 @@ module tb_mcadsw_top;
   logic busy, done, error;
   logic [3:0] error_code;
   logic [31:0] cnt_cycles, cnt_rd, cnt_wr, cnt_stall;
-  logic mem_req, mem_gnt, mem_we, mem_rvalid;
+  logic mem_req, mem_gnt, mem_we, mem_rvalid, wr_idle, bus_idle, rd_err, wr_err;
   logic [3:0] mem_be;
   logic [31:0] mem_addr, mem_wdata, mem_rdata;
+  // AXI4
+  logic        arvalid, rvalid = 1'b0, rready, rlast, awvalid, wvalid, wlast, bvalid = 1'b0, bready;
+  logic [31:0] araddr, rdata, awaddr, wdata;
+  logic [7:0]  arlen, awlen;
+  logic [2:0]  arsize, awsize;
+  logic [1:0]  arburst, awburst;
+  logic [3:0]  wstrb;
 
   mcadsw_top dut (
     .clk_i (clk), .rst_ni (rst_n),
@@ -49,39 +58,79 @@ module tb_mcadsw_top;
     .cnt_stall_o (cnt_stall),
     .mem_req_o (mem_req), .mem_gnt_i (mem_gnt), .mem_we_o (mem_we), .mem_be_o (mem_be),
     .mem_addr_o (mem_addr), .mem_wdata_o (mem_wdata), .mem_rvalid_i (mem_rvalid),
-    .mem_rdata_i (mem_rdata)
+    .mem_rdata_i (mem_rdata), .mem_wr_idle_i (wr_idle)
   );
 
-  // Zero-latency memory.
-  assign mem_gnt = mem_req;
-  always_ff @(posedge clk) begin
-    mem_rvalid <= 1'b0;
-    if (mem_req) begin
-      if (mem_addr[1:0] != 2'b00 || mem_addr / 4 >= words) begin
-        $display("FAIL: access out of range or misaligned: %h", mem_addr);
+  mcadsw_axi_master u_axi (
+    .clk_i (clk), .rst_ni (rst_n),
+    .mem_req_i (mem_req), .mem_gnt_o (mem_gnt), .mem_we_i (mem_we), .mem_be_i (mem_be),
+    .mem_addr_i (mem_addr), .mem_wdata_i (mem_wdata), .mem_rvalid_o (mem_rvalid),
+    .mem_rdata_o (mem_rdata), .drain_i (1'b0), .wr_idle_o (wr_idle), .idle_o (bus_idle),
+    .rd_err_o (rd_err), .wr_err_o (wr_err),
+    .m_arvalid_o (arvalid), .m_arready_i (1'b1), .m_araddr_o (araddr), .m_arlen_o (arlen),
+    .m_arsize_o (arsize), .m_arburst_o (arburst),
+    .m_rvalid_i (rvalid), .m_rready_o (rready), .m_rdata_i (rdata), .m_rresp_i (2'b00),
+    .m_rlast_i (1'b1),
+    .m_awvalid_o (awvalid), .m_awready_i (1'b1), .m_awaddr_o (awaddr), .m_awlen_o (awlen),
+    .m_awsize_o (awsize), .m_awburst_o (awburst),
+    .m_wvalid_o (wvalid), .m_wready_i (1'b1), .m_wdata_o (wdata), .m_wstrb_o (wstrb),
+    .m_wlast_o (wlast), .m_bvalid_i (bvalid), .m_bready_o (bready), .m_bresp_i (2'b00)
+  );
+
+  // Zero-latency AXI4 memory (single-beat reads; the engine's master issues no others).
+  logic [31:0] aw_addr [1024];
+  int          aw_len [1024];
+  logic [35:0] w_beat [16384];
+  int          aw_n = 0, w_n = 0, wlast_n = 0, done_n = 0, beat_rd = 0;
+  always @(posedge clk) begin
+    rvalid <= 1'b0;
+    bvalid <= 1'b0;
+    if (rst_n && arvalid) begin
+      if (araddr[1:0] != 2'b00 || araddr / 4 >= words || arlen != 8'd0 || arsize != 3'd2) begin
+        $display("FAIL: AR out of range, misaligned or not one 4-byte beat: %h len %0d", araddr, arlen);
         $finish;
       end
-      if (mem_we) begin
-        for (int b = 0; b < 4; b++)
-          if (mem_be[b]) mem[mem_addr / 4][b*8 +: 8] <= mem_wdata[b*8 +: 8];
-      end else begin
-        mem_rdata  <= mem[mem_addr / 4];
-        mem_rvalid <= 1'b1;
+      rdata  <= mem[araddr / 4];
+      rvalid <= 1'b1;
+    end
+    if (rst_n && awvalid) begin
+      aw_addr[aw_n % 1024] = awaddr;
+      aw_len[aw_n % 1024]  = awlen;
+      aw_n++;
+    end
+    if (rst_n && wvalid) begin
+      w_beat[w_n % 16384] = {wstrb, wdata};
+      w_n++;
+      if (wlast) wlast_n++;
+    end
+    if (aw_n > done_n && wlast_n > done_n) begin
+      for (int i = 0; i <= aw_len[done_n % 1024]; i++) begin
+        logic [31:0] a;
+        logic [35:0] b;
+        a = aw_addr[done_n % 1024] / 4 + i;
+        b = w_beat[beat_rd % 16384];
+        beat_rd++;
+        if (a >= words) begin $display("FAIL: write out of range: %h", a * 4); $finish; end
+        for (int k = 0; k < 4; k++) if (b[32 + k]) mem[a][k*8 +: 8] = b[k*8 +: 8];
       end
+      done_n++;
+      bvalid <= 1'b1;
     end
   end
 
   // No X or Z on any output once reset is released.
   logic [127:0] outs;
-  assign outs = {busy, done, error, error_code, cnt_cycles, cnt_rd, cnt_wr, cnt_stall, mem_req};
+  assign outs = {busy, done, error, error_code, cnt_cycles, cnt_rd, cnt_wr, cnt_stall, arvalid,
+                 awvalid, wvalid, rready, bready};
   longint xchecks = 0;
   always @(negedge clk) begin
     if (rst_n) begin
       xchecks++;
-      if ($isunknown(outs) || (mem_req && ($isunknown({mem_we, mem_addr}) ||
-                                           (mem_we && $isunknown({mem_be, mem_wdata}))))) begin
-        $display("FAIL: X or Z on an output at %0t: status %b, req %b we %b addr %h", $time,
-                 {busy, done, error, error_code}, mem_req, mem_we, mem_addr);
+      if ($isunknown(outs) || (arvalid && $isunknown({araddr, arlen, arsize, arburst})) ||
+          (awvalid && $isunknown({awaddr, awlen, awsize, awburst})) ||
+          (wvalid && $isunknown({wdata, wstrb, wlast}))) begin
+        $display("FAIL: X or Z on an output at %0t: status %b, AR %b %h, AW %b %h, W %b", $time,
+                 {busy, done, error, error_code}, arvalid, araddr, awvalid, awaddr, wvalid);
         $finish;
       end
     end

@@ -387,10 +387,10 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
 }
 
 // The RTL's assertions (docs/architecture.md section 9) are compiled in (Verilator
-// --assert) and stop the simulation: read data from the external memory with no
-// read outstanding violates the memory controller's invariant and, routed to a
-// reader, that reader's; both fire on the same edge, and which one Verilator
-// reports first is its scheduling order, so either message counts.
+// --assert) and stop the simulation: an AXI4 R beat with no read outstanding
+// violates the AXI4 master's invariant and, passed on, the memory controller's
+// and a reader's; they fire on the same edge, and which one Verilator reports
+// first is its scheduling order, so any of the messages counts.
 TEST(EngineDeathTest, AssertionStopsTheSimulation) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   const auto spurious_read_data = [] {
@@ -407,12 +407,13 @@ TEST(EngineDeathTest, AssertionStopsTheSimulation) {
     cycle();
     top.rst_ni = 1;
     cycle();
-    top.mem_rvalid_i = 1;  // nothing was requested
+    top.m_rvalid_i = 1;  // nothing was requested
     for (int i = 0; i < 4; ++i) cycle();
     top.final();
   };
   EXPECT_DEATH(spurious_read_data(),
-               "(mem_ctrl: external memory returned read data with no read outstanding|"
+               "(axi_master: R beat with no read in flight|"
+               "mem_ctrl: external memory returned read data with no read outstanding|"
                "win_reader: read data with no request of this reader in flight)");
 }
 

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "axi_memory.hpp"
 #include "memory_model.hpp"
 
 namespace mcadsw::sim {
@@ -126,4 +127,170 @@ TEST(MemoryModel, StalledRequestMustStayTheSame) {
 }
 
 }  // namespace
+// ---- The AXI4 model (sim/axi_memory.hpp) -------------------------------------------------
+
+// The AXI4 master signals of the Verilated model that AxiMemory touches.
+struct AxiPort {
+  bool m_arvalid_o = false, m_awvalid_o = false, m_wvalid_o = false, m_wlast_o = false;
+  uint32_t m_araddr_o = 0, m_awaddr_o = 0, m_wdata_o = 0;
+  unsigned m_arlen_o = 0, m_arsize_o = 2, m_arburst_o = 1, m_awlen_o = 0, m_awsize_o = 2,
+           m_awburst_o = 1, m_wstrb_o = 0xf;
+  bool m_rready_o = true, m_bready_o = true;
+  bool m_arready_i = false, m_awready_i = false, m_wready_i = false, m_rvalid_i = false,
+       m_rlast_i = false, m_bvalid_i = false;
+  uint32_t m_rdata_i = 0;
+  unsigned m_rresp_i = 0, m_bresp_i = 0;
+};
+
+// One cycle of the master: `set` changes its outputs after the model drove its inputs.
+struct AxiBench {
+  MemoryModel mem{0x400, {}};
+  AxiMemory axi;
+  AxiPort p;
+  std::vector<uint32_t> rdata;
+  std::vector<unsigned> rresp, bresp;
+  explicit AxiBench(MemoryModel::Latency lat = {}, AxiMemory::Fault f = {})
+      : mem(0x400, lat), axi(mem, lat, f) {
+    mem.set_regions(regions());
+    for (uint32_t a = 0x100; a < 0x400; ++a) mem.data()[a] = uint8_t(a);
+  }
+  template <typename F>
+  void cycle(F set) {
+    axi.drive(p);
+    set(p);
+    if (p.m_rvalid_i) {
+      rdata.push_back(p.m_rdata_i);
+      rresp.push_back(p.m_rresp_i);
+    }
+    if (p.m_bvalid_i) bresp.push_back(p.m_bresp_i);
+    axi.sample(p);
+    mem.end_cycle();
+  }
+  void idle(int n) {
+    for (int i = 0; i < n; ++i) cycle([](AxiPort& q) { q.m_arvalid_o = q.m_awvalid_o = q.m_wvalid_o = false; });
+  }
+  // Holds AR until ready, then drops it.
+  void read(uint32_t addr, unsigned len) {
+    bool done = false;
+    while (!done)
+      cycle([&](AxiPort& q) {
+        q.m_arvalid_o = true;
+        q.m_araddr_o = addr;
+        q.m_arlen_o = len;
+        done = q.m_arready_i;
+      });
+    idle(1);
+  }
+  // AW then the beats (WLAST on beat `last_at`), each held until ready.
+  void write(uint32_t addr, const std::vector<uint32_t>& data, size_t last_at) {
+    bool done = false;
+    while (!done)
+      cycle([&](AxiPort& q) {
+        q.m_awvalid_o = true;
+        q.m_awaddr_o = addr;
+        q.m_awlen_o = unsigned(data.size() - 1);
+        done = q.m_awready_i;
+      });
+    for (size_t i = 0; i < data.size(); ++i) {
+      done = false;
+      while (!done)
+        cycle([&](AxiPort& q) {
+          q.m_awvalid_o = false;
+          q.m_wvalid_o = true;
+          q.m_wdata_o = data[i];
+          q.m_wlast_o = i == last_at;
+          done = q.m_wready_i;
+        });
+    }
+    idle(1);
+  }
+};
+
+TEST(AxiMemory, ServesReadAndWriteBurstsInOrderUnderBackPressure) {
+  MemoryModel::Latency lat;
+  lat.random = true;
+  lat.gnt_prob = 0.4;
+  lat.seed = 3;
+  AxiBench b(lat);
+  b.read(0x100, 3);  // row 0 of the first input plane: 16 bytes, 4 beats (x 10..15 padding)
+  b.read(0x204, 1);
+  b.write(0x300, {0x04030201, 0x08070605}, 1);  // output row 0, x 0..7
+  b.idle(40);
+  EXPECT_EQ(b.mem.violations().protocol, 0) << b.mem.violations().describe();
+  ASSERT_EQ(b.rdata.size(), 6u);
+  EXPECT_EQ(b.rdata[0], 0x03020100u);
+  EXPECT_EQ(b.rdata[4], 0x07060504u);
+  EXPECT_EQ(b.bresp, std::vector<unsigned>{0});
+  EXPECT_EQ(b.mem.data()[0x307], 8);
+}
+
+TEST(AxiMemory, AWriteLandsAtItsResponse) {
+  AxiBench b;
+  b.mem.set_regions({{0x100}, 0x300, 16, 10, 3, 0, 1, true, {}});  // the output read back
+  AxiMemory slow(b.mem, {}, {}, 50);
+  b.p = {};
+  // Through a model whose B comes 50 cycles late: before it the old bytes.
+  bool done = false;
+  auto cyc = [&](auto set) {
+    slow.drive(b.p);
+    set(b.p);
+    slow.sample(b.p);
+    b.mem.end_cycle();
+  };
+  while (!done)
+    cyc([&](AxiPort& q) { q.m_awvalid_o = true; q.m_awaddr_o = 0x300; q.m_awlen_o = 0;
+                          q.m_wvalid_o = true; q.m_wdata_o = 0xaabbccdd; q.m_wlast_o = true;
+                          done = q.m_awready_i && q.m_wready_i; });
+  cyc([](AxiPort& q) { q.m_awvalid_o = q.m_wvalid_o = false; });
+  EXPECT_EQ(b.mem.data()[0x300], 0x00) << "landed before its B";
+  for (int i = 0; i < 60; ++i) cyc([](AxiPort&) {});
+  EXPECT_EQ(b.mem.data()[0x300], 0xdd);
+  EXPECT_EQ(b.mem.violations().total(), 0) << b.mem.violations().describe();
+}
+
+TEST(AxiMemory, FlagsEachBrokenRule) {
+  struct Case {
+    const char* what;
+    void (*run)(AxiBench&);
+  };
+  const Case cases[] = {
+      {"AR VALID dropped before READY", [](AxiBench& b) {
+         b.cycle([](AxiPort& q) { q.m_arvalid_o = true; q.m_araddr_o = 0x100; q.m_arready_i = false; });
+         b.cycle([](AxiPort& q) { q.m_arvalid_o = false; });
+       }},
+      {"AW address changed before READY", [](AxiBench& b) {
+         b.cycle([](AxiPort& q) { q.m_awvalid_o = true; q.m_awaddr_o = 0x300; q.m_awready_i = false; });
+         b.cycle([](AxiPort& q) { q.m_awaddr_o = 0x304; });
+       }},
+      {"W data changed before READY", [](AxiBench& b) {
+         b.cycle([](AxiPort& q) { q.m_wvalid_o = true; q.m_wlast_o = true; q.m_wdata_o = 1; q.m_wready_i = false; });
+         b.cycle([](AxiPort& q) { q.m_wdata_o = 2; });
+       }},
+      {"read burst across 4 KiB", [](AxiBench& b) { b.read(0x0ff8, 3); }},
+      {"read burst of 2-byte beats", [](AxiBench& b) {
+         b.cycle([](AxiPort& q) { q.m_arvalid_o = true; q.m_araddr_o = 0x100; q.m_arsize_o = 1; q.m_arready_i = true; });
+       }},
+      {"WLAST early", [](AxiBench& b) { b.write(0x300, {1, 2}, 0); }},
+      {"WLAST missing", [](AxiBench& b) { b.write(0x300, {1, 2}, 5); }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    AxiBench b;
+    c.run(b);
+    b.idle(10);
+    EXPECT_GE(b.mem.violations().protocol, 1);
+  }
+}
+
+TEST(AxiMemory, InjectsResponseErrors) {
+  AxiBench b({}, {2, 1, 3});  // the second read burst and the first write burst: DECERR
+  b.read(0x100, 1);
+  b.read(0x104, 1);
+  b.write(0x300, {7}, 0);
+  b.idle(10);
+  EXPECT_EQ(b.rresp, (std::vector<unsigned>{0, 0, 3, 3}));
+  EXPECT_EQ(b.bresp, std::vector<unsigned>{3});
+  EXPECT_EQ(b.mem.data()[0x300], 0x00) << "a failed write burst landed";
+}
+
 }  // namespace mcadsw::sim

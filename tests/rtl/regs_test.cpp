@@ -92,6 +92,7 @@ class Bench {
   sim::AxilDriver<Vmcadsw_regs> axi;
   std::function<void()> on_sample;  // a test's hook, at the sample point of every cycle
   int starts = 0;             // cycles with start_o
+  int aborts = 0;             // cycles with abort_o
   int mode_at_start = -1;     // cfg_mode_o in the last of them
 
  private:
@@ -100,6 +101,7 @@ class Bench {
     t.eval();
     at_sample();
     if (on_sample) on_sample();
+    aborts += t.abort_o;
     if (t.start_o) {
       ++starts;
       mode_at_start = t.cfg_mode_o;
@@ -209,6 +211,25 @@ TEST_P(Regs, StartPulsesOnceWithTheModeOfTheSameWrite) {
   b.axi.idle(3);
   EXPECT_EQ(b.starts, before);
   EXPECT_EQ(b.axi.read(kCtrl), 3u << kCtrlModeLsb);
+}
+
+// CTRL.ABORT: one abort_o cycle per write of the bit, no start with it, reads 0,
+// the mode kept; with its byte strobe off nothing.
+TEST_P(Regs, AbortPulsesOnceAndKeepsTheMode) {
+  Bench b(8, GetParam());
+  ASSERT_EQ(b.axi.write(kCtrl, 6u << kCtrlModeLsb), kOkay);
+  for (int i = 0; i < 3; ++i) {
+    const int before = b.aborts;
+    ASSERT_EQ(b.axi.write(kCtrl, (6u << kCtrlModeLsb) | 1u << kCtrlAbortLsb), kOkay);
+    b.axi.idle(3);
+    EXPECT_EQ(b.aborts, before + 1) << "one abort cycle per write of ABORT";
+    EXPECT_EQ(b.axi.read(kCtrl), 6u << kCtrlModeLsb) << "ABORT reads 0";
+  }
+  EXPECT_EQ(b.starts, 0);
+  const int before = b.aborts;
+  ASSERT_EQ(b.axi.write(kCtrl, 1u << kCtrlAbortLsb, 0x2), kOkay);
+  b.axi.idle(3);
+  EXPECT_EQ(b.aborts, before);
 }
 
 TEST_P(Regs, StickyDoneAndErrorClearedByWritingOneAndTheInterrupt) {

@@ -72,6 +72,7 @@ inline constexpr uint32_t kVersionMinor = 0;
 inline constexpr int kVersionMinorLsb = 0, kVersionMajorLsb = 8;
 inline constexpr int kHwConfigDmaxLsb = 0, kHwConfigParLsb = 8;
 inline constexpr int kCtrlStartLsb = 0;
+inline constexpr int kCtrlAbortLsb = 1;
 inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
 inline constexpr int kStatusBusyLsb = 0;
 inline constexpr int kStatusDoneLsb = 1;
@@ -84,11 +85,17 @@ inline constexpr int kDispBitsReg = 8;  // D, whatever DMAX (<= 128); D > DMAX i
 inline constexpr int kLrTBits = 8;
 inline constexpr int kThrBits = kColorDistBits;
 
+// ---- Error codes of a frame ended early (STATUS.ERROR_CODE; 1..12, a start
+// rejected, are the engine's: docs/memory_map.md) ------------------------------------------
+inline constexpr int kErrReadResponse = 13;   // an AXI4 read answered SLVERR or DECERR
+inline constexpr int kErrWriteResponse = 14;  // an AXI4 write answered SLVERR or DECERR
+inline constexpr int kErrAborted = 15;        // CTRL.ABORT written while busy
+
 inline constexpr Reg kRegs[] = {
     {"ID", kId, Access::kRO, "identification, \"MCAD\""},
     {"VERSION", kVersion, Access::kRO, "register map version"},
     {"HWCONFIG", kHwConfig, Access::kRO, "build parameters"},
-    {"CTRL", kCtrl, Access::kRW, "start and output mode"},
+    {"CTRL", kCtrl, Access::kRW, "start, abort and output mode"},
     {"STATUS", kStatus, Access::kRW, "busy, sticky done and error (write 1 to clear), error code"},
     {"IRQ_ENABLE", kIrqEnable, Access::kRW, "interrupt enables"},
     {"IRQ_STATUS", kIrqStatus, Access::kRO, "pending interrupts: STATUS sticky bits and IRQ_ENABLE"},
@@ -129,15 +136,19 @@ inline constexpr Field kFields[] = {
     {"CTRL", "START", kCtrlStartLsb, 1, Access::kWO,
      "write 1: start a frame with the registers as they are after this write; ignored while "
      "busy; reads 0"},
+    {"CTRL", "ABORT", kCtrlAbortLsb, 1, Access::kWO,
+     "write 1: end the running frame; the memory transactions in flight are completed, "
+     "then DONE and ERROR with code 15; ignored while idle; reads 0"},
     {"CTRL", "MODE", kCtrlModeLsb, kCtrlModeWidth, Access::kRW,
      "bit 0 sub-pixel, bit 1 LR, bit 2 right view as base (docs/memory_map.md)"},
     {"STATUS", "BUSY", kStatusBusyLsb, 1, Access::kRO, "a frame is running"},
     {"STATUS", "DONE", kStatusDoneLsb, 1, Access::kW1C,
      "a frame finished or was rejected since the bit was cleared"},
     {"STATUS", "ERROR", kStatusErrorLsb, 1, Access::kW1C,
-     "a start was rejected since the bit was cleared"},
+     "a start was rejected, or a frame ended by a bus error or an abort, since the bit was "
+     "cleared"},
     {"STATUS", "ERROR_CODE", kStatusCodeLsb, kStatusCodeWidth, Access::kRO,
-     "error code of the last start (0: accepted; docs/memory_map.md)"},
+     "error code of the last frame (0: accepted and finished; docs/memory_map.md)"},
     {"IRQ_ENABLE", "DONE", kIrqDoneLsb, 1, Access::kRW, "interrupt on STATUS.DONE"},
     {"IRQ_ENABLE", "ERROR", kIrqErrorLsb, 1, Access::kRW, "interrupt on STATUS.ERROR"},
     {"IRQ_STATUS", "DONE", kIrqDoneLsb, 1, Access::kRO, "STATUS.DONE and IRQ_ENABLE.DONE"},

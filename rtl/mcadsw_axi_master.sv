@@ -1,0 +1,256 @@
+// AXI4 master (issue 19, docs/architecture.md section 14): the engine's 32-bit
+// request/grant memory port (docs/memory_map.md) on an AXI4 bus, one ID (all
+// responses in order), 32-bit data, INCR bursts.
+//
+// Reads: each granted read is an AR of one beat (ARLEN 0), registered; up to
+// ROUTS reads in flight; RREADY is always high, R beats go back to the engine
+// as rvalid/rdata (the engine's readers take a word every cycle).
+// Writes: granted writes are buffered (WD beats) and gathered into bursts of
+// contiguous words: a burst is closed by a cycle without a write request, by a
+// write that does not continue it, by BL beats, or before a 4 KiB boundary.
+// A closed burst goes out as one AW (ARLEN = beats - 1) and its W beats (WLAST
+// on the last), W never ahead of the burst's closing; at most BOUTS bursts
+// wait for their B. BREADY is always high.
+// wr_idle_o: no write requested, buffered, issued or unanswered: the engine
+// waits for it before reading back what it wrote (LR post stage) and before
+// done. drain_i (abort, response error): nothing more is granted, the writes
+// already granted go out, read data is not passed on; idle_o says when every
+// transaction has its response.
+// Responses: RRESP / BRESP SLVERR or DECERR (bit 1 set) pulse rd_err_o /
+// wr_err_o.
+`default_nettype none
+
+module mcadsw_axi_master #(
+  parameter int AW    = 32,
+  parameter int BL    = 16,   // longest write burst, beats
+  parameter int WD    = 16,   // write buffer, beats (at least BL)
+  parameter int ROUTS = 32,   // reads in flight
+  parameter int BOUTS = 7     // write bursts waiting for B
+) (
+  input  logic          clk_i,
+  input  logic          rst_ni,
+  // Engine port (request/grant, docs/memory_map.md)
+  input  logic          mem_req_i,
+  output logic          mem_gnt_o,
+  input  logic          mem_we_i,
+  input  logic [3:0]    mem_be_i,
+  input  logic [AW-1:0] mem_addr_i,
+  input  logic [31:0]   mem_wdata_i,
+  output logic          mem_rvalid_o,
+  output logic [31:0]   mem_rdata_o,
+  // Control and status
+  input  logic          drain_i,
+  output logic          wr_idle_o,
+  output logic          idle_o,
+  output logic          rd_err_o,
+  output logic          wr_err_o,
+  // AXI4 master: read address and data
+  output logic          m_arvalid_o,
+  input  logic          m_arready_i,
+  output logic [AW-1:0] m_araddr_o,
+  output logic [7:0]    m_arlen_o,
+  output logic [2:0]    m_arsize_o,
+  output logic [1:0]    m_arburst_o,
+  input  logic          m_rvalid_i,
+  output logic          m_rready_o,
+  input  logic [31:0]   m_rdata_i,
+  input  logic [1:0]    m_rresp_i,
+  input  logic          m_rlast_i,
+  // AXI4 master: write address, data, response
+  output logic          m_awvalid_o,
+  input  logic          m_awready_i,
+  output logic [AW-1:0] m_awaddr_o,
+  output logic [7:0]    m_awlen_o,
+  output logic [2:0]    m_awsize_o,
+  output logic [1:0]    m_awburst_o,
+  output logic          m_wvalid_o,
+  input  logic          m_wready_i,
+  output logic [31:0]   m_wdata_o,
+  output logic [3:0]    m_wstrb_o,
+  output logic          m_wlast_o,
+  input  logic          m_bvalid_i,
+  output logic          m_bready_o,
+  input  logic [1:0]    m_bresp_i
+);
+
+  localparam int RB = $clog2(ROUTS + 1);
+  localparam int BB = $clog2(BOUTS + 1);
+  localparam int LB = $clog2(BL);          // burst length - 1
+  localparam int NB = $clog2(BL + 1);      // beats of the open burst
+  localparam int DB = $clog2(WD);          // write buffer index
+  localparam int ND = 2;                   // closed bursts queued (AW and W each)
+
+  if (BL < 1 || BL > 256 || WD < BL || (WD & (WD - 1)) != 0 || BOUTS < 1 ||
+      ROUTS < 1) begin : g_bad_param
+    mcadsw_error_axi_master_bad_burst_or_buffer_size u_error ();
+  end
+
+  assign m_arsize_o  = 3'd2;     // 4 bytes a beat
+  assign m_arburst_o = 2'b01;    // INCR
+  assign m_arlen_o   = 8'd0;
+  assign m_awsize_o  = 3'd2;
+  assign m_awburst_o = 2'b01;
+  assign m_rready_o  = 1'b1;
+  assign m_bready_o  = 1'b1;
+
+  // ---- Reads ---------------------------------------------------------------------------
+  logic          arvalid_q;
+  logic [AW-1:0] araddr_q;
+  logic [RB-1:0] rd_out_q;                 // ARs accepted from the engine, R not yet seen
+  logic          rd_take;
+  assign rd_take = mem_req_i && !mem_we_i && !drain_i && (!arvalid_q || m_arready_i) &&
+                   rd_out_q != RB'(ROUTS);
+  assign m_arvalid_o  = arvalid_q;
+  assign m_araddr_o   = araddr_q;
+  assign mem_rvalid_o = m_rvalid_i && !drain_i;
+  assign mem_rdata_o  = m_rdata_i;
+  assign rd_err_o     = m_rvalid_i && m_rresp_i[1];
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      arvalid_q <= 1'b0;
+      araddr_q  <= '0;
+      rd_out_q  <= '0;
+    end else begin
+      if (rd_take) begin
+        arvalid_q <= 1'b1;
+        araddr_q  <= mem_addr_i;
+      end else if (m_arready_i) begin
+        arvalid_q <= 1'b0;
+      end
+      rd_out_q <= rd_out_q + RB'(rd_take) - RB'(m_rvalid_i);
+    end
+  end
+
+  // ---- Write buffer and the open burst -------------------------------------------------
+  logic [WD*36-1:0] wbuf_q;                // {strobes, data} a beat
+  logic [DB:0]      wwr_q, wrd_q;          // write / read pointers, one wrap bit
+  logic             wbuf_full;
+  assign wbuf_full = (wwr_q ^ wrd_q) == {1'b1, DB'(0)};
+
+  logic [AW-1:0] ob_addr_q, ob_next_q;     // open burst: first word, the word that continues it
+  logic [NB-1:0] ob_n_q;                   // its beats (0: none open)
+
+  // Closed bursts: AW queue {addr, len} and W queue {len}, ND deep each, pushed together.
+  logic [ND*(AW+LB)-1:0] awq_q;
+  logic [ND*LB-1:0]      wlq_q;
+  logic [1:0]            awq_n_q, wlq_n_q;
+  logic                  desc_room;
+  assign desc_room = awq_n_q != 2'(ND) && wlq_n_q != 2'(ND);
+
+  logic wr_req, contig, need_close, wr_take, do_close;
+  assign wr_req     = mem_req_i && mem_we_i && !drain_i;
+  assign contig     = mem_addr_i == ob_next_q && mem_addr_i[11:0] != 12'd0;
+  assign need_close = ob_n_q != '0 && (ob_n_q == NB'(BL) || !contig);
+  assign wr_take    = wr_req && !wbuf_full && (!need_close || desc_room);
+  assign do_close   = ob_n_q != '0 && desc_room && (!wr_req || need_close || ob_n_q == NB'(BL));
+  assign mem_gnt_o  = rd_take || wr_take;
+
+  // ---- AW, W, B -------------------------------------------------------------------------
+  logic [BB-1:0] b_out_q;                  // AWs accepted, B not yet seen
+  logic [LB-1:0] wbeat_q;                  // beat of the current W burst
+  logic          aw_go, w_go;
+  assign m_awvalid_o = awq_n_q != 2'd0 && b_out_q != BB'(BOUTS);
+  assign m_awaddr_o  = awq_q[LB +: AW];
+  assign m_awlen_o   = 8'(awq_q[0 +: LB]);
+  assign m_wvalid_o  = wlq_n_q != 2'd0;
+  assign m_wdata_o   = wbuf_q[32'(wrd_q[DB-1:0])*36 +: 32];
+  assign m_wstrb_o   = wbuf_q[32'(wrd_q[DB-1:0])*36 + 32 +: 4];
+  assign m_wlast_o   = wbeat_q == wlq_q[0 +: LB];
+  assign aw_go       = m_awvalid_o && m_awready_i;
+  assign w_go        = m_wvalid_o && m_wready_i;
+  assign wr_err_o    = m_bvalid_i && m_bresp_i[1];
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wbuf_q    <= '0;
+      wwr_q     <= '0;
+      wrd_q     <= '0;
+      ob_addr_q <= '0;
+      ob_next_q <= '0;
+      ob_n_q    <= '0;
+      awq_q     <= '0;
+      wlq_q     <= '0;
+      awq_n_q   <= '0;
+      wlq_n_q   <= '0;
+      b_out_q   <= '0;
+      wbeat_q   <= '0;
+    end else begin
+      if (wr_take) begin
+        wbuf_q[32'(wwr_q[DB-1:0])*36 +: 36] <= {mem_be_i, mem_wdata_i};
+        wwr_q <= wwr_q + 1'b1;
+      end
+      if (w_go) wrd_q <= wrd_q + 1'b1;
+      // The open burst: continued, closed, or started.
+      if (wr_take && (ob_n_q == '0 || do_close)) begin
+        ob_addr_q <= mem_addr_i;
+        ob_n_q    <= NB'(1);
+      end else if (wr_take) begin
+        ob_n_q <= ob_n_q + NB'(1);
+      end else if (do_close) begin
+        ob_n_q <= '0;
+      end
+      if (wr_take) ob_next_q <= mem_addr_i + AW'(4);
+      // AW queue: shift out at the head (slot 0), append at awq_n.
+      begin
+        logic [ND*(AW+LB)-1:0] q;
+        logic [1:0]            n;
+        q = awq_q;
+        n = awq_n_q;
+        if (aw_go) begin
+          q = q >> (AW + LB);
+          n = n - 2'd1;
+        end
+        if (do_close) begin
+          q[32'(n)*(AW+LB) +: AW+LB] = {ob_addr_q, LB'(ob_n_q - NB'(1))};
+          n = n + 2'd1;
+        end
+        awq_q   <= q;
+        awq_n_q <= n;
+      end
+      begin
+        logic [ND*LB-1:0] q;
+        logic [1:0]       n;
+        q = wlq_q;
+        n = wlq_n_q;
+        if (w_go && m_wlast_o) begin
+          q = q >> LB;
+          n = n - 2'd1;
+        end
+        if (do_close) begin
+          q[32'(n)*LB +: LB] = LB'(ob_n_q - NB'(1));
+          n = n + 2'd1;
+        end
+        wlq_q   <= q;
+        wlq_n_q <= n;
+      end
+      if (w_go) wbeat_q <= m_wlast_o ? '0 : wbeat_q + LB'(1);
+      b_out_q <= b_out_q + BB'(aw_go) - BB'(m_bvalid_i);
+    end
+  end
+
+  assign wr_idle_o = !(mem_req_i && mem_we_i) && ob_n_q == '0 && awq_n_q == 2'd0 &&
+                     wlq_n_q == 2'd0 && b_out_q == '0;
+  assign idle_o    = wr_idle_o && rd_out_q == '0;
+
+  // m_rlast_i: every read is one beat, so every R beat is the last.
+  logic unused;
+  assign unused = m_rlast_i ^ m_rresp_i[0] ^ m_bresp_i[0];
+
+`ifndef SYNTHESIS
+  // Invariants, checked in simulation (the AXI memory model of the harness
+  // checks the bus itself).
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      assert (!(m_rvalid_i && rd_out_q == '0))
+        else $error("axi_master: R beat with no read in flight");
+      assert (!(m_bvalid_i && b_out_q == '0))
+        else $error("axi_master: B response with no write burst in flight");
+      assert (!(wr_take && rd_take)) else $error("axi_master: read and write granted together");
+    end
+  end
+`endif
+
+endmodule
+
+`default_nettype wire

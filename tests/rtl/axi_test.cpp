@@ -1,0 +1,168 @@
+// The engine's AXI4 master (rtl/mcadsw_axi_master.sv) in the whole engine,
+// against the AXI4 memory model (sim/axi_memory.hpp), whose protocol checks
+// count in every result's bus violations: write bursts, response errors
+// (SLVERR / DECERR on reads and writes) and CTRL.ABORT, each followed by a clean
+// frame on the same engine without a reset.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "engine_bench.hpp"
+#include "mcadsw/ref.hpp"
+#include "mcadsw/regs.hpp"
+#include "test_util.hpp"
+
+namespace mcadsw {
+namespace {
+
+using sim::EngineOptions;
+using sim::EngineResult;
+
+void expect_exact(const EngineResult& r) {
+  EXPECT_FALSE(r.timed_out) << "engine did not finish";
+  EXPECT_FALSE(r.error) << "frame ended with error code " << r.error_code;
+  EXPECT_EQ(r.mismatches, 0) << r.report;
+  EXPECT_EQ(r.bus.total(), 0) << r.bus.describe();
+  EXPECT_TRUE(r.clean());
+}
+
+// A frame ended early: not hung, DONE with ERROR and the code, and the bus
+// rules kept while it drained (reads and writes stay inside the planes).
+void expect_ended(const EngineResult& r, int code) {
+  EXPECT_FALSE(r.timed_out) << "the frame did not end";
+  EXPECT_TRUE(r.error);
+  EXPECT_EQ(r.error_code, code);
+  EXPECT_EQ(r.bus.protocol, 0) << r.bus.describe();
+  EXPECT_EQ(r.bus.bad_reads + r.bus.bad_writes + r.bus.double_writes, 0) << r.bus.describe();
+}
+
+std::vector<sim::Frame> two_frames(uint32_t seed) {
+  std::mt19937 rng(seed);
+  Config cfg;
+  cfg.disparities = 12;
+  std::vector<sim::Frame> f;
+  f.push_back({test::random_yuv(41, 23, rng), test::random_yuv(41, 23, rng), cfg});
+  f.push_back({test::random_yuv(20, 30, rng), test::random_yuv(20, 30, rng), cfg});
+  return f;
+}
+
+// Depth rows leave as write bursts: every block row (18 pixels, 18 or 36 bytes)
+// is one burst of up to 10 contiguous words, whatever the back-pressure; every
+// read is one beat.
+TEST(Axi, DepthRowsAreWriteBursts) {
+  std::mt19937 rng(21);
+  Config cfg;
+  cfg.disparities = 16;
+  const int w = 64, h = 48;
+  const long block_rows = long(h) * ((w + kBlock - 1) / kBlock);
+  const YuvImage l = test::random_yuv(w, h, rng), r = test::random_yuv(w, h, rng);
+  for (bool sub : {false, true})
+    for (bool random : {false, true}) {
+      SCOPED_TRACE(std::string(sub ? "sub-pixel" : "raw") + (random ? ", random back-pressure" : ""));
+      EngineOptions opt;
+      opt.subpixel = sub;
+      opt.latency.random = random;
+      opt.latency.seed = 9;
+      const EngineResult res = sim::run_engine(l, r, cfg, opt);
+      expect_exact(res);
+      EXPECT_EQ(res.write_bursts, block_rows);
+      // Each block row writes the words its pixels' bytes touch.
+      const int bpp = sub ? 2 : 1;
+      long words = 0;
+      for (int x0 = 0; x0 < w; x0 += kBlock)
+        words += (std::min(w, x0 + kBlock) * bpp - 1) / 4 - x0 * bpp / 4 + 1;
+      EXPECT_EQ(res.words_written, words * h);
+      EXPECT_EQ(res.read_bursts, res.words_read);
+    }
+}
+
+// SLVERR and DECERR on a read burst early and late in frame 0, and on a write
+// burst: the frame ends with code 13 (read) or 14 (write); the next frame, on the
+// same engine, is exact.
+TEST(Axi, ResponseErrorsEndTheFrameThenACleanFrame) {
+  const auto frames = two_frames(22);
+  EngineOptions clean_opt;
+  const EngineResult clean = sim::run_frames({frames[0]}, clean_opt).at(0);
+  expect_exact(clean);
+  ASSERT_GT(clean.write_bursts, 8);
+  struct Case {
+    const char* what;
+    long read_burst, write_burst;
+    int code;
+  };
+  const Case cases[] = {
+      {"first read", 1, 0, regs::kErrReadResponse},
+      {"a read late in the frame", clean.read_bursts * 9 / 10, 0, regs::kErrReadResponse},
+      {"first write", 0, 1, regs::kErrWriteResponse},
+      {"last write", 0, clean.write_bursts, regs::kErrWriteResponse},
+  };
+  for (const Case& c : cases)
+    for (int resp : {2, 3})
+      for (bool random : {false, true}) {
+        SCOPED_TRACE(std::string(c.what) + (resp == 2 ? " SLVERR" : " DECERR") +
+                     (random ? ", random back-pressure" : ""));
+        EngineOptions opt;
+        opt.axi_fault = {c.read_burst, c.write_burst, resp};
+        opt.latency.random = random;
+        opt.latency.seed = 5;
+        const auto res = sim::run_frames(frames, opt);
+        expect_ended(res[0], c.code);
+        expect_exact(res[1]);
+      }
+}
+
+// CTRL.ABORT early, in the middle and late in frame 0 ends it with code 15; the
+// next frame is exact. Written while idle (before the start) it is ignored.
+TEST(Axi, AbortEndsTheFrameThenACleanFrame) {
+  const auto frames = two_frames(23);
+  const EngineResult clean = sim::run_frames({frames[0]}, {}).at(0);
+  for (long at : {5L, clean.cycles / 2, clean.cycles * 19 / 20})
+    for (bool random : {false, true}) {
+      SCOPED_TRACE("abort after " + std::to_string(at) + " cycles" +
+                   (random ? ", random back-pressure" : ""));
+      EngineOptions opt;
+      opt.latency.random = random;
+      opt.latency.seed = 6;
+      const auto res = sim::run_frames(frames, opt, {sim::Fault::kAbort, at});
+      expect_ended(res[0], regs::kErrAborted);
+      expect_exact(res[1]);
+    }
+  const auto idle = sim::run_frames(frames, {}, {sim::Fault::kAbort, 0});
+  expect_exact(idle[0]);
+  EXPECT_EQ(idle[0].cycles, clean.cycles);
+  expect_exact(idle[1]);
+}
+
+// Writes answered (and landing) 3000 cycles late: the LR post stage, which
+// reads dL and dR back, waits for every write of the passes, and DONE waits for
+// the last write response; both frames exact.
+TEST(Axi, SlowWriteResponsesAreWaitedFor) {
+  std::mt19937 rng(25);
+  Config cfg;
+  cfg.disparities = 12;
+  const YuvImage l = test::random_yuv(30, 20, rng), r = test::random_yuv(30, 20, rng);
+  for (bool lr : {false, true}) {
+    SCOPED_TRACE(lr ? "LR mode" : "raw mode");
+    EngineOptions opt;
+    opt.lr = lr;
+    opt.axi_write_latency = 3000;
+    expect_exact(sim::run_engine(l, r, cfg, opt));
+  }
+}
+
+// A long read latency (30 cycles before each R beat, the DDR-like case of
+// docs/architecture.md 14): exact, no protocol violation.
+TEST(Axi, LongReadLatency) {
+  std::mt19937 rng(24);
+  Config cfg;
+  cfg.disparities = 20;
+  EngineOptions opt;
+  opt.latency.fixed = 30;
+  expect_exact(sim::run_engine(test::random_yuv(50, 33, rng), test::random_yuv(50, 33, rng), cfg, opt));
+}
+
+}  // namespace
+}  // namespace mcadsw
