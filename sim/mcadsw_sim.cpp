@@ -182,17 +182,13 @@ int main(int argc, char** argv) {
     const double pixels = double(res.width) * res.height;
     const bool ok = res.clean();
     std::printf("%-16s %4dx%-4d D=%-2d%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
-                "reads/px %5.2f  stalls %7ld  %s",
+                "reads/px %5.2f  stalls %7ld  wbursts %6ld  %s",
                 name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "",
                 opt.right ? " right" : opt.lr ? " lr" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
-                ok ? "BIT-EXACT" : "FAILED");
+                res.write_bursts, ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
     std::printf("  (%.1f s, %.0f kcycles/s)\n", res.sim_seconds, res.cycles / res.sim_seconds / 1e3);
-    if (res.write_bursts > 0)
-      std::printf("  AXI4: %ld read bursts (%.2f beats), %ld write bursts (%.2f beats)\n",
-                  res.read_bursts, double(res.words_read) / double(res.read_bursts),
-                  res.write_bursts, double(res.words_written) / double(res.write_bursts));
     if (res.timed_out) std::printf("  TIMEOUT: the engine did not finish\n");
     if (res.error) std::printf("  engine rejected the configuration, error code %d\n", res.error_code);
     std::fputs(res.report.c_str(), stdout);
