@@ -50,6 +50,11 @@ check() {   # name value op limit unit explanation
 check "gates (NAND2 eq)" "$nand2" "<=" "$max_nand2" "" "the engine exceeds the gate budget (build/synth/report.md lists the blocks)"
 check "worst slack at ${clock:-?} MHz" "$slack" ">=" "$min_slack" "ns" "timing is not met (build/synth/sta.log has the critical path, sta_endpoints.log every endpoint)"
 check "on-chip memory (engine)" "$mem" "<=" "$max_mem" "kB" "the memories exceed the budget (build/synth/report.md lists them per module)"
+# The whole IP (engine and SoC wrapper, mcadsw_axi_top) where the summary has it.
+soc_total=$(num soc_total_nand2_eq "$summary")
+if [ -n "$soc_total" ]; then
+  check "gates with the SoC wrapper" "$soc_total" "<=" "$max_nand2" "" "the engine with its AXI4-Lite registers and AXI4 master exceeds the gate budget (build/synth/report.md)"
+fi
 # Optional: macros with an asynchronous read port (no SRAM offers one).
 max_async=$(num async_read_macros_max "$budget")
 if [ -n "$max_async" ]; then
