@@ -276,7 +276,11 @@ void start(Engine& e) {
 
 bool frame_over(Engine& e) { return e.top().irq_o; }
 
-void abort_frame(Engine& e) { e.axi().write(regs::kCtrl, 1u << regs::kCtrlAbortLsb); }
+// CTRL.ABORT, the mode kept (read-modify-write, as for START).
+void abort_frame(Engine& e) {
+  auto& axi = e.axi();
+  axi.write(regs::kCtrl, (axi.read(regs::kCtrl) & ~1u) | 1u << regs::kCtrlAbortLsb);
+}
 
 // Status and counters, read as a driver reads them.
 void read_status(Engine& e, EngineResult& r) {

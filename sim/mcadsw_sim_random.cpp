@@ -6,8 +6,13 @@
 // pairs), a random size (smaller than the window, not a multiple of 18, up to
 // the maximum width), a random D in 1..DMAX, a random legal weight table and
 // random memory latency and grant stalls, and a random stride (a quarter of
-// the cases the width rounded up to 4, the others up to 4 KiB more). Every pixel is compared; a failing
-// case prints the one command that reruns it alone.
+// the cases the width rounded up to 4, the others up to 4 KiB more). One case in
+// eight is first interrupted (issue 19): a read or a write burst answered
+// SLVERR or DECERR, or CTRL.ABORT at a random cycle; that frame must end with
+// code 13, 14 or 15 (an abort due after the frame's end changes nothing), and the
+// same case run again on the same engine, without a reset, must be exact.
+// Every pixel is compared; a failing case prints the one command that reruns it
+// alone.
 // Exit status: 0 all cases bit-exact, 1 a mismatch or harness error, 2 usage.
 #include <algorithm>
 #include <cstdio>
@@ -19,6 +24,7 @@
 #include "engine_bench.hpp"
 #include "mcadsw/parse.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/regs.hpp"
 
 namespace {
 
@@ -26,11 +32,15 @@ using namespace mcadsw;
 
 const char* kUsage = "usage: mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR]\n";
 
+enum class Interrupt { kNone, kRead, kWrite, kAbort };
+
 struct Case {
   std::string pattern;
   YuvImage left, right;
   Config cfg;
   sim::EngineOptions opt;
+  Interrupt interrupt = Interrupt::kNone;
+  long abort_at = 0;  // kAbort: cycles after the start
 };
 
 Plane pattern_plane(const std::string& kind, int w, int h, std::mt19937& rng) {
@@ -140,6 +150,24 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
     c.opt.lr = true;
     c.opt.lr_tolerance = rng() % 4 == 0 ? int(rng() % (kLrToleranceMax + 1)) : int(rng() % 4);
   }
+  // An interruption in one case out of eight (drawn last). The burst numbers
+  // stay inside the first frame: it reads more than a word a pixel and writes
+  // at least a burst a block row.
+  if (rng() % 8 == 0) {
+    const int kind = int(rng() % 3);
+    const int resp = 2 + int(rng() % 2);
+    if (kind == 0) {
+      c.interrupt = Interrupt::kRead;
+      c.opt.axi_fault = {std::uniform_int_distribution<long>(1, long(w) * h)(rng), 0, resp};
+    } else if (kind == 1) {
+      c.interrupt = Interrupt::kWrite;
+      const long block_rows = long(h) * ((w + kBlock - 1) / kBlock);
+      c.opt.axi_fault = {0, std::uniform_int_distribution<long>(1, block_rows)(rng), resp};
+    } else {
+      c.interrupt = Interrupt::kAbort;
+      c.abort_at = std::uniform_int_distribution<long>(1, 20000)(rng);
+    }
+  }
   return c;
 }
 
@@ -192,23 +220,46 @@ int main(int argc, char** argv) {
     const Case c = make_case(seed, k, real);
     sim::EngineResult r;
     std::string err;
+    std::string ended;  // the interrupted frame's fault, if any
     try {
-      r = sim::run_engine(c.left, c.right, c.cfg, c.opt);
+      if (c.interrupt == Interrupt::kNone) {
+        r = sim::run_engine(c.left, c.right, c.cfg, c.opt);
+      } else {
+        const sim::Frame f{c.left, c.right, c.cfg};
+        const sim::FaultSpec abort{c.interrupt == Interrupt::kAbort ? sim::Fault::kAbort : sim::Fault::kNone,
+                                   c.abort_at};
+        const auto res = sim::run_frames({f, f}, c.opt, abort);
+        const sim::EngineResult& first = res[0];
+        const int code = c.interrupt == Interrupt::kRead    ? regs::kErrReadResponse
+                         : c.interrupt == Interrupt::kWrite ? regs::kErrWriteResponse
+                                                            : regs::kErrAborted;
+        const bool late_abort = c.interrupt == Interrupt::kAbort && !first.error && first.clean();
+        if (first.timed_out) ended = "the interrupted frame did not end";
+        else if (!late_abort && (!first.error || first.error_code != code))
+          ended = "the interrupted frame ended with code " + std::to_string(first.error_code) +
+                  ", expected " + std::to_string(code);
+        else if (first.bus.protocol + first.bus.bad_reads + first.bus.bad_writes + first.bus.double_writes)
+          ended = "the interrupted frame broke a bus rule:\n" + first.bus.describe();
+        r = res[1];
+      }
     } catch (const std::exception& e) {
       err = e.what();
     }
     ++run;
     cycles += r.cycles;
-    const bool ok = err.empty() && r.clean();
-    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u  %s latency  %8ld cycles  %s\n", k,
+    const bool ok = err.empty() && ended.empty() && r.clean();
+    static const char* kInterrupt[] = {"", "  after a read error", "  after a write error",
+                                       "  after an abort"};
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u  %s latency  %8ld cycles  %s%s\n", k,
                 c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
                 c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
                 c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
-                r.cycles, ok ? "BIT-EXACT" : "FAILED");
+                r.cycles, ok ? "BIT-EXACT" : "FAILED", kInterrupt[int(c.interrupt)]);
     if (!ok) {
       ++failures;
       if (!err.empty()) std::printf("  harness error: %s\n", err.c_str());
+      if (!ended.empty()) std::printf("  %s\n", ended.c_str());
       if (r.timed_out) std::printf("  the engine did not finish\n");
       if (r.error) std::printf("  configuration rejected, code %d\n", r.error_code);
       std::printf("  %ld mismatches, %ld memory-port violations\n%s", r.mismatches, r.bus.total(),
