@@ -44,9 +44,12 @@ class AxiMemory {
   };
 
   // write_latency: further cycles before each B (and before the burst lands).
-  AxiMemory(MemoryModel& mem, MemoryModel::Latency lat, Fault fault, long write_latency = 0)
+  // ar_interval: an AR is accepted at most every ar_interval cycles (a memory
+  // controller's command rate).
+  AxiMemory(MemoryModel& mem, MemoryModel::Latency lat, Fault fault, long write_latency = 0,
+            int ar_interval = 1)
       : mem_(mem), lat_(lat), fault_(fault), write_latency_(write_latency),
-        rng_(lat.seed ^ 0x5a5a5a5au) {}
+        ar_interval_(ar_interval), rng_(lat.seed ^ 0x5a5a5a5au) {}
 
   // Inputs of the coming cycle: READYs, and the head R beat and B response.
   // Call before evaluating the cycle's low phase.
@@ -55,7 +58,7 @@ class AxiMemory {
     const auto ready = [this] {
       return !lat_.random || std::bernoulli_distribution(lat_.gnt_prob)(rng_);
     };
-    t.m_arready_i = ready();
+    t.m_arready_i = ready() && now() - last_ar_ >= ar_interval_;
     t.m_awready_i = ready();
     t.m_wready_i = ready();
     r_on_ = !rq_.empty() && rq_.front().due <= now();
@@ -96,7 +99,10 @@ class AxiMemory {
       for (const PendingWrite& p : bq_.front().writes) mem_.write_word(p.addr, p.strb, p.data);
       bq_.pop_front();
     }
-    if (ar_go) read_burst(ar);
+    if (ar_go) {
+      last_ar_ = now();
+      read_burst(ar);
+    }
     if (aw_go) {
       check_burst(aw, "AW");
       awq_.push_back(aw);
@@ -223,6 +229,8 @@ class AxiMemory {
   MemoryModel::Latency lat_;
   Fault fault_;
   long write_latency_;
+  int ar_interval_;
+  long last_ar_ = -1000000;
   std::mt19937 rng_;
   std::deque<RBeat> rq_;
   std::deque<BResp> bq_;

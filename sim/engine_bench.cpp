@@ -121,7 +121,7 @@ class Engine {
   Engine(MemoryModel& mem, const EngineOptions& opt)
       : mem_(mem), opt_(opt)
 #if MCADSW_DUT_AXIL
-        , axi_mem_(mem, opt.latency, opt.axi_fault, opt.axi_write_latency)
+        , axi_mem_(mem, opt.latency, opt.axi_fault, opt.axi_write_latency, opt.axi_ar_interval)
 #endif
   {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated

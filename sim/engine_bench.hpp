@@ -21,6 +21,7 @@ struct EngineOptions {
   MemoryModel::Latency latency;  // memory latency and back-pressure (sim/axi_memory.hpp)
   AxiMemory::Fault axi_fault;    // a read or write burst answered SLVERR / DECERR
   long axi_write_latency = 0;    // further cycles before each write response (and its landing)
+  int axi_ar_interval = 1;       // an AR accepted at most every this many cycles
   uint32_t stride = 0;           // bytes per row of the input planes; 0: width rounded up to 4
   bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
   bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)

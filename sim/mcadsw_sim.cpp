@@ -24,7 +24,10 @@ const char* kUsage =
     "usage: mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]\n"
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
-    "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N]\n"
+    "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N] [--ar-interval N]\n"
+    "  --latency N     AXI4 memory: every R beat and B 1 + N cycles after its request\n"
+    "  --random-latency SEED  AXI4 memory: 0..8 extra cycles a burst, READY 70 % of the cycles\n"
+    "  --ar-interval N AXI4 memory: an AR accepted at most every N cycles (default 1)\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
     "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
     "                  the width (default: the width rounded up to 4)\n"
@@ -75,6 +78,7 @@ int main(int argc, char** argv) {
       if (a == "-d") d = int(mcadsw::parse_long(val(), "D"));
       else if (a == "--gamma") gamma = mcadsw::parse_double(val(), "gamma");
       else if (a == "--latency") opt.latency.fixed = int(mcadsw::parse_long(val(), "latency"));
+      else if (a == "--ar-interval") opt.axi_ar_interval = int(mcadsw::parse_long(val(), "AR interval"));
       else if (a == "--random-latency") {
         opt.latency.random = true;
         opt.latency.seed = uint32_t(mcadsw::parse_long(val(), "seed"));
@@ -110,6 +114,7 @@ int main(int argc, char** argv) {
       throw std::invalid_argument("D = " + std::to_string(d) + " out of range 1.." +
                                   std::to_string(mcadsw::kDmax));
     if (opt.latency.fixed < 0) throw std::invalid_argument("latency must not be negative");
+    if (opt.axi_ar_interval < 1) throw std::invalid_argument("--ar-interval must be at least 1");
     if (opt.lr && opt.right) throw std::invalid_argument("--lr and --right do not combine");
     mcadsw::check_lr_tolerance(opt.lr_tolerance);
     if (!gt.empty() && (masks.empty() || !(scale > 0)))

@@ -282,6 +282,26 @@ TEST(AxiMemory, FlagsEachBrokenRule) {
   }
 }
 
+// An AR accepted at most every ar_interval cycles: ARVALID held high throughout,
+// ARREADY on every fourth cycle.
+TEST(AxiMemory, AcceptsAnArEveryIntervalCycles) {
+  MemoryModel mem(0x400, {});
+  mem.set_regions(regions());
+  AxiMemory axi(mem, {}, {}, 0, 4);
+  AxiPort p;
+  std::vector<int> accepted;
+  for (int c = 0; c < 12; ++c) {
+    axi.drive(p);
+    p.m_arvalid_o = true;
+    p.m_araddr_o = 0x100;
+    if (p.m_arready_i) accepted.push_back(c);
+    axi.sample(p);
+    mem.end_cycle();
+  }
+  EXPECT_EQ(accepted, (std::vector<int>{0, 4, 8}));
+  EXPECT_EQ(mem.violations().total(), 0) << mem.violations().describe();
+}
+
 TEST(AxiMemory, InjectsResponseErrors) {
   AxiBench b({}, {2, 1, 3});  // the second read burst and the first write burst: DECERR
   b.read(0x100, 1);
