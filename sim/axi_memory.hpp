@@ -158,6 +158,7 @@ class AxiMemory {
   };
 
   long now() const { return mem_.cycle(); }
+  static std::string hex(uint32_t v) { return MemoryModel::hex(v); }
 
   void stable(bool waiting, const Addr& held, const Addr& cur, const char* ch) {
     if (waiting && !(cur == held))
@@ -217,12 +218,6 @@ class AxiMemory {
       if (!bq_.empty()) due = std::max(due, bq_.back().due + 1);
       bq_.push_back({due, resp, std::move(writes)});
     }
-  }
-
-  static std::string hex(uint32_t v) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%08x", v);
-    return buf;
   }
 
   MemoryModel& mem_;

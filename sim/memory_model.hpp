@@ -156,6 +156,12 @@ class MemoryModel {
     stalled_ = false;
   }
 
+  // 8 hex digits, for the violation messages.
+  static std::string hex(uint32_t v) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%08x", v);
+    return buf;
+  }
 
  private:
   struct Pending {
@@ -228,12 +234,6 @@ class MemoryModel {
       }
     if (!inside && v_.bad_reads++ == 0)
       v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
-  }
-
-  static std::string hex(uint32_t v) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%08x", v);
-    return buf;
   }
 
   std::vector<uint8_t> mem_;
