@@ -74,14 +74,20 @@ module mcadsw_depth_fifo #(
 
   // The row's first column inside the image: h_x, or xlo in the first block.
   // The word being written holds columns word_x .. word_x + 3 (raw) or
-  // word_x .. word_x + 1 (wide): aligned, at or left of h_first, plus wofs_q.
-  // Mirrored, those columns are one aligned memory word too (xend is a
-  // multiple of 4), in reverse order.
+  // word_x .. word_x + 1 (wide), aligned: first_w (at or left of h_first) plus
+  // wofs_q. Mirrored, those columns are one aligned memory word too (xend is a
+  // multiple of 4), in reverse order, and the row is written from its last word
+  // (last_w, holding column h_end - 1) down, so that memory addresses ascend in
+  // both cases: one AXI4 INCR burst a row (mcadsw_axi_master).
   logic [CW-1:0] h_first;
   assign h_first = (h_x < CW'(xlo_i)) ? CW'(xlo_i) : h_x;
-  logic [CW:0] word_x;
-  assign word_x = (wide_i ? {1'b0, h_first[CW-1:1], 1'b0} : {1'b0, h_first[CW-1:2], 2'b00}) +
-                  (CW + 1)'(wofs_q);
+  logic [CW:0] first_w, last_w, h_last, word_x;
+  assign h_last  = h_end - (CW + 1)'(1);
+  assign first_w = wide_i ? {1'b0, h_first[CW-1:1], 1'b0} : {1'b0, h_first[CW-1:2], 2'b00};
+  assign last_w  = wide_i ? {h_last[CW:1], 1'b0} : {h_last[CW:2], 2'b00};
+  assign word_x  = !mirror_i ? first_w + (CW + 1)'(wofs_q) : last_w - (CW + 1)'(wofs_q);
+  logic h_last_lsb_unused;             // a word holds 2 or 4 columns: bit 0 never selects it
+  assign h_last_lsb_unused = h_last[0];
   logic [CW:0] mem_x;                  // first image column of the memory word
   assign mem_x = !mirror_i ? word_x :
                  {1'b0, xend_i} - word_x - (wide_i ? (CW + 1)'(2) : (CW + 1)'(4));
@@ -120,7 +126,8 @@ module mcadsw_depth_fifo #(
 
   logic row_written;
   assign row_written = wr_req_o && wr_gnt_i &&
-                       word_x + (wide_i ? (CW + 1)'(2) : (CW + 1)'(4)) >= h_end;
+                       (!mirror_i ? word_x + (wide_i ? (CW + 1)'(2) : (CW + 1)'(4)) >= h_end
+                                  : word_x <= first_w);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

@@ -50,33 +50,41 @@ std::vector<sim::Frame> two_frames(uint32_t seed) {
 }
 
 // Depth rows leave as write bursts: every block row (18 pixels, 18 or 36 bytes)
-// is one burst of up to 10 contiguous words, whatever the back-pressure; every
-// read is one beat.
+// is one burst of up to 10 contiguous words, whatever the back-pressure, also
+// mirrored (the right view as base: the depth FIFO writes such a row from its
+// last pass column down, so that addresses ascend); every read is one beat.
 TEST(Axi, DepthRowsAreWriteBursts) {
   std::mt19937 rng(21);
   Config cfg;
   cfg.disparities = 16;
-  const int w = 64, h = 48;
+  const int w = 64, h = 48;  // w a multiple of 4: the mirrored pass has w columns too
   const long block_rows = long(h) * ((w + kBlock - 1) / kBlock);
   const YuvImage l = test::random_yuv(w, h, rng), r = test::random_yuv(w, h, rng);
-  for (bool sub : {false, true})
-    for (bool random : {false, true}) {
-      SCOPED_TRACE(std::string(sub ? "sub-pixel" : "raw") + (random ? ", random back-pressure" : ""));
-      EngineOptions opt;
-      opt.subpixel = sub;
-      opt.latency.random = random;
-      opt.latency.seed = 9;
-      const EngineResult res = sim::run_engine(l, r, cfg, opt);
-      expect_exact(res);
-      EXPECT_EQ(res.write_bursts, block_rows);
-      // Each block row writes the words its pixels' bytes touch.
-      const int bpp = sub ? 2 : 1;
-      long words = 0;
-      for (int x0 = 0; x0 < w; x0 += kBlock)
-        words += (std::min(w, x0 + kBlock) * bpp - 1) / 4 - x0 * bpp / 4 + 1;
-      EXPECT_EQ(res.words_written, words * h);
-      EXPECT_EQ(res.read_bursts, res.words_read);
-    }
+  for (bool right : {false, true})
+    for (bool sub : {false, true})
+      for (bool random : {false, true}) {
+        SCOPED_TRACE(std::string(right ? "right view as base, " : "") + (sub ? "sub-pixel" : "raw") +
+                     (random ? ", random back-pressure" : ""));
+        EngineOptions opt;
+        opt.subpixel = sub;
+        opt.right = right;
+        opt.latency.random = random;
+        opt.latency.seed = 9;
+        const EngineResult res = sim::run_engine(l, r, cfg, opt);
+        expect_exact(res);
+        EXPECT_EQ(res.write_bursts, block_rows);
+        // Each block row writes the words its pixels' bytes touch; mirrored, pass
+        // columns x0 .. x1 - 1 are image columns w - x1 .. w - x0 - 1.
+        const int bpp = sub ? 2 : 1;
+        long words = 0;
+        for (int x0 = 0; x0 < w; x0 += kBlock) {
+          const int x1 = std::min(w, x0 + kBlock);
+          const int lo = right ? w - x1 : x0, hi = right ? w - x0 : x1;
+          words += (hi * bpp - 1) / 4 - lo * bpp / 4 + 1;
+        }
+        EXPECT_EQ(res.words_written, words * h);
+        EXPECT_EQ(res.read_bursts, res.words_read);
+      }
 }
 
 // SLVERR and DECERR on a read burst early and late in frame 0, and on a write
