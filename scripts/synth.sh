@@ -397,10 +397,10 @@ done < "$out/blocks.txt"
 nand2_total=$(awk '{s += $3 * $4} END {print s + 0}' "$out/block_figures.txt")
 ff_count=$(awk '{s += $3 * $5} END {print s + 0}' "$out/block_figures.txt")
 # The SoC wrapper around the engine (mcadsw_axi_top: AXI4-Lite registers, AXI4
-# master), mapped apart by scripts/synth_soc.sh (about 15 s).
+# master), mapped and timed apart by scripts/synth_soc.sh (about 20 s).
 "$root/scripts/synth_soc.sh" "$rtl" "$out/soc" "$lib" "$dmax" "$par" ||
   die "the SoC wrapper's synthesis failed (log: $out/soc/yosys.log)"
-read -r soc_regs soc_master < "$out/soc/nand2.txt"
+read -r soc_regs soc_master soc_slack < "$out/soc/nand2.txt"
 soc_total=$(( nand2_total + soc_regs + soc_master ))
 mem_bits=$(awk '{s += $5} END {print s + 0}' "$out/memories.txt")
 mem_count=$(wc -l < "$out/memories.txt")
@@ -476,7 +476,7 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "| figure | this engine | paper (Table III, UMC 90 nm) |"
   echo "|---|---|---|"
   echo "| gates (NAND2 equivalents, memories excluded) | $nand2_total | 563k |"
-  echo "| with the SoC wrapper (mcadsw_axi_top: AXI4-Lite registers $soc_regs, AXI4 master $soc_master) | $soc_total | |"
+  echo "| with the SoC wrapper (mcadsw_axi_top: AXI4-Lite registers $soc_regs, AXI4 master $soc_master; each timed alone, worst slack $soc_slack ns) | $soc_total | |"
   echo "| on-chip memory | $mem_bits bits = $mem_kb kB in $mem_count macros | 21.3 kB |"
   echo "| of which the engine of the paper (without the LR post stage) | $eng_bits bits = $eng_kb kB | 21.3 kB |"
   echo "| LR post stage (issue 17, beyond the paper): gates, memory | $post_nand2 NAND2 eq, $post_bits bits = $post_kb kB | |"
@@ -575,8 +575,8 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
 {
   printf '{"dmax": %d, "par": %d, "flow": "hierarchical", "nand2_eq": %d, "memory_bits": %d, "memory_kB": %s, "memory_macros": %d, ' \
     "$dmax" "$par" "$nand2_total" "$mem_bits" "$mem_kb" "$mem_count"
-  printf '"soc_regs_nand2_eq": %d, "soc_axi_master_nand2_eq": %d, "soc_total_nand2_eq": %d, ' \
-    "$soc_regs" "$soc_master" "$soc_total"
+  printf '"soc_regs_nand2_eq": %d, "soc_axi_master_nand2_eq": %d, "soc_total_nand2_eq": %d, "soc_worst_slack_ns": %s, ' \
+    "$soc_regs" "$soc_master" "$soc_total" "$soc_slack"
   printf '"memory_kB_engine": %s, "post_stage_nand2_eq": %d, "post_stage_memory_bits": %d, "post_stage_memory_kB": %s, ' \
     "$eng_kb" "$post_nand2" "$post_bits" "$post_kb"
   printf '"async_read_macros": %d, "data_register_bits": %d, ' "$async_count" "$reg_bits"
@@ -596,7 +596,7 @@ mv "$out/report.md.tmp" "$out/report.md"
 mv "$out/summary.json.tmp" "$out/summary.json"
 
 echo "synth: $nand2_total NAND2 eq (paper 563k), memory $mem_kb kB in $mem_count macros ($eng_kb kB without the LR post stage; paper 21.3 kB),"
-echo "       LR post stage $post_nand2 NAND2 eq, $post_kb kB; with the SoC wrapper (registers $soc_regs, AXI4 master $soc_master) $soc_total NAND2 eq,"
+echo "       LR post stage $post_nand2 NAND2 eq, $post_kb kB; with the SoC wrapper (registers $soc_regs, AXI4 master $soc_master, slack $soc_slack ns) $soc_total NAND2 eq,"
 echo "       worst slack $slack ns (WNS $wns ns) at $clock_mhz MHz, achievable $fmax MHz (paper 95 MHz)"
 echo "synth: report $out/report.md, summary $out/summary.json, netlist $out/mcadsw_top_osu018.v"
 echo "synth: wall time ${wall_s} s (${#queue[@]} blocks synthesised, ${#cached[@]} reused); peak memory ${proc_peak_mb} MB in one process ($proc_peak_what), ${sum_peak_mb} MB all processes together"

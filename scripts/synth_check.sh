@@ -55,6 +55,10 @@ soc_total=$(num soc_total_nand2_eq "$summary")
 if [ -n "$soc_total" ]; then
   check "gates with the SoC wrapper" "$soc_total" "<=" "$max_nand2" "" "the engine with its AXI4-Lite registers and AXI4 master exceeds the gate budget (build/synth/report.md)"
 fi
+soc_slack=$(num soc_worst_slack_ns "$summary")
+if [ -n "$soc_slack" ]; then
+  check "SoC wrapper slack" "$soc_slack" ">=" "$min_slack" "ns" "the register block or the AXI4 master misses the clock (build/synth/soc/sta.log)"
+fi
 # Optional: macros with an asynchronous read port (no SRAM offers one).
 max_async=$(num async_read_macros_max "$budget")
 if [ -n "$max_async" ]; then

@@ -110,6 +110,14 @@ echo '{"dmax": 64, "nand2_eq": 500000, "memory_kB": 57.0, "clock_mhz": 95.0, "wn
 rc=0; BUDGET=$work/budget.json SUMMARY=$work/within.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 0 ]; then echo "ok   synth_check within budget"
 else echo "FAIL synth_check within budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+# The engine within budget, its SoC wrapper not: the total over the gate budget, a
+# wrapper block missing the clock.
+echo '{"dmax": 64, "nand2_eq": 500000, "soc_total_nand2_eq": 570000, "soc_worst_slack_ns": -0.1, "memory_kB": 57.0, "clock_mhz": 95.0, "wns_ns": 0, "worst_slack_ns": 0.3}' > "$work/soc.json"
+rc=0; BUDGET=$work/budget.json SUMMARY=$work/soc.json "$root/scripts/synth_check.sh" > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 1 ] && grep -q "FAILED  gates with the SoC wrapper" "$work/check.out" &&
+   grep -q "FAILED  SoC wrapper slack" "$work/check.out" && ! grep -q "FAILED  gates (NAND2" "$work/check.out"; then
+  echo "ok   synth_check SoC wrapper over budget (exit 1)"
+else echo "FAIL synth_check SoC wrapper over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
 # A budget that forbids asynchronous-read macros: a summary with one fails, one
 # without the figure is an error (exit 2), one with none passes.
 echo '{"nand2_eq_max": 563000, "wns_ns_min": 0, "memory_kB_max": 57.1, "async_read_macros_max": 0, "clock_mhz": 95.0}' > "$work/budget_async.json"
