@@ -143,7 +143,7 @@ module mcadsw_axi_master #(
   assign contig     = mem_addr_i == ob_next_q && mem_addr_i[11:0] != 12'd0;
   assign need_close = ob_n_q != '0 && (ob_n_q == NB'(BL) || !contig);
   assign wr_take    = wr_req && !wbuf_full && (!need_close || desc_room);
-  assign do_close   = ob_n_q != '0 && desc_room && (!wr_req || need_close || ob_n_q == NB'(BL));
+  assign do_close   = ob_n_q != '0 && desc_room && (!wr_req || need_close);
   assign mem_gnt_o  = rd_take || wr_take;
 
   // ---- AW, W, B -------------------------------------------------------------------------

@@ -111,7 +111,6 @@ class AxiMemory {
     write_bursts();
   }
 
-  void end_cycle() {}
   // Reset with the master: everything in flight is forgotten.
   void reset() {
     rq_.clear();
@@ -122,7 +121,6 @@ class AxiMemory {
   }
   long read_bursts() const { return n_reads_; }
   long write_bursts_done() const { return n_writes_; }
-  long beats_read() const { return beats_read_; }
 
  private:
   struct Addr {
@@ -190,7 +188,6 @@ class AxiMemory {
     for (unsigned i = 0; i <= a.len; ++i, ++due) {
       const uint32_t data = ok && resp == 0 ? mem_.read_word(a.addr + 4 * i) : 0xdeadbeef;
       rq_.push_back({due, data, resp, i == a.len});
-      ++beats_read_;
     }
   }
 
@@ -235,7 +232,7 @@ class AxiMemory {
   bool ar_wait_ = false, aw_wait_ = false, w_wait_ = false;
   Addr ar_held_, aw_held_;
   Beat w_held_;
-  long n_reads_ = 0, n_writes_ = 0, beats_read_ = 0;
+  long n_reads_ = 0, n_writes_ = 0;
 };
 
 }  // namespace mcadsw::sim

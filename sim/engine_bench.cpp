@@ -267,20 +267,22 @@ void program(Engine& e, const RawConfig& c, const WeightTable& table) {
   wr(regs::kIrqEnable, 1u << regs::kIrqDoneLsb | 1u << regs::kIrqErrorLsb);
 }
 
+// Writes 1 to a CTRL pulse bit (START, ABORT), the mode kept (read-modify-write;
+// the pulse bits read 0).
+void ctrl_pulse(Engine& e, int lsb) {
+  auto& axi = e.axi();
+  axi.write(regs::kCtrl, axi.read(regs::kCtrl) | 1u << lsb);
+}
+
 // Clears the sticky status bits and writes CTRL.START with the mode programmed.
 void start(Engine& e) {
-  auto& axi = e.axi();
-  axi.write(regs::kStatus, 1u << regs::kStatusDoneLsb | 1u << regs::kStatusErrorLsb);
-  axi.write(regs::kCtrl, (axi.read(regs::kCtrl) & ~1u) | 1u << regs::kCtrlStartLsb);
+  e.axi().write(regs::kStatus, 1u << regs::kStatusDoneLsb | 1u << regs::kStatusErrorLsb);
+  ctrl_pulse(e, regs::kCtrlStartLsb);
 }
 
 bool frame_over(Engine& e) { return e.top().irq_o; }
 
-// CTRL.ABORT, the mode kept (read-modify-write, as for START).
-void abort_frame(Engine& e) {
-  auto& axi = e.axi();
-  axi.write(regs::kCtrl, (axi.read(regs::kCtrl) & ~1u) | 1u << regs::kCtrlAbortLsb);
-}
+void abort_frame(Engine& e) { ctrl_pulse(e, regs::kCtrlAbortLsb); }
 
 // Status and counters, read as a driver reads them.
 void read_status(Engine& e, EngineResult& r) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine_bench.hpp"
+#include "engine_expect.hpp"
 #include "mcadsw/ref.hpp"
 #include "mcadsw/regs.hpp"
 #include "test_util.hpp"
@@ -21,13 +22,7 @@ namespace {
 using sim::EngineOptions;
 using sim::EngineResult;
 
-void expect_exact(const EngineResult& r) {
-  EXPECT_FALSE(r.timed_out) << "engine did not finish";
-  EXPECT_FALSE(r.error) << "frame ended with error code " << r.error_code;
-  EXPECT_EQ(r.mismatches, 0) << r.report;
-  EXPECT_EQ(r.bus.total(), 0) << r.bus.describe();
-  EXPECT_TRUE(r.clean());
-}
+using test::expect_exact;
 
 // A frame ended early: not hung, DONE with ERROR and the code, and the bus
 // rules kept while it drained (reads and writes stay inside the planes).

@@ -11,6 +11,7 @@
 
 #include "Vmcadsw_axi_top.h"
 #include "engine_bench.hpp"
+#include "engine_expect.hpp"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
@@ -21,15 +22,7 @@ namespace {
 using sim::EngineOptions;
 using sim::EngineResult;
 
-void expect_exact(const EngineResult& r) {
-  EXPECT_FALSE(r.timed_out) << "engine did not finish";
-  EXPECT_FALSE(r.error) << "configuration rejected, code " << r.error_code;
-  EXPECT_EQ(r.mismatches, 0) << r.report;
-  EXPECT_EQ(r.bus.total(), 0) << r.report;
-  EXPECT_TRUE(r.clean());
-  std::printf("%dx%d D=%d: %ld cycles, %ld words read, %ld written, %ld stall cycles\n", r.width,
-              r.height, r.disparities, r.cycles, r.words_read, r.words_written, r.stall_cycles);
-}
+using test::expect_exact;
 
 TEST(Engine, RandomPairSmallerThanOneBlock) {
   std::mt19937 rng(1);
