@@ -2,9 +2,11 @@
 // request/grant memory port (docs/memory_map.md) on an AXI4 bus, one ID (all
 // responses in order), 32-bit data, INCR bursts.
 //
-// Reads: each granted read is an AR of one beat (ARLEN 0), registered; up to
-// ROUTS reads in flight; RREADY is always high, R beats go back to the engine
-// as rvalid/rdata (the engine's readers take a word every cycle).
+// Reads: each granted read is one AR, registered, of mem_len_i + 1 beats
+// (ARLEN = mem_len_i; the engine's readers ask for bursts in the column-tiled
+// layout and never across 4 KiB); up to ROUTS beats in flight; RREADY is always
+// high, R beats go back to the engine as rvalid/rdata (the engine's readers
+// take a word every cycle).
 // Writes: granted writes are buffered (WD beats) and gathered into bursts of
 // contiguous words: a burst is closed by a cycle without a write request, by a
 // write that does not continue it, by BL beats, or before a 4 KiB boundary.
@@ -24,7 +26,7 @@ module mcadsw_axi_master #(
   parameter int AW    = 32,
   parameter int BL    = 16,   // longest write burst, beats
   parameter int WD    = 16,   // write buffer, beats (at least BL)
-  parameter int ROUTS = 32,   // reads in flight
+  parameter int ROUTS = 32,   // read beats in flight
   parameter int BOUTS = 7     // write bursts waiting for B
 ) (
   input  logic          clk_i,
@@ -35,6 +37,7 @@ module mcadsw_axi_master #(
   input  logic          mem_we_i,
   input  logic [3:0]    mem_be_i,
   input  logic [AW-1:0] mem_addr_i,
+  input  logic [3:0]    mem_len_i,     // read: beats - 1
   input  logic [31:0]   mem_wdata_i,
   output logic          mem_rvalid_o,
   output logic [31:0]   mem_rdata_o,
@@ -87,7 +90,6 @@ module mcadsw_axi_master #(
 
   assign m_arsize_o  = 3'd2;     // 4 bytes a beat
   assign m_arburst_o = 2'b01;    // INCR
-  assign m_arlen_o   = 8'd0;
   assign m_awsize_o  = 3'd2;
   assign m_awburst_o = 2'b01;
   assign m_rready_o  = 1'b1;
@@ -96,12 +98,14 @@ module mcadsw_axi_master #(
   // ---- Reads ---------------------------------------------------------------------------
   logic          arvalid_q;
   logic [AW-1:0] araddr_q;
-  logic [RB-1:0] rd_out_q;                 // ARs accepted from the engine, R not yet seen
+  logic [3:0]    arlen_q;
+  logic [RB-1:0] rd_out_q;                 // beats of reads taken from the engine, R not yet seen
   logic          rd_take;
   assign rd_take = mem_req_i && !mem_we_i && !drain_i && (!arvalid_q || m_arready_i) &&
-                   rd_out_q != RB'(ROUTS);
+                   (RB + 1)'(rd_out_q) + (RB + 1)'(mem_len_i) < (RB + 1)'(ROUTS);
   assign m_arvalid_o  = arvalid_q;
   assign m_araddr_o   = araddr_q;
+  assign m_arlen_o    = 8'(arlen_q);
   assign mem_rvalid_o = m_rvalid_i && !drain_i;
   assign mem_rdata_o  = m_rdata_i;
   assign rd_err_o     = m_rvalid_i && m_rresp_i[1];
@@ -110,15 +114,17 @@ module mcadsw_axi_master #(
     if (!rst_ni) begin
       arvalid_q <= 1'b0;
       araddr_q  <= '0;
+      arlen_q   <= '0;
       rd_out_q  <= '0;
     end else begin
       if (rd_take) begin
         arvalid_q <= 1'b1;
         araddr_q  <= mem_addr_i;
+        arlen_q   <= mem_len_i;
       end else if (m_arready_i) begin
         arvalid_q <= 1'b0;
       end
-      rd_out_q <= rd_out_q + RB'(rd_take) - RB'(m_rvalid_i);
+      rd_out_q <= rd_out_q + (rd_take ? RB'(mem_len_i) + RB'(1) : '0) - RB'(m_rvalid_i);
     end
   end
 
@@ -233,17 +239,46 @@ module mcadsw_axi_master #(
                      wlq_n_q == 2'd0 && b_out_q == '0;
   assign idle_o    = wr_idle_o && rd_out_q == '0;
 
-  // m_rlast_i: every read is one beat, so every R beat is the last.
+  // The beats of a burst are counted, RLAST is checked in simulation only.
   logic unused;
   assign unused = m_rlast_i ^ m_rresp_i[0] ^ m_bresp_i[0];
 
 `ifndef SYNTHESIS
+  // The lengths of the read bursts in flight, for the RLAST check.
+  logic [ROUTS*4-1:0] rlen_q;
+  logic [RB-1:0]      rlen_n_q;
+  logic [3:0]         rbeat_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rlen_q   <= '0;
+      rlen_n_q <= '0;
+      rbeat_q  <= '0;
+    end else begin
+      logic [ROUTS*4-1:0] q;
+      logic [RB-1:0]      n;
+      q = rlen_q;
+      n = rlen_n_q;
+      if (m_rvalid_i && m_rlast_i) begin
+        q = q >> 4;
+        n = n - RB'(1);
+      end
+      if (rd_take) begin
+        q[32'(n)*4 +: 4] = mem_len_i;
+        n = n + RB'(1);
+      end
+      rlen_q   <= q;
+      rlen_n_q <= n;
+      if (m_rvalid_i) rbeat_q <= m_rlast_i ? '0 : rbeat_q + 4'd1;
+    end
+  end
   // Invariants, checked in simulation (the AXI memory model of the harness
   // checks the bus itself).
   always @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
       assert (!(m_rvalid_i && rd_out_q == '0))
         else $error("axi_master: R beat with no read in flight");
+      assert (!(m_rvalid_i && m_rlast_i != (rbeat_q == rlen_q[3:0])))
+        else $error("axi_master: RLAST not on the last beat of a read burst");
       assert (!(m_bvalid_i && b_out_q == '0))
         else $error("axi_master: B response with no write burst in flight");
       assert (!(wr_take && rd_take)) else $error("axi_master: read and write granted together");

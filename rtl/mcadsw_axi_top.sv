@@ -71,7 +71,7 @@ module mcadsw_axi_top #(
   localparam int DCB  = mcadsw_pkg::COLOR_DIST_BITS;
 
   logic [AW-1:0]       base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, base_dl,
-                       base_dr, base_mask, stride, out_stride;
+                       base_dr, base_mask, stride, out_stride, tile_stride;
   logic [2:0]          mode;
   logic [7:0]          lr_t;
   logic [CW-1:0]       width, height;
@@ -93,6 +93,7 @@ module mcadsw_axi_top #(
     .cfg_base_ry_o (base_ry), .cfg_base_ru_o (base_ru), .cfg_base_rv_o (base_rv),
     .cfg_base_out_o (base_out), .cfg_base_dl_o (base_dl), .cfg_base_dr_o (base_dr),
     .cfg_base_mask_o (base_mask), .cfg_stride_o (stride), .cfg_out_stride_o (out_stride),
+    .cfg_tile_stride_o (tile_stride),
     .cfg_mode_o (mode), .cfg_lr_t_o (lr_t), .cfg_width_o (width), .cfg_height_o (height),
     .cfg_disp_o (disp), .cfg_thr_o (thr), .start_o (start), .abort_o (abort),
     .busy_i (busy), .done_i (done), .error_i (error), .error_code_i (error_code),
@@ -128,7 +129,7 @@ module mcadsw_axi_top #(
   assign error_code = ended_q ? end_code_q : eng_code;
 
   logic          mem_req, mem_gnt, mem_we, mem_rvalid;
-  logic [3:0]    mem_be;
+  logic [3:0]    mem_be, mem_len;
   logic [AW-1:0] mem_addr;
   logic [31:0]   mem_wdata, mem_rdata;
 
@@ -138,20 +139,23 @@ module mcadsw_axi_top #(
     .cfg_base_ry_i (base_ry), .cfg_base_ru_i (base_ru), .cfg_base_rv_i (base_rv),
     .cfg_base_out_i (base_out), .cfg_base_dl_i (base_dl), .cfg_base_dr_i (base_dr),
     .cfg_base_mask_i (base_mask), .cfg_stride_i (stride), .cfg_out_stride_i (out_stride),
+    .cfg_tile_stride_i (tile_stride),
     .cfg_mode_i (mode), .cfg_lr_t_i (lr_t), .cfg_width_i (width), .cfg_height_i (height),
     .cfg_disp_i (disp), .cfg_thr_i (thr), .start_i (start),
     .busy_o (eng_busy), .done_o (eng_done), .error_o (eng_error), .error_code_o (eng_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_words_read),
     .cnt_words_written_o (cnt_words_written), .cnt_stall_o (cnt_stall),
     .mem_req_o (mem_req), .mem_gnt_i (mem_gnt), .mem_we_o (mem_we), .mem_be_o (mem_be),
-    .mem_addr_o (mem_addr), .mem_wdata_o (mem_wdata), .mem_rvalid_i (mem_rvalid),
+    .mem_addr_o (mem_addr), .mem_len_o (mem_len), .mem_wdata_o (mem_wdata),
+    .mem_rvalid_i (mem_rvalid),
     .mem_rdata_i (mem_rdata), .mem_wr_idle_i (wr_idle)
   );
 
   mcadsw_axi_master #(.AW(AW)) u_axi_master (
     .clk_i, .rst_ni,
     .mem_req_i (mem_req), .mem_gnt_o (mem_gnt), .mem_we_i (mem_we), .mem_be_i (mem_be),
-    .mem_addr_i (mem_addr), .mem_wdata_i (mem_wdata), .mem_rvalid_o (mem_rvalid),
+    .mem_addr_i (mem_addr), .mem_len_i (mem_len), .mem_wdata_i (mem_wdata),
+    .mem_rvalid_o (mem_rvalid),
     .mem_rdata_o (mem_rdata),
     .drain_i (drain_q), .wr_idle_o (wr_idle), .idle_o (bus_idle), .rd_err_o (rd_err),
     .wr_err_o (wr_err),

@@ -4,9 +4,12 @@
 // the cost aggregator is expensive); the readers share by round robin.
 //
 // External port (like ibex's data port): req_o/gnt_i handshake with we_o,
-// be_o, addr_o, wdata_o; each granted read returns rdata_i with rvalid_i, in
-// order, one or more cycles later; writes return nothing. The requestor of
-// each read in flight is kept in order, so responses are routed back.
+// be_o, addr_o, wdata_o and, for reads, len_o; a granted read is a burst of
+// len_o + 1 words at consecutive addresses (the readers ask for bursts in the
+// column-tiled layout, docs/memory_map.md), returned as len_o + 1 rdata_i
+// beats with rvalid_i, in order, one or more cycles later; writes are one word
+// and return nothing. The requestor and length of each read burst in flight
+// are kept in order, so the beats are routed back.
 //
 // A request the memory does not grant is presented again, unchanged (req, we,
 // be, addr, wdata), until its grant, as OBI and AXI require: the choice of a
@@ -24,6 +27,7 @@ module mcadsw_mem_ctrl #(
   // Readers
   input  logic [NR-1:0]    rd_req_i,
   input  logic [NR*AW-1:0] rd_addr_i,
+  input  logic [NR*4-1:0]  rd_len_i,     // beats - 1
   output logic [NR-1:0]    rd_gnt_o,
   output logic [NR-1:0]    rd_rvalid_o,
   output logic [31:0]      rd_rdata_o,   // shared: valid for the reader with rd_rvalid_o
@@ -39,6 +43,7 @@ module mcadsw_mem_ctrl #(
   output logic             mem_we_o,
   output logic [3:0]       mem_be_o,
   output logic [AW-1:0]    mem_addr_o,
+  output logic [3:0]       mem_len_o,    // read burst: beats - 1 (0 for writes)
   output logic [31:0]      mem_wdata_o,
   input  logic             mem_rvalid_i,
   input  logic [31:0]      mem_rdata_i
@@ -63,9 +68,13 @@ module mcadsw_mem_ctrl #(
     end
   end
 
-  // ---- Reads in flight: requestor ids in order ------------------------------------
+  // ---- Read bursts in flight: requestor ids and lengths in order -----------------------
   logic [OUTS*IB-1:0] ids_q;
+  logic [OUTS*4-1:0]  lens_q;
   logic [OB-1:0]      nids_q;
+  logic [3:0]         beat_q;         // beats of the head burst already returned
+  logic               head_last;      // this beat ends the head burst
+  assign head_last = beat_q == lens_q[3:0];
   logic               rd_ok;          // room to track another read
   assign rd_ok = nids_q != OB'(OUTS);
 
@@ -83,6 +92,7 @@ module mcadsw_mem_ctrl #(
   assign mem_we_o    = write_sel;
   assign mem_be_o    = write_sel ? wr_be_i : 4'hf;
   assign mem_addr_o  = write_sel ? wr_addr_i : rd_addr_i[32'(rd_id)*AW +: AW];
+  assign mem_len_o   = write_sel ? 4'd0 : rd_len_i[32'(rd_id)*4 +: 4];
   assign mem_wdata_o = write_sel ? wr_wdata_i : 32'h0;
   assign wr_gnt_o    = write_sel && mem_gnt_i;
   for (genvar r = 0; r < NR; r++) begin : g_gnt
@@ -95,33 +105,43 @@ module mcadsw_mem_ctrl #(
     if (!rst_ni) begin
       last_q    <= '0;
       ids_q     <= '0;
+      lens_q    <= '0;
       nids_q    <= '0;
+      beat_q    <= '0;
       hold_q    <= 1'b0;
       hold_wr_q <= 1'b0;
       hold_id_q <= '0;
     end else begin
       logic [OUTS*IB-1:0] ids;
+      logic [OUTS*4-1:0]  lens;
       logic [OB-1:0]      n;
       hold_q    <= mem_req_o && !mem_gnt_i;
       hold_wr_q <= write_sel;
       hold_id_q <= rd_id;
-      ids = ids_q;
-      n   = nids_q;
-      if (mem_rvalid_i) begin
-        ids = ids >> IB;
-        n   = n - OB'(1);
+      ids  = ids_q;
+      lens = lens_q;
+      n    = nids_q;
+      if (mem_rvalid_i) beat_q <= head_last ? 4'd0 : beat_q + 4'd1;
+      if (mem_rvalid_i && head_last) begin
+        ids  = ids >> IB;
+        lens = lens >> 4;
+        n    = n - OB'(1);
       end
       if (read_sel && mem_gnt_i) begin
         ids[32'(n)*IB +: IB] = rd_id;
+        lens[32'(n)*4 +: 4]  = mem_len_o;
         n = n + OB'(1);
         last_q <= rd_id;
       end
       ids_q  <= ids;
+      lens_q <= lens;
       nids_q <= n;
     end
   end
 
 `ifndef SYNTHESIS
+  logic [3:0] hold_len_q;
+  always_ff @(posedge clk_i) hold_len_q <= mem_len_o;
   // Invariants (docs/architecture.md section 9), checked in simulation.
   logic [NR:0] grants;
   assign grants = {wr_gnt_o, rd_gnt_o};
@@ -135,6 +155,8 @@ module mcadsw_mem_ctrl #(
         else $error("mem_ctrl: external memory returned read data with no read outstanding");
       assert (!(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
         else $error("mem_ctrl: a requestor withdrew a request that was not granted");
+      assert (!(hold_q && !hold_wr_q && mem_len_o != hold_len_q))
+        else $error("mem_ctrl: a reader changed the length of a request that was not granted");
     end
   end
 `endif

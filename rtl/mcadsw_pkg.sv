@@ -41,7 +41,7 @@ package mcadsw_pkg;
   localparam int REG_SPAN = 256;  // bytes decoded
   localparam logic [31:0] ID_VALUE = 32'h4D434144;
   localparam int VERSION_MAJOR = 1;
-  localparam int VERSION_MINOR = 0;
+  localparam int VERSION_MINOR = 1;
   // Byte offsets
   localparam int REG_ID             = 'h00;  // RO identification, "MCAD"
   localparam int REG_VERSION        = 'h04;  // RO register map version
@@ -65,6 +65,7 @@ package mcadsw_pkg;
   localparam int REG_SIZE           = 'h50;  // RW image width and height
   localparam int REG_DISP           = 'h54;  // RW D, the disparities searched
   localparam int REG_LR_T           = 'h58;  // RW LR: check tolerance T
+  localparam int REG_TILE_STRIDE    = 'h5C;  // RW input planes column-tiled: bytes from one 4-pixel column to the next; 0: raster
   localparam int REG_THR0           = 'h60;  // RW weight table threshold 0
   localparam int REG_THR1           = 'h64;  // RW threshold 1
   localparam int REG_THR2           = 'h68;  // RW threshold 2

@@ -65,6 +65,7 @@ module mcadsw_regs #(
   output logic [AW-1:0]       cfg_base_mask_o,
   output logic [AW-1:0]       cfg_stride_o,
   output logic [AW-1:0]       cfg_out_stride_o,
+  output logic [AW-1:0]       cfg_tile_stride_o, // 0: raster input planes
   output logic [2:0]          cfg_mode_o,
   output logic [7:0]          cfg_lr_t_o,
   output logic [CW-1:0]       cfg_width_o,
@@ -99,6 +100,7 @@ module mcadsw_regs #(
   localparam int S_SIZE   = mcadsw_pkg::REG_SIZE / 4;
   localparam int S_DISP   = mcadsw_pkg::REG_DISP / 4;
   localparam int S_LRT    = mcadsw_pkg::REG_LR_T / 4;
+  localparam int S_TILE   = mcadsw_pkg::REG_TILE_STRIDE / 4;
   localparam int S_THR0   = mcadsw_pkg::REG_THR0 / 4;        // THR0 .. THR6: NTHR slots
   localparam int S_CYC    = mcadsw_pkg::REG_CYCLES / 4;
   localparam int S_RD     = mcadsw_pkg::REG_WORDS_READ / 4;
@@ -133,14 +135,14 @@ module mcadsw_regs #(
   function automatic logic slot_mapped(input int s);
     slot_mapped = s == S_ID || s == S_VER || s == S_HWCFG || s == S_CTRL || s == S_STATUS ||
                   s == S_IRQEN || s == S_IRQST || (s >= S_BASE0 && s < S_BASE0 + NBASE) ||
-                  s == S_STRIDE || s == S_OSTR || s == S_SIZE || s == S_DISP || s == S_LRT ||
+                  s == S_STRIDE || s == S_OSTR || s == S_SIZE || s == S_DISP || s == S_LRT || s == S_TILE ||
                   (s >= S_THR0 && s < S_THR0 + NTHR) || s == S_CYC || s == S_RD || s == S_WR ||
                   s == S_STALL;
   endfunction
 
   // ---- Register file ---------------------------------------------------------------
   logic [NBASE*32-1:0]   base_q;     // BASE_LY .. BASE_MASK, base i at 32 i
-  logic [31:0]           stride_q, out_stride_q;
+  logic [31:0]           stride_q, out_stride_q, tile_q;
   logic [2:0]            mode_q;
   logic [CW-1:0]         width_q, height_q;
   logic [DW-1:0]         disp_q;
@@ -242,6 +244,7 @@ module mcadsw_regs #(
     if (!rst_ni) begin
       stride_q     <= '0;
       out_stride_q <= '0;
+      tile_q       <= '0;
       mode_q       <= '0;
       width_q      <= '0;
       height_q     <= '0;
@@ -257,6 +260,7 @@ module mcadsw_regs #(
     end else begin
       if (hit[S_STRIDE]) stride_q <= wnew;
       if (hit[S_OSTR]) out_stride_q <= wnew;
+      if (hit[S_TILE]) tile_q <= wnew;
       if (hit[S_SIZE]) begin
         width_q  <= wnew[F_WIDTH +: CW];
         height_q <= wnew[F_HEIGHT +: CW];
@@ -301,6 +305,7 @@ module mcadsw_regs #(
   assign cur[S_BASE0*32 +: NBASE*32] = base_q;
   assign cur[S_STRIDE*32 +: 32] = stride_q;
   assign cur[S_OSTR*32 +: 32]   = out_stride_q;
+  assign cur[S_TILE*32 +: 32]   = tile_q;
   assign cur[S_SIZE*32 +: 32]   = (32'(width_q) << F_WIDTH) | (32'(height_q) << F_HEIGHT);
   assign cur[S_DISP*32 +: 32]   = 32'(disp_q) << F_D;
   assign cur[S_LRT*32 +: 32]    = 32'(lr_t_q) << F_T;
@@ -352,6 +357,7 @@ module mcadsw_regs #(
   assign cfg_base_mask_o  = base_q[9*32 +: 32];
   assign cfg_stride_o     = stride_q;
   assign cfg_out_stride_o = out_stride_q;
+  assign cfg_tile_stride_o = tile_q;
   assign cfg_mode_o       = mode_q;
   assign cfg_lr_t_o       = lr_t_q;
   assign cfg_width_o      = width_q;

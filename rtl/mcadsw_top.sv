@@ -29,6 +29,7 @@ module mcadsw_top #(
   input  logic [AW-1:0]       cfg_base_mask_i, // LR: validity mask plane (input stride)
   input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of the input planes
   input  logic [AW-1:0]       cfg_out_stride_i,// bytes per row of the disparity plane
+  input  logic [AW-1:0]       cfg_tile_stride_i,// input planes column-tiled: bytes per 4-pixel column; 0: raster
   input  logic [2:0]          cfg_mode_i,      // bit 0 sub-pixel, bit 1 LR, bit 2 right base
   input  logic [7:0]          cfg_lr_t_i,      // LR: check tolerance T, 0 .. LR_T_MAX
   input  logic [CW-1:0]       cfg_width_i,
@@ -51,6 +52,7 @@ module mcadsw_top #(
   output logic                mem_we_o,
   output logic [3:0]          mem_be_o,
   output logic [AW-1:0]       mem_addr_o,
+  output logic [3:0]          mem_len_o,       // read burst: beats - 1 (writes: 0)
   output logic [31:0]         mem_wdata_o,
   input  logic                mem_rvalid_i,
   input  logic [31:0]         mem_rdata_i,
@@ -82,6 +84,7 @@ module mcadsw_top #(
   // right view as base.
   logic [AW-1:0]       base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q;
   logic [AW-1:0]       out_stride_q;
+  logic [AW-1:0]       tile_q;         // input planes column-tiled (0: raster)
   // The pass's columns: the image lies in columns xlo_q .. xend_q - 1. With the
   // right view as base the pass runs mirrored (docs/architecture.md section 12):
   // pass column c is image column W4 - 1 - c, W4 the width rounded up to 4.
@@ -106,7 +109,7 @@ module mcadsw_top #(
   // 5 base alignment, 6 a written plane overlaps a read or another written plane,
   // 7 output stride, 8 mode, 9 a plane reaches beyond the 32-bit address space,
   // 10 LR tolerance, 11 LR width, 12 LR right colour planes not configured.
-  localparam int SB = AW + CW;         // plane sizes: stride x height, exact
+  localparam int SB = AW + CW;         // plane sizes: stride x height (or x columns), exact
   function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
     overlaps = (SB'(a) < SB'(b) + b_size) && (SB'(b) < SB'(a) + a_size);
@@ -142,10 +145,18 @@ module mcadsw_top #(
   assign wr_outs = 4'b0101;
 
   always_comb begin
-    logic [SB-1:0] size, out_size;
+    logic [SB-1:0] size, in_size, out_size;
     logic [CW:0]   out_bytes;          // bytes of an output row
     logic          misaligned, overlap, past;
+    logic          tiled;
+    logic [CW-1:0] wcols;              // columns of 4 pixels
+    tiled     = tile_q != '0;
+    wcols     = width_q + CW'(3);
+    wcols     = wcols >> 2;
     size      = SB'(stride_q) * SB'(height_q);
+    // The input planes: raster, stride x height; column-tiled, tile x the
+    // columns of 4 pixels.
+    in_size   = tiled ? SB'(tile_q) * SB'(wcols) : size;
     out_size  = SB'(out_stride_q) * SB'(height_q);
     out_bytes = sub_q ? {width_q, 1'b0} : {1'b0, width_q};
     misaligned = 1'b0;
@@ -153,7 +164,7 @@ module mcadsw_top #(
     overlap    = 1'b0;
     for (int i = 0; i < NIN; i++) begin
       misaligned = misaligned || (in_en[i] && in_base[i*AW +: 2] != 2'b00);
-      past       = past || (in_en[i] && beyond(in_base[i*AW +: AW], size));
+      past       = past || (in_en[i] && beyond(in_base[i*AW +: AW], in_size));
     end
     for (int o = 0; o < NWR; o++) begin
       misaligned = misaligned || (wr_en[o] && wr_base[o*AW +: 2] != 2'b00);
@@ -161,7 +172,7 @@ module mcadsw_top #(
       for (int i = 0; i < NIN; i++)
         overlap = overlap || (wr_en[o] && in_en[i] &&
                               overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
-                                       in_base[i*AW +: AW], size));
+                                       in_base[i*AW +: AW], in_size));
       for (int p = 0; p < NWR; p++)         // each pair once: p > o
         overlap = overlap || (p > o && wr_en[o] && wr_en[p] &&
                               overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
@@ -171,7 +182,10 @@ module mcadsw_top #(
     if (width_q == '0 || 32'(width_q) > mcadsw_pkg::MAX_WIDTH) check = 4'd1;
     else if (height_q == '0 || 32'(height_q) > mcadsw_pkg::MAX_HEIGHT) check = 4'd2;
     else if (disp_q == '0 || 32'(disp_q) > DMAX) check = 4'd3;
-    else if (stride_q < AW'(width_q) || (stride_q & AW'(3)) != '0) check = 4'd4;
+    // STRIDE is the input planes' (raster) and, in the LR mode, dR's and the mask's.
+    else if ((!tiled || lr_q) && (stride_q < AW'(width_q) || (stride_q & AW'(3)) != '0))
+      check = 4'd4;
+    else if (tiled && (tile_q < AW'({height_q, 2'b00}) || (tile_q & AW'(3)) != '0)) check = 4'd4;
     else if (misaligned) check = 4'd5;
     else if (overlap) check = 4'd6;
     else if (out_stride_q < AW'(out_bytes) || (out_stride_q & AW'(3)) != '0) check = 4'd7;
@@ -215,7 +229,7 @@ module mcadsw_top #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q} <= '0;
+      {base_by_q, base_bu_q, base_bv_q, base_my_q, base_out_q, stride_q, tile_q} <= '0;
       {out_stride_q, xend_q, xlo_q, height_q, disp_q, thr_q, sub_q, right_q} <= '0;
       {width_q, lr_q, lr_sub_q, pass_q, chk_q} <= '0;
       {base_ru_q, base_rv_q, base_dl_q, base_dr_q, base_mask_q, base_fout_q, lr_t_q} <= '0;
@@ -232,6 +246,7 @@ module mcadsw_top #(
         base_out_q <= cfg_lr ? cfg_base_dl_i : cfg_base_out_i;
         stride_q   <= cfg_stride_i;
         out_stride_q <= cfg_out_stride_i;
+        tile_q     <= cfg_tile_stride_i;
         sub_q      <= cfg_sub;
         xend_q     <= cfg_right ? w4(cfg_width_i) : cfg_width_i;
         xlo_q      <= cfg_right ? w4_lo(cfg_width_i) : 2'd0;
@@ -324,7 +339,9 @@ module mcadsw_top #(
       cnt_stall_o         <= '0;
     end else if (sched_busy || lr_run_q || fin_q) begin
       cnt_cycles_o        <= cnt_cycles_o + 32'd1;
-      cnt_words_read_o    <= cnt_words_read_o + 32'(mem_req_o && mem_gnt_i && !mem_we_o);
+      // A granted read is a burst of mem_len_o + 1 words.
+      if (mem_req_o && mem_gnt_i && !mem_we_o)
+        cnt_words_read_o <= cnt_words_read_o + 32'(mem_len_o) + 32'd1;
       cnt_words_written_o <= cnt_words_written_o + 32'(mem_req_o && mem_gnt_i && mem_we_o);
       cnt_stall_o         <= cnt_stall_o + 32'(mem_req_o && !mem_gnt_i);
     end
@@ -454,6 +471,7 @@ module mcadsw_top #(
   localparam int NR = 3;
   logic [NR-1:0]    rd_req, rd_gnt, rd_rvalid;
   logic [NR*AW-1:0] rd_addr;
+  logic [NR*4-1:0]  rd_len;
   logic [31:0]      rd_rdata;
   logic             wr_req, wr_gnt;
   logic [AW-1:0]    wr_addr;
@@ -462,16 +480,17 @@ module mcadsw_top #(
   logic             eng_req, eng_gnt, eng_we, eng_rvalid;
   logic [3:0]       eng_be;
   logic [AW-1:0]    eng_addr;
+  logic [3:0]       eng_len;
   logic [31:0]      eng_wdata;
 
   mcadsw_mem_ctrl #(.NR(NR), .AW(AW)) u_mem_ctrl (
     .clk_i, .rst_ni,
-    .rd_req_i (rd_req), .rd_addr_i (rd_addr), .rd_gnt_o (rd_gnt),
+    .rd_req_i (rd_req), .rd_addr_i (rd_addr), .rd_len_i (rd_len), .rd_gnt_o (rd_gnt),
     .rd_rvalid_o (rd_rvalid), .rd_rdata_o (rd_rdata),
     .wr_req_i (wr_req), .wr_addr_i (wr_addr), .wr_be_i (wr_be), .wr_wdata_i (wr_wdata),
     .wr_gnt_o (wr_gnt),
     .mem_req_o (eng_req), .mem_gnt_i (eng_gnt), .mem_we_o (eng_we), .mem_be_o (eng_be),
-    .mem_addr_o (eng_addr), .mem_wdata_o (eng_wdata),
+    .mem_addr_o (eng_addr), .mem_len_o (eng_len), .mem_wdata_o (eng_wdata),
     .mem_rvalid_i (eng_rvalid), .mem_rdata_i
   );
 
@@ -497,6 +516,7 @@ module mcadsw_top #(
   assign mem_we_o    = post_sel ? post_we : eng_we;
   assign mem_be_o    = post_sel ? post_be : eng_be;
   assign mem_addr_o  = post_sel ? post_addr : eng_addr;
+  assign mem_len_o   = post_sel ? 4'd0 : eng_len;
   assign mem_wdata_o = post_sel ? post_wdata : eng_wdata;
   assign eng_gnt     = mem_gnt_i && !post_sel;
   assign eng_rvalid  = mem_rvalid_i && !post_sel;
@@ -508,12 +528,13 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(LSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_l (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_by_q), .stride_i (stride_q),
+    .start_i (prep_start), .base_i (base_by_q), .stride_i (stride_q), .tile_i (tile_q),
     .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (lx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
     .strips_i (4'(LSTRIPS - 32'(l_first))),
     .busy_o (lrd_busy_unused),
-    .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .gnt_i (rd_gnt[0]),
+    .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .len_o (rd_len[0*4 +: 4]),
+    .gnt_i (rd_gnt[0]),
     .rvalid_i (rd_rvalid[0]), .rdata_i (rd_rdata),
     .pix_valid_o (lpix_valid), .pix_ready_i (lpix_ready), .pix_data_o (lpix)
   );
@@ -521,12 +542,13 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(RSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
   u_rd_census_r (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_my_q), .stride_i (stride_q),
+    .start_i (prep_start), .base_i (base_my_q), .stride_i (stride_q), .tile_i (tile_q),
     .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (rx_rd), .y0_i (prep_y0 - (CW + 1)'(2)),
     .strips_i (RSB'(RSTRIPS - 32'(r_first))),
     .busy_o (rrd_busy_unused),
-    .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .gnt_i (rd_gnt[1]),
+    .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .len_o (rd_len[1*4 +: 4]),
+    .gnt_i (rd_gnt[1]),
     .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
     .pix_valid_o (rpix_valid), .pix_ready_i (rpix_ready), .pix_data_o (rpix)
   );
@@ -534,12 +556,13 @@ module mcadsw_top #(
   mcadsw_win_reader #(.ROWS(COLS), .STRIPS(WSTRIPS), .PLANES(3), .CW(CW), .AW(AW))
   u_rd_weight (
     .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i ({base_bv_q, base_bu_q, base_by_q}), .stride_i (stride_q),
+    .start_i (prep_start), .base_i ({base_bv_q, base_bu_q, base_by_q}), .stride_i (stride_q), .tile_i (tile_q),
     .width_i (xend_q), .lo_i (xlo_q), .mirror_i (right_q), .height_i (height_q),
     .x0_i (wx_rd), .y0_i (prep_y0),
     .strips_i (4'(WSTRIPS - 32'(w_first))),
     .busy_o (wrd_busy_unused),
-    .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .gnt_i (rd_gnt[2]),
+    .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .len_o (rd_len[2*4 +: 4]),
+    .gnt_i (rd_gnt[2]),
     .rvalid_i (rd_rvalid[2]), .rdata_i (rd_rdata),
     .pix_valid_o (wpix_valid), .pix_ready_i (wpix_ready), .pix_data_o (wpix)
   );

@@ -12,22 +12,32 @@
 // The window origin x0 is word-aligned (the top starts every window at the
 // aligned word at or left of its first column), so the 4 clamped columns of a
 // strip word always lie in one memory word: clamping moves a column only to
-// column lo or width-1, inside the strip's own word. One read per strip word.
+// column lo or width-1, inside the strip's own word.
 //
 // Mirrored (the right view as base, docs/architecture.md section 12), the
 // window's columns are the pass's: pass column c is image column
 // width - 1 - c (width a multiple of 4), and the image occupies the pass's
 // columns lo .. width - 1. An aligned strip word is then an aligned memory
 // word with its bytes in reverse order.
-// Requests run ahead of the responses (up to OUTS in flight, responses in
-// order).
+//
+// Reads: a strip plane's rows clamp to the image rows clamp(y0) ..
+// clamp(y0 + ROWS - 1); each of those K memory words is read once, and rows
+// clamped to the same image row repeat its word on the way out (the response
+// side keeps the word until the row after it maps elsewhere).
+// Layouts (docs/memory_map.md): raster, pixel (x, y) at base + y stride + x,
+// one read (a burst of 1) a word; or column-tiled (tile_i != 0), pixel (x, y)
+// at base + (x / 4) tile + 4 y + x % 4, where a strip plane's K words are
+// consecutive: read bursts of up to BL beats (len_o + 1), none across a 4 KiB
+// boundary. A burst is requested only when the response FIFO (OUTS words)
+// has room for all of it; responses come in order.
 `default_nettype none
 
 module mcadsw_win_reader #(
   parameter int ROWS   = 52,             // rows of a strip
   parameter int STRIPS = 13,             // most strips of 4 columns a plane
   parameter int PLANES = 1,              // 1 (luma) or 3 (Y, U, V)
-  parameter int OUTS   = 4,              // reads in flight
+  parameter int OUTS   = 8,              // words in flight (response FIFO)
+  parameter int BL     = 8,              // longest read burst, beats (tiled layout)
   parameter int CW     = 12,             // coordinate width (signed)
   parameter int AW     = 32,
   parameter int SB     = $clog2(STRIPS + 1)
@@ -35,10 +45,11 @@ module mcadsw_win_reader #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   // Window: started by start_i, which takes x0_i, y0_i and strips_i; base_i,
-  // stride_i, width_i and height_i are stable while busy_o
+  // stride_i, tile_i, width_i and height_i are stable while busy_o
   input  logic                 start_i,
   input  logic [PLANES*AW-1:0] base_i,     // byte address of pixel (0,0) of each plane
-  input  logic [AW-1:0]        stride_i,   // bytes per image row, multiple of 4
+  input  logic [AW-1:0]        stride_i,   // raster: bytes per image row, multiple of 4
+  input  logic [AW-1:0]        tile_i,     // column-tiled: bytes per 4-pixel column; 0: raster
   input  logic [CW-1:0]        width_i,    // columns lo_i .. width_i - 1 are the image's
   input  logic [1:0]           lo_i,
   input  logic                 mirror_i,
@@ -50,6 +61,7 @@ module mcadsw_win_reader #(
   // Memory controller
   output logic                 req_o,
   output logic [AW-1:0]        addr_o,
+  output logic [3:0]           len_o,      // beats of the burst - 1
   input  logic                 gnt_i,
   input  logic                 rvalid_i,
   input  logic [31:0]          rdata_i,
@@ -59,11 +71,13 @@ module mcadsw_win_reader #(
   output logic [31:0]          pix_data_o
 );
 
-  localparam int RB = $clog2(ROWS);
-  localparam int PB = (PLANES > 1) ? $clog2(PLANES) : 1;
-  localparam int OB = $clog2(OUTS + 1);
+  localparam int RB  = $clog2(ROWS);
+  localparam int PB  = (PLANES > 1) ? $clog2(PLANES) : 1;
+  localparam int OB  = $clog2(OUTS + 1);
+  localparam int NLB = $clog2(BL + 1);
 
-  if (STRIPS < 1 || 4 * STRIPS >= (1 << CW)) begin : g_bad_param
+  if (STRIPS < 1 || 4 * STRIPS >= (1 << CW) || BL < 1 || BL > 16 || BL > OUTS ||
+      BL > ROWS) begin : g_bad_param
     mcadsw_error_win_reader_geometry u_error ();
   end
 
@@ -71,16 +85,19 @@ module mcadsw_win_reader #(
     clampi = (v < lo) ? lo : (v > n - 1) ? n - 1 : v;
   endfunction
 
-  // A position in the strip sequence: {done, plane, strip, row}; done past the end.
+  // A position in the strip sequence: {done, plane, strip, row}; done past the
+  // end. The response side counts the ROWS rows of a strip plane, the request
+  // side its K words (row = word k, last = K - 1).
   localparam int QW = 1 + PB + SB + RB;
 
-  function automatic logic [QW-1:0] next_pos(input logic [QW-1:0] p, input logic [SB-1:0] strips);
+  function automatic logic [QW-1:0] next_pos(input logic [QW-1:0] p, input logic [RB-1:0] last,
+                                             input logic [SB-1:0] strips);
     logic          done;
     logic [PB-1:0] plane;
     logic [SB-1:0] strip;
     logic [RB-1:0] row;
     {done, plane, strip, row} = p;
-    if (row != RB'(ROWS - 1)) begin
+    if (row != last) begin
       row = row + RB'(1);
     end else begin
       row = '0;
@@ -95,23 +112,32 @@ module mcadsw_win_reader #(
     next_pos = {done, plane, strip, row};
   endfunction
 
-  // The window origin and strip count, registered at start_i: the address
+  // n words on (1 <= n, not past the strip plane's last word).
+  function automatic logic [QW-1:0] adv_pos(input logic [QW-1:0] p, input logic [NLB-1:0] n,
+                                            input logic [RB-1:0] last, input logic [SB-1:0] strips);
+    logic [RB:0] r;
+    r = (RB + 1)'(p[RB-1:0]) + (RB + 1)'(n);
+    if (r > (RB + 1)'(last)) adv_pos = next_pos({p[QW-1:RB], last}, last, strips);
+    else adv_pos = {p[QW-1:RB], RB'(r)};
+  endfunction
+
+  // The window origin, strip count and rows, registered at start_i: the address
   // arithmetic starts from flip-flops, not from the block arithmetic in the top
   // (that path to the external address was critical, docs/architecture.md section 10).
   logic signed [CW:0]   x0_q, y0_q;
   logic [SB-1:0]        strips_q;
+  logic [CW-1:0]        ylo_q;       // clamp(y0): the image row of a strip plane's word 0
+  logic [RB-1:0]        klast_q;     // K - 1: clamp(y0 + ROWS - 1) - clamp(y0)
 
   logic          busy_q;
-  logic [QW-1:0] rq_q, rs_q;         // strip word being requested / assembled
+  logic [QW-1:0] rq_q, rs_q;         // word being requested / row being delivered
   logic          rq_done, rs_done;
   logic [PB-1:0] rs_plane_unused;
   logic [SB-1:0] rs_strip;
-  logic [RB-1:0] rs_row_unused;
+  logic [RB-1:0] rs_row;
   assign rq_done = rq_q[QW-1];       // the request side needs only done; addresses come from pos_q
-  assign {rs_done, rs_plane_unused, rs_strip, rs_row_unused} = rs_q;
-  logic [QW-1:0] rs_next;
-  assign rs_next = next_pos(rs_q, strips_q);
-  logic [OB-1:0] inflight_q;         // requested, response not consumed yet
+  assign {rs_done, rs_plane_unused, rs_strip, rs_row} = rs_q;
+  logic [OB-1:0] inflight_q;         // words requested, not yet delivered for the last time
 
   // Clamped column of byte b of strip s.
   function automatic int col_of(input logic [SB-1:0] s, input int b,
@@ -122,28 +148,52 @@ module mcadsw_win_reader #(
 
   // ---- Request side -------------------------------------------------------------
   // The request address is a register (addr_q), loaded a cycle ahead: in the
-  // cycle after start_i for the first strip word (no request in that cycle), then
+  // cycle after start_i for the first burst (no request in that cycle), then
   // at each grant for the next one. Its position (pos_q) carries the parts of
   // its address as registers, updated step by step, so the address is a sum of
-  // three registers and no multiplier lies on the per-request path:
-  //   yoff_q = clamp(y0 + row) * stride (the product only at start_i, then
-  //            + stride while the clamped row moves, back to yoff0_q at row 0);
-  //   xoff_q = the image column of the strip word's memory word, from the
-  //            unclamped pass column xabs_q = x0 + 4 strip.
+  // three terms and no multiplier lies on the per-request path:
+  //   raster: yoff_q = (ylo + k) * stride (the product only at start_i, then
+  //           + stride a word, back to yoff0_q at word 0); xo_q = the image
+  //           column of the strip word's memory word;
+  //   tiled:  4 (ylo + k); xo_q = that memory word's column of words times tile
+  //           (the product only at start_i, then +- tile when the next strip's
+  //           word differs).
+  // A reader's one multiplier is shared: clamp(y0) * stride or word(x0) * tile.
+  logic          tiled;
+  assign tiled = tile_i != '0;
   logic          addr_ok_q;          // addr_q holds the address of rq_q
   logic [AW-1:0] addr_q, addr_next;
+  logic [NLB-1:0] len_q, len_next;   // beats of addr_q's burst / of the one loaded next
   logic [QW-1:0] pos_q, pos_next;    // the position whose address is loaded next
   logic          p_done_unused;
   logic [PB-1:0] p_plane;
   logic [SB-1:0] p_strip_unused;
-  logic [RB-1:0] p_row;
-  logic [AW-1:0] yoff_q, yoff0_q;
-  logic signed [CW+1:0] yabs_q;      // y0 + row, unclamped
+  logic [RB-1:0] p_k;
+  logic [AW-1:0] yoff_q, yoff0_q, yterm;
   logic signed [CW+1:0] xabs_q;      // x0 + 4 strip, unclamped
-  logic [CW-1:0] xoff_q;
-  assign {p_done_unused, p_plane, p_strip_unused, p_row} = pos_q;
-  assign pos_next = next_pos(pos_q, strips_q);
-  assign addr_next = base_i[32'(p_plane)*AW +: AW] + yoff_q + AW'(xoff_q);
+  logic [CW-1:0] xoff_q;             // image column of the strip word's memory word
+  logic [AW-1:0] xo_q;               // its byte offset in the plane (raster: xoff_q)
+  assign {p_done_unused, p_plane, p_strip_unused, p_k} = pos_q;
+  logic [CW-1:0] ycur;               // image row of pos_q's word
+  assign ycur      = ylo_q + CW'(p_k);
+  assign yterm     = tiled ? AW'(ycur) << 2 : yoff_q;
+  assign addr_next = base_i[32'(p_plane)*AW +: AW] + yterm + xo_q;
+  assign pos_next  = adv_pos(pos_q, len_next, klast_q, strips_q);
+
+  // Burst length of pos_q's word: tiled, the words to the strip plane's last,
+  // to the 4 KiB boundary, at most BL; raster, 1.
+  logic [10:0] page_left;             // words to the next 4 KiB boundary
+  logic [RB:0] words_left;            // words of the strip plane from pos_q's on
+  assign page_left  = 11'd1024 - 11'(addr_next[11:2]);
+  assign words_left = (RB + 1)'(klast_q) + (RB + 1)'(1) - (RB + 1)'(p_k);
+  always_comb begin
+    len_next = NLB'(1);
+    if (tiled) begin
+      len_next = NLB'(BL);
+      if (words_left < (RB + 1)'(BL)) len_next = NLB'(words_left);
+      if (page_left < 11'(len_next)) len_next = NLB'(page_left);
+    end
+  end
 
   // The first image column of the memory word holding pass column x (clamped).
   function automatic logic [CW-1:0] mem_col(input logic signed [CW+1:0] x, input logic [1:0] lo,
@@ -152,23 +202,39 @@ module mcadsw_win_reader #(
     word = CW'(4 * (clampi(32'(x), 32'(lo), 32'(w)) / 4));
     mem_col = mirror ? w - word - CW'(4) : word;
   endfunction
-  function automatic logic [AW-1:0] row_off(input logic signed [CW+1:0] y,
-                                            input logic [CW-1:0] h, input logic [AW-1:0] stride);
-    row_off = AW'(clampi(32'(y), 0, 32'(h))) * stride;
-  endfunction
+  // At start_i: the raster row offset clamp(y0) * stride, or the tiled column
+  // offset word(x0) * tile, from one multiplier; the strip plane's rows.
+  logic [CW-1:0] col0, ylo0, yhi0;
+  logic [AW-1:0] mul_a, mul_b, prod0;
+  assign col0  = mem_col((CW + 2)'(x0_i), lo_i, width_i, mirror_i);
+  assign ylo0  = CW'(clampi(32'(y0_i), 0, 32'(height_i)));
+  assign yhi0  = CW'(clampi(32'(y0_i) + ROWS - 1, 0, 32'(height_i)));
+  assign mul_a = tiled ? AW'(col0[CW-1:2]) : AW'(ylo0);
+  assign mul_b = tiled ? tile_i : stride_i;
+  assign prod0 = mul_a * mul_b;
   logic advance;                     // addr_q takes addr_next: pos_q moves on
   assign advance = (busy_q && !addr_ok_q) || (req_o && gnt_i);
+  logic strip_end;                   // pos_q's burst ends its strip (all planes)
+  assign strip_end = pos_next[RB-1:0] == '0 && p_plane == PB'(PLANES - 1);
+  logic [CW-1:0] xoff_next;
+  assign xoff_next = mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
 
-  // The response buffer is the pipeline itself: stop requesting when OUTS
-  // responses could be waiting for the block.
-  assign req_o  = busy_q && addr_ok_q && !rq_done && inflight_q != OB'(OUTS);
+  // The response buffer is the pipeline itself: stop requesting when the
+  // burst's words would not all fit.
+  assign req_o  = busy_q && addr_ok_q && !rq_done &&
+                  (OB + 1)'(inflight_q) + (OB + 1)'(len_q) <= (OB + 1)'(OUTS);
   assign addr_o = addr_q;
+  assign len_o  = 4'(len_q - NLB'(1));
 
   // ---- Response side ---------------------------------------------------------------
-  // Responses wait in a small FIFO until the block takes the strip word.
+  // Responses wait in a small FIFO until the block takes the strip word. Row r
+  // of a strip plane (image row clamp(y0 + r)) shows the head word; the head is
+  // popped after the row unless the next row maps to the same image row (rows
+  // above the image share row 0's word, rows below share the last row's).
   logic [OUTS*32-1:0] fifo_q;
   logic [OB-1:0]      fcount_q;
-  logic               pop;
+  logic               pop, pop_word;
+  logic signed [CW+1:0] rsy_q;       // y0 + rs_row, unclamped
   // A strip word is ready when its response is; byte b is column
   // clamp(x0 + 4s + b), i.e. byte b, or the edge column's byte where clamped.
   logic [31:0] head;
@@ -179,24 +245,30 @@ module mcadsw_win_reader #(
     assign c = col_of(rs_strip, b, x0_q, lo_i, width_i);
     assign pix_data_o[b*8 +: 8] = head[(mirror_i ? 3 - c % 4 : c % 4)*8 +: 8];
   end
-  assign pop = pix_valid_o && pix_ready_i;
+  assign pop      = pix_valid_o && pix_ready_i;
+  assign pop_word = pop && (rs_row == RB'(ROWS - 1) ||
+                            (rsy_q >= 0 && rsy_q < $signed({2'b00, height_i}) - (CW + 2)'(1)));
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       busy_q       <= 1'b0;
       addr_ok_q    <= 1'b0;
       addr_q       <= '0;
+      len_q        <= '0;
+      xo_q         <= '0;
       pos_q        <= '0;
       yoff_q       <= '0;
       yoff0_q      <= '0;
-      yabs_q       <= '0;
       xabs_q       <= '0;
       xoff_q       <= '0;
       x0_q         <= '0;
       y0_q         <= '0;
+      ylo_q        <= '0;
+      klast_q      <= '0;
       strips_q     <= '0;
       rq_q         <= '0;
       rs_q         <= '0;
+      rsy_q        <= '0;
       inflight_q   <= '0;
       fifo_q       <= '0;
       fcount_q     <= '0;
@@ -206,44 +278,44 @@ module mcadsw_win_reader #(
         addr_ok_q    <= 1'b0;
         x0_q         <= x0_i;
         y0_q         <= y0_i;
+        ylo_q        <= ylo0;
+        klast_q      <= RB'(yhi0 - ylo0);
         strips_q     <= strips_i;
         rq_q         <= '0;
         rs_q         <= '0;
+        rsy_q        <= (CW + 2)'(y0_i);
         pos_q        <= '0;
-        yoff_q       <= row_off((CW + 2)'(y0_i), height_i, stride_i);
-        yoff0_q      <= row_off((CW + 2)'(y0_i), height_i, stride_i);
-        yabs_q       <= (CW + 2)'(y0_i);
+        yoff_q       <= tiled ? '0 : prod0;
+        yoff0_q      <= tiled ? '0 : prod0;
         xabs_q       <= (CW + 2)'(x0_i);
-        xoff_q       <= mem_col((CW + 2)'(x0_i), lo_i, width_i, mirror_i);
+        xoff_q       <= col0;
+        xo_q         <= tiled ? prod0 : AW'(col0);
       end
       if (busy_q && !addr_ok_q) addr_ok_q <= 1'b1;
-      if (req_o && gnt_i) rq_q <= next_pos(rq_q, strips_q);
+      if (req_o && gnt_i) rq_q <= adv_pos(rq_q, len_q, klast_q, strips_q);
       if (advance) begin
         addr_q <= addr_next;
+        len_q  <= len_next;
         pos_q  <= pos_next;
-        if (pos_next[RB-1:0] == '0) begin
-          // Row 0 of the next plane or strip.
-          yoff_q <= yoff0_q;
-          yabs_q <= (CW + 2)'(y0_q);
-        end else begin
-          // The clamped row moves only while y0 + row + 1 lies inside the image.
-          if (yabs_q >= 0 && yabs_q < $signed({2'b00, height_i}) - (CW + 2)'(1))
-            yoff_q <= yoff_q + stride_i;
-          yabs_q <= yabs_q + (CW + 2)'(1);
-        end
-        if (p_row == RB'(ROWS - 1) && p_plane == PB'(PLANES - 1)) begin
-          // The next strip.
+        // Raster (one word a burst): the next image row, or row clamp(y0) of
+        // the next plane or strip.
+        yoff_q <= pos_next[RB-1:0] == '0 ? yoff0_q : yoff_q + stride_i;
+        if (strip_end) begin
+          // The next strip: its memory word, one word column on or the same.
           xabs_q <= xabs_q + (CW + 2)'(4);
-          xoff_q <= mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
+          xoff_q <= xoff_next;
+          if (!tiled) xo_q <= AW'(xoff_next);
+          else if (xoff_next > xoff_q) xo_q <= xo_q + tile_i;
+          else if (xoff_next < xoff_q) xo_q <= xo_q - tile_i;
         end
       end
-      // FIFO: push the response, pop the strip word.
+      // FIFO: push the response, pop the word after its last row.
       begin
         logic [OUTS*32-1:0] f;
         logic [OB-1:0]      n;
         f = fifo_q;
         n = fcount_q;
-        if (pop) begin
+        if (pop_word) begin
           f = f >> 32;
           n = n - OB'(1);
         end
@@ -254,10 +326,11 @@ module mcadsw_win_reader #(
         fifo_q   <= f;
         fcount_q <= n;
       end
-      inflight_q <= inflight_q + OB'(req_o && gnt_i) - OB'(pop);
+      inflight_q <= inflight_q + (req_o && gnt_i ? OB'(len_q) : '0) - OB'(pop_word);
       if (pop) begin
-        rs_q <= rs_next;
-        if (rs_next[QW-1]) busy_q <= 1'b0;
+        rs_q  <= next_pos(rs_q, RB'(ROWS - 1), strips_q);
+        rsy_q <= rs_row == RB'(ROWS - 1) ? (CW + 2)'(y0_q) : rsy_q + (CW + 2)'(1);
+        if (next_pos(rs_q, RB'(ROWS - 1), strips_q) >> (QW - 1) != '0) busy_q <= 1'b0;
       end
     end
   end
@@ -268,12 +341,14 @@ module mcadsw_win_reader #(
   // Invariants (docs/architecture.md section 9), checked in simulation.
   always @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
-      assert (!(rvalid_i && !pop && fcount_q == OB'(OUTS)))
+      assert (!(rvalid_i && !pop_word && fcount_q == OB'(OUTS)))
         else $error("win_reader: response FIFO overflow");
       assert (!(rvalid_i && inflight_q == '0))
         else $error("win_reader: read data with no request of this reader in flight");
       assert (!(start_i && !busy_q && x0_i[1:0] != 2'b00))
         else $error("win_reader: window origin %0d is not word-aligned", x0_i);
+      assert (!(busy_q && !rs_done && rq_done && inflight_q == '0))
+        else $error("win_reader: every word requested and delivered, rows still to go");
     end
   end
 `endif

@@ -50,10 +50,12 @@ using Dut = Vmcadsw_top;
 // 4 KiB guard. The right view's U and V are always in memory; only the right
 // and LR modes may read them. The LR mode adds, after the output plane, the
 // scratch planes dL (output stride) and dR (input stride) and the mask plane
-// (input stride).
+// (input stride). Tiled (EngineOptions::tiled), the six input planes are
+// column-tiled, tile bytes a column of 4 pixels (default 4 x height); dR and
+// the mask keep the raster stride.
 struct Layout {
   uint32_t stride, out_stride, plane, out_plane, ly, lu, lv, ry, ru, rv, out, dl = 0, dr = 0,
-      mask = 0, total;
+      mask = 0, total, tile = 0, in_plane;
   int width, height, out_bpp, lr_t;
   bool right, lr;
   Layout(int w, int h, uint32_t origin, const EngineOptions& opt)
@@ -71,13 +73,22 @@ struct Layout {
                                   std::to_string(row) + " bytes");
     plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
     out_plane = (out_stride * uint32_t(h) + 4095) / 4096 * 4096;
+    in_plane = plane;
+    if (opt.tiled) {
+      tile = opt.tile_stride ? opt.tile_stride : 4 * uint32_t(h);
+      if (tile < 4 * uint32_t(h) || tile % 4 != 0)
+        throw std::invalid_argument("tile stride " + std::to_string(tile) +
+                                    " must be a multiple of 4 and at least 4 x the height " +
+                                    std::to_string(h));
+      in_plane = (tile * uint32_t((w + 3) / 4) + 4095) / 4096 * 4096;
+    }
     ly = origin + 4096;
-    lu = ly + plane;
-    lv = lu + plane;
-    ry = lv + plane;
-    ru = ry + plane;
-    rv = ru + plane;
-    out = rv + plane;
+    lu = ly + in_plane;
+    lv = lu + in_plane;
+    ry = lv + in_plane;
+    ru = ry + in_plane;
+    rv = ru + in_plane;
+    out = rv + in_plane;
     total = out + out_plane + 4096;
     if (lr) {
       dl = total;
@@ -95,6 +106,7 @@ struct Layout {
     c.base_dr = dr;
     c.base_mask = mask;
     c.lr_t = lr_t;
+    c.tile_stride = tile;
     return c;
   }
   // What the frame may touch: reads in the pixels of the planes its mode
@@ -105,15 +117,20 @@ struct Layout {
     if (right) in = {ry, ru, rv, ly};
     if (lr) {
       return {{ly, lu, lv, ry, ru, rv}, dl, stride, width, height, out_stride, out_bpp, true,
-              {{dr, stride, 1, true}, {out, out_stride, out_bpp, false}, {mask, stride, 1, false}}};
+              {{dr, stride, 1, true}, {out, out_stride, out_bpp, false}, {mask, stride, 1, false}},
+              tile};
     }
-    return {in, out, stride, width, height, out_stride, out_bpp, false, {}};
+    return {in, out, stride, width, height, out_stride, out_bpp, false, {}, tile};
   }
 };
 
-void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, const Plane& p) {
+// An input plane, raster (stride bytes a row) or column-tiled (tile != 0).
+void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, uint32_t tile, const Plane& p) {
   for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x) m.data()[base + uint32_t(y) * stride + uint32_t(x)] = p.at(x, y);
+    for (int x = 0; x < p.width; ++x) {
+      const uint32_t ux = uint32_t(x), uy = uint32_t(y);
+      m.data()[base + (tile ? ux / 4 * tile + 4 * uy + ux % 4 : uy * stride + ux)] = p.at(x, y);
+    }
 }
 
 class Engine {
@@ -257,6 +274,7 @@ void program(Engine& e, const RawConfig& c, const WeightTable& table) {
   wr(regs::kBaseMask, c.base_mask);
   wr(regs::kStride, c.stride);
   wr(regs::kOutStride, c.out_stride);
+  wr(regs::kTileStride, c.tile_stride);
   wr(regs::kSize, (uint32_t(c.width) & 0xfff) << regs::kSizeWidthLsb |
                       (uint32_t(c.height) & 0xfff) << regs::kSizeHeightLsb);
   wr(regs::kDisp, uint32_t(c.disparities) & 0xff);
@@ -307,6 +325,7 @@ void program(Engine& e, const RawConfig& c, const WeightTable& table) {
   t.cfg_base_out_i = c.base_out;
   t.cfg_stride_i = c.stride;
   t.cfg_out_stride_i = c.out_stride;
+  t.cfg_tile_stride_i = c.tile_stride;
   t.cfg_mode_i = uint32_t(c.mode) & 7;
   t.cfg_base_ru_i = c.base_ru;
   t.cfg_base_rv_i = c.base_rv;
@@ -396,12 +415,12 @@ long frame_limit(int W, int H, const EngineOptions& opt) {
 // Writes a frame's planes at its layout and fills its disparity plane with
 // 0xff ("never written").
 void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right) {
-  put_plane(mem, lay.ly, lay.stride, left.y);
-  put_plane(mem, lay.lu, lay.stride, left.u);
-  put_plane(mem, lay.lv, lay.stride, left.v);
-  put_plane(mem, lay.ry, lay.stride, right.y);
-  put_plane(mem, lay.ru, lay.stride, right.u);
-  put_plane(mem, lay.rv, lay.stride, right.v);
+  put_plane(mem, lay.ly, lay.stride, lay.tile, left.y);
+  put_plane(mem, lay.lu, lay.stride, lay.tile, left.u);
+  put_plane(mem, lay.lv, lay.stride, lay.tile, left.v);
+  put_plane(mem, lay.ry, lay.stride, lay.tile, right.y);
+  put_plane(mem, lay.ru, lay.stride, lay.tile, right.u);
+  put_plane(mem, lay.rv, lay.stride, lay.tile, right.v);
   for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.out + i] = 0xff;
   if (lay.lr) {
     for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.dl + i] = 0xff;
@@ -531,6 +550,7 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
     << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv << " +BASE_DL=" << c.base_dl
     << " +BASE_DR=" << c.base_dr << " +BASE_MASK=" << c.base_mask << " +LR_T=" << c.lr_t
     << " +STRIDE=" << c.stride << " +OUT_STRIDE=" << c.out_stride << " +MODE=" << c.mode
+    << " +TILE_STRIDE=" << c.tile_stride
     << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
     << " +DISP=" << c.disparities;
   for (int i = 0; i < kWeightThresholds; ++i) f << " +THR" << i << "=" << thr[i];

@@ -23,6 +23,10 @@ struct EngineOptions {
   long axi_write_latency = 0;    // further cycles before each write response (and its landing)
   int axi_ar_interval = 1;       // an AR accepted at most every this many cycles
   uint32_t stride = 0;           // bytes per row of the input planes; 0: width rounded up to 4
+  // Input planes column-tiled (docs/memory_map.md): pixel (x, y) at
+  // base + (x / 4) tile + 4 y + x % 4, so a strip's rows are read in bursts.
+  bool tiled = false;
+  uint32_t tile_stride = 0;      // tiled: bytes per 4-pixel column; 0: 4 x height
   bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
   bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
   uint32_t out_stride = 0;       // bytes per row of the output plane; 0: its row rounded up to 4
@@ -85,6 +89,7 @@ struct RawConfig {
   int mode = 0;  // bit 0 sub-pixel, bit 1 LR, bit 2 right view as base
   uint32_t base_ru = 0, base_rv = 0;
   uint32_t base_dl = 0, base_dr = 0, base_mask = 0;  // LR mode's scratch and mask planes
+  uint32_t tile_stride = 0;  // input planes column-tiled: bytes per 4-pixel column; 0: raster
   int lr_t = kLrToleranceDefault;
 };
 enum class Fault { kNone, kResetMidFrame, kStartWhileBusy, kAbort };

@@ -3,7 +3,7 @@
 //   mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]
 //              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
 //              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]
-//              [--subpixel] [--right] [--out-stride N]
+//              [--subpixel] [--right] [--out-stride N] [--tiled] [--tile-stride N]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -25,12 +25,17 @@ const char* kUsage =
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
     "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N] [--ar-interval N]\n"
+    "                  [--tiled] [--tile-stride N]\n"
     "  --latency N     AXI4 memory: N wait states before each burst's first R beat and each B\n"
     "  --random-latency SEED  AXI4 memory: 0..8 more wait states a burst, READY 70 % of the time\n"
     "  --ar-interval N AXI4 memory: an AR accepted at most once in N clocks (default 1)\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
     "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
     "                  the width (default: the width rounded up to 4)\n"
+    "  --tiled         input planes column-tiled (docs/memory_map.md): a column of 4 pixels,\n"
+    "                  all rows, is consecutive words, so strip words are read in bursts\n"
+    "  --tile-stride N tiled: bytes from one 4-pixel column to the next, a multiple of 4, at\n"
+    "                  least 4 x the height (default 4 x the height); implies --tiled\n"
     "  --subpixel      sub-pixel mode: 16-bit output, 16 x disparity (docs/algorithm.md 12.6);\n"
     "                  --out writes a 16-bit PNG\n"
     "  --right         the right view as base: the right-reference map dR (docs/algorithm.md\n"
@@ -91,6 +96,11 @@ int main(int argc, char** argv) {
       else if (a == "--waves") waves = val();
       else if (a == "--dump") opt.dump_dir = val();
       else if (a == "--stride") opt.stride = stride(val(), "stride");
+      else if (a == "--tiled") opt.tiled = true;
+      else if (a == "--tile-stride") {
+        opt.tile_stride = stride(val(), "tile stride");
+        opt.tiled = true;
+      }
       else if (a == "--subpixel") opt.subpixel = true;
       else if (a == "--right") opt.right = true;
       else if (a == "--lr") opt.lr = true;
@@ -150,6 +160,9 @@ int main(int argc, char** argv) {
       throw std::invalid_argument("the LR mode takes widths up to " +
                                   std::to_string(mcadsw::kPostMaxWidth) + ", not " +
                                   std::to_string(l.width()));
+    if (opt.tile_stride && opt.tile_stride < 4 * uint32_t(l.height()))
+      throw std::invalid_argument("tile stride " + std::to_string(opt.tile_stride) +
+                                  " is below 4 x the height " + std::to_string(l.height()));
     if (opt.stride && opt.stride < uint32_t(l.width()))
       throw std::invalid_argument("stride " + std::to_string(opt.stride) + " is below the width " +
                                   std::to_string(l.width()));
@@ -186,12 +199,12 @@ int main(int argc, char** argv) {
     }
     const double pixels = double(res.width) * res.height;
     const bool ok = res.clean();
-    std::printf("%-16s %4dx%-4d D=%-2d%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
-                "reads/px %5.2f  stalls %7ld  wbursts %6ld  %s",
+    std::printf("%-16s %4dx%-4d D=%-2d%s%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
+                "reads/px %5.2f  stalls %7ld  rbursts %7ld  wbursts %6ld  %s",
                 name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "",
-                opt.right ? " right" : opt.lr ? " lr" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
+                opt.right ? " right" : opt.lr ? " lr" : "", opt.tiled ? " tiled" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
-                res.write_bursts, ok ? "BIT-EXACT" : "FAILED");
+                res.read_bursts, res.write_bursts, ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
     std::printf("  (%.1f s, %.0f kcycles/s)\n", res.sim_seconds, res.cycles / res.sim_seconds / 1e3);
     if (res.timed_out) std::printf("  TIMEOUT: the engine did not finish\n");
@@ -203,6 +216,7 @@ int main(int argc, char** argv) {
         << ", \"disparities\": " << d << ", \"subpixel\": " << (opt.subpixel ? "true" : "false")
         << ", \"right\": " << (opt.right ? "true" : "false")
         << ", \"lr\": " << (opt.lr ? "true" : "false")
+        << ", \"tiled\": " << (opt.tiled ? "true" : "false")
         << ", \"cycles\": " << res.cycles
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
         << ", \"stall_cycles\": " << res.stall_cycles << ", \"read_bursts\": " << res.read_bursts

@@ -150,15 +150,22 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
     c.opt.lr = true;
     c.opt.lr_tolerance = rng() % 4 == 0 ? int(rng() % (kLrToleranceMax + 1)) : int(rng() % 4);
   }
+  // Column-tiled input planes in one case out of three (read bursts), half of
+  // them with a padded tile stride (4 KiB boundaries at other rows).
+  if (rng() % 3 == 0) {
+    c.opt.tiled = true;
+    if (rng() % 2) c.opt.tile_stride = uint32_t(4 * h + 4 * std::uniform_int_distribution<int>(1, 300)(rng));
+  }
   // An interruption in one case out of eight (drawn last). The burst numbers
-  // stay inside the first frame: it reads more than a word a pixel and writes
-  // at least a burst a block row.
+  // stay inside the first frame: it reads more than a word a pixel (tiled: more
+  // than a burst in 8 pixels) and writes at least a burst a block row.
   if (rng() % 8 == 0) {
     const int kind = int(rng() % 3);
     const int resp = 2 + int(rng() % 2);
     if (kind == 0) {
       c.interrupt = Interrupt::kRead;
-      c.opt.axi_fault = {std::uniform_int_distribution<long>(1, long(w) * h)(rng), 0, resp};
+      const long read_bursts = std::max(1L, long(w) * h / (c.opt.tiled ? 8 : 1));
+      c.opt.axi_fault = {std::uniform_int_distribution<long>(1, read_bursts)(rng), 0, resp};
     } else if (kind == 1) {
       c.interrupt = Interrupt::kWrite;
       const long block_rows = long(h) * ((w + kBlock - 1) / kBlock);
@@ -250,10 +257,14 @@ int main(int argc, char** argv) {
     const bool ok = err.empty() && ended.empty() && r.clean();
     static const char* kInterrupt[] = {"", "  after a read error", "  after a write error",
                                        "  after an abort"};
-    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u  %s latency  %8ld cycles  %s%s\n", k,
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s  %s latency  %8ld cycles  %s%s\n", k,
                 c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
                 c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
                 c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
+                c.opt.tiled ? (" tile " + std::to_string(c.opt.tile_stride ? c.opt.tile_stride
+                                                                         : 4u * unsigned(c.left.height())))
+                                  .c_str()
+                            : "",
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED", kInterrupt[int(c.interrupt)]);
     if (!ok) {

@@ -42,7 +42,8 @@ class MemoryModel {
 
   // The planes a frame may touch: reads inside the pixels of `inputs`, writes
   // inside the pixels of `out`. Input pixel (x, y) is the byte at
-  // base + y * stride + x; output pixel (x, y) the out_bpp bytes at
+  // base + y * stride + x (raster), or with tile != 0 (column-tiled) at
+  // base + (x / 4) * tile + 4 * y + x % 4; output pixel (x, y) the out_bpp bytes at
   // out + y * out_stride + out_bpp * x. Width 0: nothing may be read or written.
   struct OutPlane {
     uint32_t base = 0, stride = 0;
@@ -57,6 +58,7 @@ class MemoryModel {
     int out_bpp = 1;
     bool out_readable = false;
     std::vector<OutPlane> more_outs;
+    uint32_t tile = 0;        // input planes column-tiled: bytes per 4-pixel column
   };
 
   // What the checks found (counts since the last set_regions()).
@@ -97,6 +99,7 @@ class MemoryModel {
     t.mem_gnt_i = 0;
     t.mem_rvalid_i = 0;
     if (!pending_.empty() && pending_.front().due <= cycle_) {
+      // A read burst's beats are queued one a cycle (access()); one leaves a cycle.
       t.mem_rvalid_i = 1;
       t.mem_rdata_i = pending_.front().data;
       pending_.pop_front();
@@ -109,7 +112,7 @@ class MemoryModel {
   void serve(V& t) {
     const auto sample = [&t] {
       return Request{bool(t.mem_req_o), bool(t.mem_we_o), unsigned(t.mem_be_o),
-                     uint32_t(t.mem_addr_o), uint32_t(t.mem_wdata_o)};
+                     uint32_t(t.mem_addr_o), uint32_t(t.mem_wdata_o), unsigned(t.mem_len_o)};
     };
     const Request now = sample();
     if (stalled_ && !(now == held_))
@@ -172,12 +175,15 @@ class MemoryModel {
     bool req = false, we = false;
     unsigned be = 0;
     uint32_t addr = 0, wdata = 0;
+    unsigned len = 0;  // read: beats - 1
     bool operator==(const Request& o) const {
-      return req == o.req && we == o.we && be == o.be && addr == o.addr && wdata == o.wdata;
+      return req == o.req && we == o.we && be == o.be && addr == o.addr && wdata == o.wdata &&
+             (we || len == o.len);
     }
     std::string str() const {
       return std::string(we ? "write" : "read") + " addr 0x" + hex(addr) + " be " +
-             std::to_string(be) + " wdata 0x" + hex(wdata);
+             std::to_string(be) + " wdata 0x" + hex(wdata) +
+             (we ? "" : " len " + std::to_string(len));
     }
   };
 
@@ -196,8 +202,15 @@ class MemoryModel {
     y = int(off / stride);
     return true;
   }
+  // Byte `a` of an input plane: raster, or column-tiled (Regions::tile).
   bool pixel_of(uint32_t base, uint32_t a, int& x, int& y) const {
-    return pixel_of(base, regions_.stride, uint32_t(regions_.width), a, x, y);
+    const Regions& r = regions_;
+    if (r.tile == 0) return pixel_of(base, r.stride, uint32_t(r.width), a, x, y);
+    if (r.width <= 0 || a < base) return false;
+    const uint32_t off = a - base, col = off / r.tile, in = off % r.tile;
+    x = int(4 * col + in % 4);
+    y = int(in / 4);
+    return x < r.width && y < r.height;
   }
 
   void access(const Request& q) {
@@ -205,13 +218,18 @@ class MemoryModel {
       write_word(q.addr, q.be, q.wdata);
       return;
     }
-    const uint32_t v = read_word(q.addr);
     int extra = lat_.fixed;
     if (lat_.random) extra += std::uniform_int_distribution<int>(0, lat_.max_random)(rng_);
-    // In order, at most one response a cycle.
+    // In order, at most one response a cycle; a burst's words at consecutive
+    // addresses, not across a 4 KiB boundary.
+    if (q.addr % 4096 + 4 * (q.len + 1) > 4096)
+      protocol_violation("read burst at 0x" + hex(q.addr) + " of " + std::to_string(q.len + 1) +
+                         " words crosses a 4 KiB boundary");
     long due = cycle_ + 1 + extra;
-    if (!pending_.empty()) due = std::max(due, pending_.back().due + 1);
-    pending_.push_back({due, v});
+    for (unsigned i = 0; i <= q.len; ++i, ++due) {
+      if (!pending_.empty()) due = std::max(due, pending_.back().due + 1);
+      pending_.push_back({due, read_word(q.addr + 4 * i)});
+    }
   }
 
   void check_range(uint32_t addr) const {

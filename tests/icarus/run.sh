@@ -5,7 +5,8 @@
 # must be identical, and no output may be X after reset. Runs the raw mode,
 # the sub-pixel mode (16-bit output plane) and the right view as base with
 # sub-pixel output (mirrored pass), and the LR mode with sub-pixel output (three
-# passes; the output and mask planes are compared).
+# passes; the output and mask planes are compared), and the right view as base
+# from column-tiled input planes (read bursts).
 #   tests/icarus/run.sh BUILD_DIR
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,12 +21,13 @@ cd "$root/rtl"
 mods=$(ls mcadsw_*.sv | grep -v '^mcadsw_pkg.sv$')
 iverilog -g2012 -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_top.sv" 2> "$work/iverilog.log" || {
   cat "$work/iverilog.log"; echo "icarus: compile failed" >&2; exit 1; }
-for mode in raw subpixel right_subpixel lr_subpixel; do
+for mode in raw subpixel right_subpixel lr_subpixel right_tiled; do
   run=$work/$mode; mkdir -p "$run"
   case $mode in
     raw) flags=() ;;
     subpixel) flags=(--subpixel) ;;
     lr_subpixel) flags=(--subpixel --lr) ;;
+    right_tiled) flags=(--right --tiled) ;;
     *) flags=(--subpixel --right) ;;
   esac
   "$build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" "${flags[@]}" --dump "$run" > "$run/verilator.log"

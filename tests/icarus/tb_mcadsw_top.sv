@@ -16,12 +16,14 @@ module tb_mcadsw_top;
   always #5 clk = ~clk;
 
   int words, base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, stride, out_stride, mode, width, height, disp;
+  int tile_stride = 0;
   int base_dl, base_dr, base_mask, lr_t;
   int thr0, thr1, thr2, thr3, thr4, thr5, thr6;
   logic [31:0] mem [MAXW];
   string dir;
 
   logic [31:0] cfg_base_ly, cfg_base_lu, cfg_base_lv, cfg_base_ry, cfg_base_out, cfg_stride;
+  logic [31:0] cfg_tile_stride;
   logic [31:0] cfg_out_stride, cfg_base_ru, cfg_base_rv, cfg_base_dl, cfg_base_dr, cfg_base_mask;
   logic [7:0]  cfg_lr_t;
   logic [2:0]  cfg_mode;
@@ -33,7 +35,7 @@ module tb_mcadsw_top;
   logic [3:0] error_code;
   logic [31:0] cnt_cycles, cnt_rd, cnt_wr, cnt_stall;
   logic mem_req, mem_gnt, mem_we, mem_rvalid, wr_idle, bus_idle, rd_err, wr_err;
-  logic [3:0] mem_be;
+  logic [3:0] mem_be, mem_len;
   logic [31:0] mem_addr, mem_wdata, mem_rdata;
   // AXI4
   logic        arvalid, rvalid = 1'b0, rready, rlast, awvalid, wvalid, wlast, bvalid = 1'b0, bready;
@@ -47,7 +49,7 @@ module tb_mcadsw_top;
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_base_ly_i (cfg_base_ly), .cfg_base_lu_i (cfg_base_lu), .cfg_base_lv_i (cfg_base_lv),
     .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),
-    .cfg_out_stride_i (cfg_out_stride), .cfg_mode_i (cfg_mode),
+    .cfg_out_stride_i (cfg_out_stride), .cfg_tile_stride_i (cfg_tile_stride), .cfg_mode_i (cfg_mode),
     .cfg_base_ru_i (cfg_base_ru), .cfg_base_rv_i (cfg_base_rv),
     .cfg_base_dl_i (cfg_base_dl), .cfg_base_dr_i (cfg_base_dr), .cfg_base_mask_i (cfg_base_mask),
     .cfg_lr_t_i (cfg_lr_t),
@@ -57,41 +59,57 @@ module tb_mcadsw_top;
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_rd), .cnt_words_written_o (cnt_wr),
     .cnt_stall_o (cnt_stall),
     .mem_req_o (mem_req), .mem_gnt_i (mem_gnt), .mem_we_o (mem_we), .mem_be_o (mem_be),
-    .mem_addr_o (mem_addr), .mem_wdata_o (mem_wdata), .mem_rvalid_i (mem_rvalid),
-    .mem_rdata_i (mem_rdata), .mem_wr_idle_i (wr_idle)
+    .mem_addr_o (mem_addr), .mem_len_o (mem_len), .mem_wdata_o (mem_wdata),
+    .mem_rvalid_i (mem_rvalid), .mem_rdata_i (mem_rdata), .mem_wr_idle_i (wr_idle)
   );
 
   mcadsw_axi_master u_axi (
     .clk_i (clk), .rst_ni (rst_n),
     .mem_req_i (mem_req), .mem_gnt_o (mem_gnt), .mem_we_i (mem_we), .mem_be_i (mem_be),
-    .mem_addr_i (mem_addr), .mem_wdata_i (mem_wdata), .mem_rvalid_o (mem_rvalid),
-    .mem_rdata_o (mem_rdata), .drain_i (1'b0), .wr_idle_o (wr_idle), .idle_o (bus_idle),
+    .mem_addr_i (mem_addr), .mem_len_i (mem_len), .mem_wdata_i (mem_wdata),
+    .mem_rvalid_o (mem_rvalid), .mem_rdata_o (mem_rdata), .drain_i (1'b0), .wr_idle_o (wr_idle), .idle_o (bus_idle),
     .rd_err_o (rd_err), .wr_err_o (wr_err),
     .m_arvalid_o (arvalid), .m_arready_i (1'b1), .m_araddr_o (araddr), .m_arlen_o (arlen),
     .m_arsize_o (arsize), .m_arburst_o (arburst),
     .m_rvalid_i (rvalid), .m_rready_o (rready), .m_rdata_i (rdata), .m_rresp_i (2'b00),
-    .m_rlast_i (1'b1),
+    .m_rlast_i (rlast),
     .m_awvalid_o (awvalid), .m_awready_i (1'b1), .m_awaddr_o (awaddr), .m_awlen_o (awlen),
     .m_awsize_o (awsize), .m_awburst_o (awburst),
     .m_wvalid_o (wvalid), .m_wready_i (1'b1), .m_wdata_o (wdata), .m_wstrb_o (wstrb),
     .m_wlast_o (wlast), .m_bvalid_i (bvalid), .m_bready_o (bready), .m_bresp_i (2'b00)
   );
 
-  // Zero-latency AXI4 memory (single-beat reads; the engine's master issues no others).
+  // Zero-latency AXI4 memory: R beats one a cycle from the cycle after the AR,
+  // in order (as sim/axi_memory.hpp without latency).
+  logic [31:0] r_addr [1024];
+  logic        r_last [1024];
+  int          r_in = 0, r_out = 0;
   logic [31:0] aw_addr [1024];
   int          aw_len [1024];
   logic [35:0] w_beat [16384];
   int          aw_n = 0, w_n = 0, wlast_n = 0, done_n = 0, beat_rd = 0;
   always @(posedge clk) begin
     rvalid <= 1'b0;
+    rlast  <= 1'b0;
     bvalid <= 1'b0;
     if (rst_n && arvalid) begin
-      if (araddr[1:0] != 2'b00 || araddr / 4 >= words || arlen != 8'd0 || arsize != 3'd2) begin
-        $display("FAIL: AR out of range, misaligned or not one 4-byte beat: %h len %0d", araddr, arlen);
+      if (araddr[1:0] != 2'b00 || araddr / 4 + arlen >= words || arsize != 3'd2 ||
+          araddr % 4096 + 4 * (arlen + 1) > 4096) begin
+        $display("FAIL: AR out of range, misaligned, not 4-byte beats or across 4 KiB: %h len %0d",
+                 araddr, arlen);
         $finish;
       end
-      rdata  <= mem[araddr / 4];
+      for (int i = 0; i <= arlen; i++) begin
+        r_addr[r_in % 1024] = araddr / 4 + i;
+        r_last[r_in % 1024] = i == arlen;
+        r_in++;
+      end
+    end
+    if (rst_n && r_out < r_in) begin
+      rdata  <= mem[r_addr[r_out % 1024]];
+      rlast  <= r_last[r_out % 1024];
       rvalid <= 1'b1;
+      r_out++;
     end
     if (rst_n && awvalid) begin
       aw_addr[aw_n % 1024] = awaddr;
@@ -173,6 +191,7 @@ module tb_mcadsw_top;
     ok = $value$plusargs("LR_T=%d", lr_t);
     ok = $value$plusargs("STRIDE=%d", stride);
     ok = $value$plusargs("OUT_STRIDE=%d", out_stride);
+    ok = $value$plusargs("TILE_STRIDE=%d", tile_stride);
     ok = $value$plusargs("MODE=%d", mode);
     ok = $value$plusargs("WIDTH=%d", width);
     ok = $value$plusargs("HEIGHT=%d", height);
@@ -188,6 +207,7 @@ module tb_mcadsw_top;
     $readmemh({dir, "/mem.hex"}, mem, 0, words - 1);
     cfg_base_ly = base_ly; cfg_base_lu = base_lu; cfg_base_lv = base_lv; cfg_base_ry = base_ry;
     cfg_base_out = base_out; cfg_stride = stride; cfg_out_stride = out_stride; cfg_mode = 3'(mode);
+    cfg_tile_stride = tile_stride;
     cfg_base_ru = base_ru; cfg_base_rv = base_rv;
     cfg_base_dl = base_dl; cfg_base_dr = base_dr; cfg_base_mask = base_mask; cfg_lr_t = 8'(lr_t);
     cfg_width = width; cfg_height = height; cfg_disp = disp;

@@ -363,6 +363,25 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   right_base("right view as base, output overlaps the right V", 6, 0x7000, 0x5000 + 128);
   right_base("right view as base, right U beyond 4 GiB", 9, 0xfffffc00u, 0x8000);
   with("output plane beyond 4 GiB", 9, [](auto& c) { c.base_out = 0xfffffc00u; });
+  // Column-tiled input planes (TILE_STRIDE != 0): 15 columns of 4 pixels, each
+  // of TILE_STRIDE >= 4 x 40 bytes; STRIDE is then checked only in the LR mode
+  // (dR and the mask).
+  with("tile stride below 4 x height", 4, [](auto& c) { c.tile_stride = 156; });
+  with("tile stride not a multiple of 4", 4, [](auto& c) { c.tile_stride = 162; });
+  with("tiled right Y reaches the output", 6, [](auto& c) { c.tile_stride = 400; });
+  with("tiled left V beyond 4 GiB (raster, 2560 bytes, would end at 4 GiB)", 9, [](auto& c) {
+    c.tile_stride = 184;  // 15 x 184 = 2760 bytes; raster 64 x 40 = 2560
+    c.base_lv = 0xfffff600u;
+  });
+  with("control: valid tiled configuration, stride 0", 0, [](auto& c) {
+    c.tile_stride = 160;
+    c.stride = 0;
+  });
+  lr("LR mode, tiled, stride below width", 4, [](auto& c) {
+    c.tile_stride = 160;
+    c.stride = 56;
+  });
+  lr("control: valid tiled LR configuration", 0, [](auto& c) { c.tile_stride = 160; });
   with("input plane beyond 4 GiB", 9, [](auto& c) { c.base_lv = 0xfffff800u; });
   for (const Bad& b : bad) {
     const sim::EngineResult r = sim::run_raw(b.cfg, {}, 1000);

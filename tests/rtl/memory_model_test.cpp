@@ -17,6 +17,7 @@ struct Port {
   bool mem_req_o = false, mem_we_o = false;
   unsigned mem_be_o = 0;
   uint32_t mem_addr_o = 0, mem_wdata_o = 0;
+  unsigned mem_len_o = 0;
   bool mem_gnt_i = false, mem_rvalid_i = false;
   uint32_t mem_rdata_i = 0;
   void eval() {}
@@ -68,6 +69,47 @@ TEST(MemoryModel, FlagsReadsOutsideTheInputPixels) {
   EXPECT_EQ(v.bad_reads, 4) << v.describe();
   EXPECT_EQ(v.total(), 4);
   EXPECT_NE(v.first_bad_read.find("0x0000010c"), std::string::npos) << v.first_bad_read;
+}
+
+// A read burst (mem_len_o + 1 words) on the request/grant port: its words at
+// consecutive addresses, one a cycle from the cycle after the grant; a burst
+// across a 4 KiB boundary is a protocol violation. Column-tiled input planes
+// (Regions::tile): a column of 4 pixels, all rows, is tile bytes.
+TEST(MemoryModel, ReadBurstsAndTiledPlanes) {
+  MemoryModel mem(0x2000, {});
+  MemoryModel::Regions r = regions();
+  r.inputs = {0x100};
+  r.tile = 12;  // 3 rows x 4 bytes; 10 pixels: columns 0..2 (the last holds x 8, 9)
+  mem.set_regions(r);
+  for (uint32_t a = 0; a < 0x2000; ++a) mem.data()[a] = uint8_t(a / 4);
+  Port p;
+  std::vector<uint32_t> got;
+  const auto cycle = [&](bool req, uint32_t addr, unsigned len) {
+    mem.drive_response(p);
+    if (p.mem_rvalid_i) got.push_back(p.mem_rdata_i);
+    p.mem_req_o = req;
+    p.mem_addr_o = addr;
+    p.mem_len_o = len;
+    mem.serve(p);
+    mem.end_cycle();
+  };
+  cycle(true, 0x100, 2);  // column 0, rows 0..2
+  cycle(true, 0x118, 2);  // column 2, rows 0..2
+  for (int i = 0; i < 8; ++i) cycle(false, 0, 0);
+  ASSERT_EQ(got.size(), 6u);
+  for (uint32_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(got[i] & 0xff, (0x100 + 4 * i) / 4);
+    EXPECT_EQ(got[3 + i] & 0xff, (0x118 + 4 * i) / 4);
+  }
+  EXPECT_EQ(mem.violations().total(), 0) << mem.violations().describe();
+  cycle(true, 0x124, 0);  // column 3: x 12 .. 15, outside the width
+  EXPECT_EQ(mem.violations().bad_reads, 1);
+  r.inputs = {0xff8};
+  r.tile = 0x100;
+  mem.set_regions(r);
+  cycle(true, 0xff8, 2);  // column 0, rows 0..2 at 0xff8 .. 0x1003: across 4 KiB
+  EXPECT_EQ(mem.violations().protocol, 1) << mem.violations().describe();
+  EXPECT_EQ(mem.violations().bad_reads, 0) << mem.violations().describe();
 }
 
 TEST(MemoryModel, FlagsWritesOutsideTheOutputPixelsAndWithoutBytes) {

@@ -30,7 +30,7 @@ uint32_t mask(int width) { return width >= 32 ? ~0u : (1u << width) - 1; }
 std::map<uint32_t, uint32_t> writable_bits() {
   std::map<uint32_t, uint32_t> m;
   for (uint32_t o = kBaseLy; o <= kBaseMask; o += 4) m[o] = ~0u;
-  m[kStride] = m[kOutStride] = ~0u;
+  m[kStride] = m[kOutStride] = m[kTileStride] = ~0u;
   m[kSize] = (mask(kSizeBits) << kSizeWidthLsb) | (mask(kSizeBits) << kSizeHeightLsb);
   m[kDisp] = mask(kDispBitsReg);
   m[kLrT] = mask(kLrTBits);
@@ -76,6 +76,7 @@ class Bench {
       case kBaseMask: return t.cfg_base_mask_o;
       case kStride: return t.cfg_stride_o;
       case kOutStride: return t.cfg_out_stride_o;
+      case kTileStride: return t.cfg_tile_stride_o;
       case kSize: return (uint32_t(t.cfg_width_o) << kSizeWidthLsb) | (uint32_t(t.cfg_height_o) << kSizeHeightLsb);
       case kDisp: return t.cfg_disp_o;  // D <= DMAX here
       case kLrT: return t.cfg_lr_t_o;

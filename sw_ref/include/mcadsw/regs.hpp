@@ -56,6 +56,7 @@ inline constexpr uint32_t kOutStride = 0x4C;
 inline constexpr uint32_t kSize = 0x50;
 inline constexpr uint32_t kDisp = 0x54;
 inline constexpr uint32_t kLrT = 0x58;
+inline constexpr uint32_t kTileStride = 0x5C;
 inline constexpr uint32_t kThr0 = 0x60;  // THR0 .. THR6 at kThr0 + 4 i
 inline constexpr uint32_t kCycles = 0x80;
 inline constexpr uint32_t kWordsRead = 0x84;
@@ -66,7 +67,7 @@ inline constexpr uint32_t kSpan = 0x100;  // address bits decoded: offsets 0 .. 
 // ---- Constants read from ID and VERSION ---------------------------------------------------
 inline constexpr uint32_t kIdValue = 0x4D434144;  // "MCAD"
 inline constexpr uint32_t kVersionMajor = 1;
-inline constexpr uint32_t kVersionMinor = 0;
+inline constexpr uint32_t kVersionMinor = 1;  // 1: TILE_STRIDE
 
 // ---- Fields (lsb, width) ---------------------------------------------------------------
 inline constexpr int kVersionMinorLsb = 0, kVersionMajorLsb = 8;
@@ -114,6 +115,8 @@ inline constexpr Reg kRegs[] = {
     {"SIZE", kSize, Access::kRW, "image width and height"},
     {"DISP", kDisp, Access::kRW, "D, the disparities searched"},
     {"LR_T", kLrT, Access::kRW, "LR: check tolerance T"},
+    {"TILE_STRIDE", kTileStride, Access::kRW,
+     "input planes column-tiled: bytes from one 4-pixel column to the next; 0: raster"},
     {"THR0", kThr0 + 0, Access::kRW, "weight table threshold 0"},
     {"THR1", kThr0 + 4, Access::kRW, "threshold 1"},
     {"THR2", kThr0 + 8, Access::kRW, "threshold 2"},
