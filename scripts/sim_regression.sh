@@ -4,7 +4,8 @@
 # disparity compared with the reference; raw mode, the sub-pixel mode
 # (16-bit output, docs/algorithm.md 12.6), the right view as base (12.1;
 # no error figure: the bundled ground truth is the left view's) and the LR mode
-# (12.2-12.5: output, mask and both scratch maps compared). Prints one row per case, writes
+# (12.2-12.5: output, mask and both scratch maps compared), and column-tiled
+# input planes. Prints one row per case, writes
 # BUILD/sim/summary.json, exits non-zero on any mismatch, timeout or error.
 #   scripts/sim_regression.sh BUILD_DIR [CASE] [WAVES]
 # CASE: run only that case; WAVES=1: also write BUILD/sim/CASE.fst and a
@@ -47,6 +48,13 @@ cases=(
   "teddy_lr|middlebury|teddy|60|4|--lr"
   "cones_lr_sub|middlebury|cones|60|4|--lr --subpixel"
   "teddy_crop_lr_sub_latency|cif|teddy|64|4|--crop 100,100,74,38 --lr --subpixel -T 3 --random-latency 4"
+  # Column-tiled input planes (read bursts, docs/memory_map.md), at zero latency and with a
+  # DDR-like memory (30 wait states, an AR at most every 8 clocks), raster for comparison.
+  "cif_tsukuba_tiled|cif|tsukuba|64|16|--tiled"
+  "cif_tsukuba_ddr|cif|tsukuba|64|16|--latency 30 --ar-interval 8"
+  "cif_tsukuba_tiled_ddr|cif|tsukuba|64|16|--tiled --latency 30 --ar-interval 8"
+  "cones_right_tiled|middlebury|cones|60|4|--right --tiled --tile-stride 1600 --random-latency 5"
+  "teddy_crop_lr_tiled|cif|teddy|64|4|--crop 100,100,74,38 --lr --tiled --random-latency 6"
   # Disparities up to about 120 (data/cif_x2: 2x upscaled Teddy and Cones, issue 18) at
   # D = the build's DMAX (64 by default, 128 with make sim DMAX=128).
   "cif_x2_teddy_dDMAX|cif_x2|teddy|DMAX|2|"
@@ -125,7 +133,7 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
     echo "[size] 1600 900"
     [ -n "$window" ] && echo "$window"
     for grp in "Registers (AXI4-Lite):mcadsw_axi_top.u_regs:s_awvalid_i s_awready_o s_wvalid_i s_wready_o s_bvalid_o s_bready_i s_arvalid_i s_rvalid_o start_o irq_o" \
-               "AXI4 master:mcadsw_axi_top.u_axi_master:m_arvalid_o m_arready_i m_araddr_o m_rvalid_i m_awvalid_o m_awready_i m_awaddr_o m_awlen_o m_wvalid_o m_wready_i m_wlast_o m_bvalid_i wr_idle_o drain_i" \
+               "AXI4 master:mcadsw_axi_top.u_axi_master:m_arvalid_o m_arready_i m_araddr_o m_arlen_o m_rvalid_i m_rlast_i m_awvalid_o m_awready_i m_awaddr_o m_awlen_o m_wvalid_o m_wready_i m_wlast_o m_bvalid_i wr_idle_o drain_i" \
                "Top:$eng:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i mem_wr_idle_i" \
                "Scheduler:$eng.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
                "Memory controller:$eng.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \
