@@ -121,15 +121,17 @@ module mcadsw_win_reader #(
     else adv_pos = {p[QW-1:RB], RB'(r)};
   endfunction
 
-  // The window origin, strip count and rows, registered at start_i: the address
-  // arithmetic starts from flip-flops, not from the block arithmetic in the top
-  // (that path to the external address was critical, docs/architecture.md section 10).
+  // The window origin and strip count, registered at start_i; the address terms
+  // are computed from them in the next two cycles (init_q: the clamps, then the
+  // multiplier), each from flip-flops, not from the block arithmetic in the top
+  // (those paths were critical, docs/architecture.md section 10).
   logic signed [CW:0]   x0_q, y0_q;
   logic [SB-1:0]        strips_q;
   logic [CW-1:0]        ylo_q;       // clamp(y0): the image row of a strip plane's word 0
   logic [RB-1:0]        klast_q;     // K - 1: clamp(y0 + ROWS - 1) - clamp(y0)
 
   logic          busy_q;
+  logic [1:0]    init_q;             // the two cycles after start_i: address terms computed
   logic [QW-1:0] rq_q, rs_q;         // word being requested / row being delivered
   logic          rq_done, rs_done;
   logic [PB-1:0] rs_plane_unused;
@@ -148,7 +150,7 @@ module mcadsw_win_reader #(
 
   // ---- Request side -------------------------------------------------------------
   // The request address is a register (addr_q), loaded a cycle ahead: in the
-  // cycle after start_i for the first burst (no request in that cycle), then
+  // second cycle after start_i for the first burst (no request before), then
   // at each grant for the next one. Its position (pos_q) carries the parts of
   // its address as registers, updated step by step, so the address is a sum of
   // three terms and no multiplier lies on the per-request path:
@@ -158,7 +160,8 @@ module mcadsw_win_reader #(
   //   tiled:  4 (ylo + k); xo_q = that memory word's column of words times tile
   //           (the product only at start_i, then +- tile when the next strip's
   //           word differs).
-  // A reader's one multiplier is shared: clamp(y0) * stride or word(x0) * tile.
+  // A reader's one multiplier is shared: clamp(y0) * stride or word(x0) * tile,
+  // computed once a window, two cycles after start_i.
   logic          tiled;
   assign tiled = tile_i != '0;
   logic          addr_ok_q;          // addr_q holds the address of rq_q
@@ -202,18 +205,19 @@ module mcadsw_win_reader #(
     word = CW'(4 * (clampi(32'(x), 32'(lo), 32'(w)) / 4));
     mem_col = mirror ? w - word - CW'(4) : word;
   endfunction
-  // At start_i: the raster row offset clamp(y0) * stride, or the tiled column
-  // offset word(x0) * tile, from one multiplier; the strip plane's rows.
+  // In the cycle after start_i the first column's memory word and the strip
+  // plane's rows (xoff_q, ylo_q, klast_q); in the next, from those, the raster
+  // row offset clamp(y0) * stride or the tiled column offset word(x0) * tile.
   logic [CW-1:0] col0, ylo0, yhi0;
   logic [AW-1:0] mul_a, mul_b, prod0;
-  assign col0  = mem_col((CW + 2)'(x0_i), lo_i, width_i, mirror_i);
-  assign ylo0  = CW'(clampi(32'(y0_i), 0, 32'(height_i)));
-  assign yhi0  = CW'(clampi(32'(y0_i) + ROWS - 1, 0, 32'(height_i)));
-  assign mul_a = tiled ? AW'(col0[CW-1:2]) : AW'(ylo0);
+  assign col0  = mem_col((CW + 2)'(x0_q), lo_i, width_i, mirror_i);
+  assign ylo0  = CW'(clampi(32'(y0_q), 0, 32'(height_i)));
+  assign yhi0  = CW'(clampi(32'(y0_q) + ROWS - 1, 0, 32'(height_i)));
+  assign mul_a = tiled ? AW'(xoff_q[CW-1:2]) : AW'(ylo_q);
   assign mul_b = tiled ? tile_i : stride_i;
   assign prod0 = mul_a * mul_b;
   logic advance;                     // addr_q takes addr_next: pos_q moves on
-  assign advance = (busy_q && !addr_ok_q) || (req_o && gnt_i);
+  assign advance = (busy_q && init_q == '0 && !addr_ok_q) || (req_o && gnt_i);
   logic strip_end;                   // pos_q's burst ends its strip (all planes)
   assign strip_end = pos_next[RB-1:0] == '0 && p_plane == PB'(PLANES - 1);
   logic [CW-1:0] xoff_next;
@@ -252,6 +256,7 @@ module mcadsw_win_reader #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       busy_q       <= 1'b0;
+      init_q       <= '0;
       addr_ok_q    <= 1'b0;
       addr_q       <= '0;
       len_q        <= '0;
@@ -275,23 +280,30 @@ module mcadsw_win_reader #(
     end else begin
       if (start_i && !busy_q) begin
         busy_q       <= 1'b1;
+        init_q       <= 2'b01;
         addr_ok_q    <= 1'b0;
         x0_q         <= x0_i;
         y0_q         <= y0_i;
-        ylo_q        <= ylo0;
-        klast_q      <= RB'(yhi0 - ylo0);
         strips_q     <= strips_i;
         rq_q         <= '0;
         rs_q         <= '0;
         rsy_q        <= (CW + 2)'(y0_i);
         pos_q        <= '0;
+      end
+      if (init_q[0]) begin
+        init_q       <= 2'b10;
+        ylo_q        <= ylo0;
+        klast_q      <= RB'(yhi0 - ylo0);
+        xabs_q       <= (CW + 2)'(x0_q);
+        xoff_q       <= col0;
+      end
+      if (init_q[1]) begin
+        init_q       <= 2'b00;
         yoff_q       <= tiled ? '0 : prod0;
         yoff0_q      <= tiled ? '0 : prod0;
-        xabs_q       <= (CW + 2)'(x0_i);
-        xoff_q       <= col0;
-        xo_q         <= tiled ? prod0 : AW'(col0);
+        xo_q         <= tiled ? prod0 : AW'(xoff_q);
       end
-      if (busy_q && !addr_ok_q) addr_ok_q <= 1'b1;
+      if (busy_q && init_q == '0 && !addr_ok_q) addr_ok_q <= 1'b1;
       if (req_o && gnt_i) rq_q <= adv_pos(rq_q, len_q, klast_q, strips_q);
       if (advance) begin
         addr_q <= addr_next;
