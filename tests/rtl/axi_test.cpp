@@ -180,7 +180,7 @@ TEST(Axi, TiledInputIsReadInBursts) {
   const int w = 64, h = 48;
   const YuvImage l = test::random_yuv(w, h, rng), r = test::random_yuv(w, h, rng);
   for (int mode = 0; mode < 3; ++mode)
-    for (uint32_t tile : {0u, 4u * h + 400})  // 4 KiB boundaries inside columns
+    for (uint32_t tile : {0u, 4u * h + 308})  // 500: 4 KiB at row 24 of column 8
       for (bool random : {false, true}) {
         SCOPED_TRACE(std::string(mode == 1 ? "right view as base" : mode == 2 ? "LR" : "left") +
                      ", tile stride " + std::to_string(tile) + (random ? ", random back-pressure" : ""));
