@@ -21,6 +21,9 @@
 #                (FRAME=1 also a whole Tsukuba frame against the reference)
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
 #                (build-cov/coverage/summary.txt; N=<random cases>, default 40)
+#   make formal  bounded proofs (Yosys SAT) of the memory controller, AXI4 master and depth FIFO
+#                properties in formal/ (build/formal/summary.json); SELFTEST=1: each against a
+#                mutant that must fail (scripts/formal.sh)
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
 #   make bench   Google Benchmark of the reference and OpenCV's matchers (MDE/s)
@@ -31,7 +34,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga formal lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -105,6 +108,9 @@ gls: bootstrap
 
 lint: bootstrap
 	@scripts/rtl_check.sh lint
+
+formal: bootstrap
+	@scripts/formal.sh $(BUILD_DIR) $(if $(SELFTEST),--selftest)
 
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null

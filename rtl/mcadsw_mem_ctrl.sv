@@ -59,9 +59,10 @@ module mcadsw_mem_ctrl #(
     pick   = last_q;
     any_rd = 1'b0;
     for (int i = 1; i <= NR; i++) begin
-      logic [IB-1:0] r;
-      r = IB'((32'(last_q) + i) % NR);
-      if (!any_rd && rd_req_i[r]) begin
+      logic [IB:0] r;                // last_q + i, wrapped (< 2 NR, so one subtraction)
+      r = (IB + 1)'(last_q) + (IB + 1)'(i);
+      if (r >= (IB + 1)'(NR)) r = r - (IB + 1)'(NR);
+      if (!any_rd && rd_req_i[IB'(r)]) begin
         pick   = IB'(r);
         any_rd = 1'b1;
       end
