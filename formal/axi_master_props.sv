@@ -62,11 +62,7 @@ module axi_master_props #(
     .m_bvalid_i, .m_bready_o (bready), .m_bresp_i
   );
 
-  logic init = 1'b1;
-  always_ff @(posedge clk_i) init <= 1'b0;
-  always_comb if (init) assume (!rst_ni);
-  logic past_ok = 1'b0;
-  always_ff @(posedge clk_i) past_ok <= rst_ni;
+  `include "props_reset.svh"
 
   // ---- Environment --------------------------------------------------------------------
   always_ff @(posedge clk_i) if (past_ok && rst_ni && $past(mem_req_i && !mem_gnt)) begin

@@ -60,11 +60,7 @@ module depth_fifo_props #(
     .wr_gnt_i
   );
 
-  logic init = 1'b1;
-  always_ff @(posedge clk_i) init <= 1'b0;
-  always_comb if (init) assume (!rst_ni);
-  logic past_ok = 1'b0;
-  always_ff @(posedge clk_i) past_ok <= rst_ni;
+  `include "props_reset.svh"
 
   // ---- Environment ------------------------------------------------------------------
   // The configuration of the first cycle, held for the whole trace.

@@ -49,12 +49,7 @@ module mem_ctrl_props #(
     .mem_rvalid_i, .mem_rdata_i
   );
 
-  // Reset in the first cycle, then free (it may come again).
-  logic init = 1'b1;
-  always_ff @(posedge clk_i) init <= 1'b0;
-  always_comb if (init) assume (!rst_ni);
-  logic past_ok = 1'b0;              // a cycle out of reset has passed
-  always_ff @(posedge clk_i) past_ok <= rst_ni;
+  `include "props_reset.svh"
 
   // ---- Environment ------------------------------------------------------------------
   // Requestors hold a request until its grant.

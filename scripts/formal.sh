@@ -30,7 +30,7 @@ run_check() {  # name rtl_file depth [mutant_sed]
     if cmp -s "$src" "$root/rtl/$file"; then echo "formal: the $name mutant does not apply" >&2; return 2; fi
     log=$out/$name.mutant.log
   fi
-  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS $root/rtl/mcadsw_pkg.sv $src $root/formal/${name}_props.sv
+  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS -I $root/formal $root/rtl/mcadsw_pkg.sv $src $root/formal/${name}_props.sv
     prep -top ${name}_props; async2sync; flatten; opt -fast
     sat -seq $depth -prove-asserts -set-assumes -set-init-zero -verify" > /dev/null 2>&1
 }
