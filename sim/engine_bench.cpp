@@ -13,6 +13,8 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 // The model: mcadsw_axi_top, programmed through its AXI4-Lite registers as a
 // driver would (issue 19), or, for the gate-level netlist of mcadsw_top
@@ -82,20 +84,19 @@ struct Layout {
                                     std::to_string(h));
       in_plane = (tile * uint32_t((w + 3) / 4) + 4095) / 4096 * 4096;
     }
-    ly = origin + 4096;
-    lu = ly + in_plane;
-    lv = lu + in_plane;
-    ry = lv + in_plane;
-    ru = ry + in_plane;
-    rv = ru + in_plane;
-    out = rv + in_plane;
-    total = out + out_plane + 4096;
-    if (lr) {
-      dl = total;
-      dr = dl + out_plane;
-      mask = dr + plane;
-      total = mask + plane + 4096;
+    // The planes in this order from the origin, or (reversed_planes) the other
+    // way round: the written planes below the ones read.
+    std::vector<std::pair<uint32_t*, uint32_t>> order{{&ly, in_plane}, {&lu, in_plane}, {&lv, in_plane},
+                                                       {&ry, in_plane}, {&ru, in_plane}, {&rv, in_plane},
+                                                       {&out, out_plane + (lr ? 4096u : 0u)}};
+    if (lr) order.insert(order.end(), {{&dl, out_plane}, {&dr, plane}, {&mask, plane}});
+    if (opt.reversed_planes) std::reverse(order.begin(), order.end());
+    uint32_t at = origin + 4096;
+    for (const auto& [base, size] : order) {
+      *base = at;
+      at += size;
     }
+    total = at + 4096;
   }
   RawConfig raw(int disparities) const {
     RawConfig c{ly, lu, lv, ry, out, stride, out_stride, width, height, disparities};

@@ -30,6 +30,9 @@ struct EngineOptions {
   bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
   bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
   uint32_t out_stride = 0;       // bytes per row of the output plane; 0: its row rounded up to 4
+  // The planes in memory in the reverse order: output (LR: and the scratch and
+  // mask planes) below the input planes, right view's below the left view's.
+  bool reversed_planes = false;
   bool lr = false;               // mode bit 1: left-right check, fill, median (docs/algorithm.md 12.2-12.5)
   int lr_tolerance = kLrToleranceDefault;  // T
   long max_cycles = 0;           // 0: derived from the frame size

@@ -30,7 +30,9 @@ namespace {
 
 using namespace mcadsw;
 
-const char* kUsage = "usage: mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR]\n";
+const char* kUsage =
+    "usage: mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR] [--fail-fast]\n"
+    "  --fail-fast  stop at the first failing case (the mutation run's kill suite)\n";
 
 enum class Interrupt { kNone, kRead, kWrite, kAbort };
 
@@ -186,6 +188,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   int cases = 200, only = -1;
   uint32_t seed = 1;
+  bool fail_fast = false;
   std::string data = MCADSW_DATA_DIR;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -198,6 +201,7 @@ int main(int argc, char** argv) {
       else if (a == "--seed") seed = uint32_t(mcadsw::parse_long(val(), "seed"));
       else if (a == "--case") only = int(mcadsw::parse_long(val(), "case"));
       else if (a == "--data") data = val();
+      else if (a == "--fail-fast") fail_fast = true;
       else if (a == "-h" || a == "--help") {
         std::cout << kUsage;
         return 0;
@@ -278,6 +282,7 @@ int main(int argc, char** argv) {
       std::printf("  reproduce: %s --seed %u --case %d\n", argv[0], seed, k);
     }
     std::fflush(stdout);
+    if (failures && fail_fast) break;
   }
   std::printf("sim-random: %ld case(s), seed %u, %ld cycles, %ld mismatching case(s)\n", run, seed,
               cycles, failures);

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -143,6 +144,89 @@ TEST(Engine, LargeStrideWithRandomLatency) {
   opt.latency.random = true;
   opt.latency.seed = 3;
   expect_exact(sim::run_engine(test::random_yuv(43, 22, rng), test::random_yuv(43, 22, rng), cfg, opt));
+}
+
+// Costs near the top of the accumulators: no other test reaches the upper bits
+// of the 25-bit final cost (`make mutate` showed mutants there surviving; those
+// turned out equivalent, but the carries into the top bits were untested). The
+// weight table gives every colour distance the largest weight (64), the left view
+// is a texture (Y = 128 +- 2), the right view its negative (census codes inverted
+// wherever no neighbour ties with the centre), so the final costs come close to
+// 2^25. Raw and sub-pixel output (the offset depends on the cost differences).
+TEST(Engine, CostsNearTheAccumulatorsTopBits) {
+  std::mt19937 rng(12);
+  const int w = 44, h = 36;
+  YuvImage l = test::flat_yuv(w, h, 128), r = test::flat_yuv(w, h, 128);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      l.y.at(x, y) = uint8_t(126 + int(rng() % 5));
+      r.y.at(x, y) = uint8_t(255 - l.y.at(x, y));
+    }
+  Config cfg;
+  cfg.disparities = 9;
+  for (auto& v : cfg.table) v = uint8_t(weight_from_code(7));
+  Intermediates keep;
+  disparity_map_blocks(l, r, cfg, &keep);
+  uint32_t top = 0;
+  for (const auto& fc : keep.final_cost) top = std::max(top, *std::max_element(fc.begin(), fc.end()));
+  EXPECT_GE(top, 1u << 24) << "the stimulus no longer reaches the final cost's top bit";
+  for (const bool sub : {false, true}) {
+    SCOPED_TRACE(sub ? "sub-pixel" : "raw");
+    EngineOptions opt;
+    opt.subpixel = sub;
+    expect_exact(sim::run_engine(l, r, cfg, opt));
+  }
+}
+
+// The widest frame (kMaxWidth columns): column and address bits above 1023 (found by
+// `make mutate`: the random cases this wide were flat, striped or a real crop
+// replicated beyond its border, so a column read 1024 too far left gave the same
+// pixels). Noise in both views; left and right view as base, raster and tiled.
+TEST(Engine, WidestFrameOfNoise) {
+  std::mt19937 rng(13);
+  const YuvImage l = test::random_yuv(kMaxWidth, 3, rng), r = test::random_yuv(kMaxWidth, 3, rng);
+  Config cfg;
+  cfg.disparities = 5;
+  for (const bool right : {false, true})
+    for (const bool tiled : {false, true}) {
+      SCOPED_TRACE(std::string(right ? "right" : "left") + " view as base, " + (tiled ? "tiled" : "raster"));
+      EngineOptions opt;
+      opt.right = right;
+      opt.tiled = tiled;
+      expect_exact(sim::run_engine(l, r, cfg, opt));
+    }
+}
+
+// The tallest frames, kMaxHeight - 1 and kMaxHeight rows: row bits above 1023
+// (found by `make mutate`: no other test has a frame that tall, so the
+// scheduler's last-block-row compare could ignore the height's bit 10).
+TEST(Engine, TallestFrames) {
+  std::mt19937 rng(15);
+  Config cfg;
+  cfg.disparities = 2;
+  for (const int h : {kMaxHeight - 1, kMaxHeight}) {
+    SCOPED_TRACE("H = " + std::to_string(h));
+    expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, {}));
+  }
+}
+
+// The planes in the reverse order in memory (written planes below the ones
+// read): every overlap comparison of the configuration check (error 6) is then
+// decided the other way (found by `make mutate`: with the harness's one order, a
+// mutant of a comparison between the mask and the right view's V plane passed).
+TEST(Engine, PlanesInReverseOrder) {
+  std::mt19937 rng(14);
+  const YuvImage l = test::random_yuv(30, 19, rng), r = test::random_yuv(30, 19, rng);
+  Config cfg;
+  cfg.disparities = 7;
+  for (const int mode : {0, 1, 2}) {
+    SCOPED_TRACE(mode == 0 ? "left view as base" : mode == 1 ? "right view as base" : "LR mode");
+    EngineOptions opt;
+    opt.reversed_planes = true;
+    opt.right = mode == 1;
+    opt.lr = mode == 2;
+    expect_exact(sim::run_engine(l, r, cfg, opt));
+  }
 }
 
 // Sub-pixel mode (docs/algorithm.md 12.6): every 16-bit value equal to the
