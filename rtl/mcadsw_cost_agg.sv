@@ -386,6 +386,37 @@ module mcadsw_cost_agg #(
   end
 `endif
 
+`ifdef FORMAL
+  // Ping-pong ownership, proven by `make formal` (formal/cost_agg_props.sv): a
+  // ghost tag per bank and column group records the (row, d) of the costs last
+  // written there. Whenever the horizontal side reads a bank (h1), every group of
+  // that bank holds the costs of the (row, d) it reads for: the bank was filled
+  // completely for that disparity and nothing overwrote it before the read.
+  localparam int TAGB = RB + DB;
+  logic [2*GROUPS*TAGB-1:0] own_q;     // bank b, group g at (b GROUPS + g) TAGB
+  logic [2*GROUPS-1:0]      own_set_q; // written at least once since reset
+  always_ff @(posedge clk_i or negedge rst_ni)
+    if (!rst_ni) begin
+      own_q     <= '0;
+      own_set_q <= '0;
+    end else if (ev_valid && v2_valid_q) begin
+      for (int b = 0; b < 2; b++)
+        for (int g = 0; g < GROUPS; g++)
+          if (wbank_q == b[0] && v2_grp_q == GB'(g)) begin
+            own_q[(b*GROUPS + g)*TAGB +: TAGB] <= {v2_row_q, v2_d_q};
+            own_set_q[b*GROUPS + g] <= 1'b1;
+          end
+    end
+  always_comb
+    if (rst_ni && h1_valid_q)
+      for (int b = 0; b < 2; b++)
+        for (int g = 0; g < GROUPS; g++)
+          if (h1_bank_q == b[0]) begin
+            assert (own_set_q[b*GROUPS + g]);
+            assert (own_q[(b*GROUPS + g)*TAGB +: TAGB] == {h1_row_q, h1_d_q});
+          end
+`endif
+
 endmodule
 
 `default_nettype wire

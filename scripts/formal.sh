@@ -15,22 +15,27 @@ build=${1:-$root/build}; mode=${2:-}
 out=$build/formal; mkdir -p "$out"
 command -v yosys > /dev/null || { echo "formal: yosys missing (run scripts/bootstrap.sh)" >&2; exit 1; }
 
-# name | RTL module file | depth | mutant for --selftest (sed expression on the RTL)
+# name | RTL files (the block first, then its submodules) | depth | mutant for
+# --selftest (sed expression on the block's file)
 checks=(
   "mem_ctrl|mcadsw_mem_ctrl.sv|10|s/assign write_sel = hold_q ? hold_wr_q : wr_req_i;/assign write_sel = hold_q ? hold_wr_q : wr_req_i \&\& !any_rd;/"
   "axi_master|mcadsw_axi_master.sv|10|s/assign contig     = mem_addr_i == ob_next_q \&\& mem_addr_i\[11:0\] != 12'd0;/assign contig     = mem_addr_i == ob_next_q;/"
   "depth_fifo|mcadsw_depth_fifo.sv|8|s/        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);/        tail_q <= tail_q;/"
+  "cost_agg|mcadsw_cost_agg.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv|28|s/    else if (bank_full) wbank_q <= !wbank_q;/    else if (bank_full) wbank_q <= wbank_q;/"
 )
 
-run_check() {  # name rtl_file depth [mutant_sed]
-  local name=$1 file=$2 depth=$3 mut=${4:-} src=$root/rtl/$2 log=$out/$1.log
+run_check() {  # name "rtl_files" depth [mutant_sed]
+  local name=$1 depth=$3 mut=${4:-} log=$out/$1.log f
+  local -a files=($2)
+  local file=${files[0]} src=$root/rtl/${files[0]} subs=""
+  for f in "${files[@]:1}"; do subs+=" $root/rtl/$f"; done
   if [ -n "$mut" ]; then
     src=$out/$name.mutant.sv
     sed "$mut" "$root/rtl/$file" > "$src"
     if cmp -s "$src" "$root/rtl/$file"; then echo "formal: the $name mutant does not apply" >&2; return 2; fi
     log=$out/$name.mutant.log
   fi
-  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS -I $root/formal $root/rtl/mcadsw_pkg.sv $src $root/formal/${name}_props.sv
+  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS -I $root/formal $root/rtl/mcadsw_pkg.sv $src$subs $root/formal/${name}_props.sv
     prep -top ${name}_props; async2sync; flatten; opt -fast
     sat -seq $depth -prove-asserts -set-assumes -set-init-zero -verify" > /dev/null 2>&1
 }
