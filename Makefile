@@ -24,6 +24,10 @@
 #   make formal  bounded proofs (Yosys SAT) of the memory controller, AXI4 master and depth FIFO
 #                properties in formal/ (build/formal/summary.json); SELFTEST=1: each against a
 #                mutant that must fail (scripts/formal.sh)
+#   make mutate  mutation score: N=200 Yosys mutants (SEED=1) of the flattened design, each
+#                against the kill suite (engine and AXI tests, random frames); survivors must
+#                be listed in tests/mutate/equivalent.txt (build/mutate/summary.json;
+#                SAMPLE=20 a seeded sample of them, as CI runs; scripts/mutate.sh)
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
 #   make bench   Google Benchmark of the reference and OpenCV's matchers (MDE/s)
@@ -34,7 +38,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga formal lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga formal mutate lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -111,6 +115,11 @@ lint: bootstrap
 
 formal: bootstrap
 	@scripts/formal.sh $(BUILD_DIR) $(if $(SELFTEST),--selftest)
+
+# make mutate [N=200] [SEED=1] [SAMPLE=k] [MUTANTS="i j"]: mutation testing (scripts/mutate.sh)
+mutate: bootstrap
+	@N=$(N) SEED=$(SEED) SAMPLE=$(SAMPLE) MUTANTS="$(MUTANTS)" JOBS=$(JOBS) \
+	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh
 
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null

@@ -27,6 +27,9 @@
 #else
 #include "Vmcadsw_top.h"
 #endif
+#if MCADSW_MUTANT
+#include <cstdlib>
+#endif
 #if VM_COVERAGE
 #include <unistd.h>
 #include <verilated_cov.h>
@@ -145,6 +148,15 @@ class Engine {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
     // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
+#if MCADSW_MUTANT
+    // `make mutate` (scripts/mutate.sh): the model holds every mutant of the
+    // list; the environment variable MCADSW_MUTANT selects one (0 or unset:
+    // none, the design as written), passed on as the plusarg the model reads.
+    const std::string mutant =
+        std::string("+mcadsw_mutant=") + (std::getenv("MCADSW_MUTANT") ? std::getenv("MCADSW_MUTANT") : "0");
+    const char* mutant_arg[] = {mutant.c_str()};
+    ctx_->commandArgsAdd(1, mutant_arg);
+#endif
     top_ = std::make_unique<Dut>(ctx_.get());
 #if MCADSW_DUT_AXIL
     // READY and VALID of the register bus held back 30 % of the cycles.

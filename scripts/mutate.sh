@@ -1,0 +1,259 @@
+#!/usr/bin/env bash
+# make mutate: mutation testing of the RTL (issue 20). How much would the tests catch?
+#
+#   make mutate N=200 SEED=1            the N mutants Yosys's `mutate -list N -seed SEED`
+#                                       spreads over the design, each run against the kill suite
+#   make mutate N=200 SEED=1 SAMPLE=20  a seeded sample of 20 of those N (CI)
+#   JOBS=k                              mutants run in parallel (default: the cores)
+#   MUTANTS="3 17"                      only these mutants of the list, again (after a new
+#                                       test); the other results of the last run are kept
+#   REPORT_ONLY=1                       the summary of the last run again (after editing
+#                                       the list of equivalent mutants)
+#
+# Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS), elaborates mcadsw_axi_top
+# (the engine, its register block and AXI4 master: every RTL module), flattens it and
+# applies every mutant of the list behind a select input (`mutate -ctrl mutsel W k`:
+# mutant k is active when mutsel == k, 0 is the design as written). Verilator builds
+# that one model into the engine harness (sim/CMakeLists.txt, MCADSW_MUTANT_VERILOG),
+# and the harness sets mutsel from the environment variable MCADSW_MUTANT. So N mutants
+# cost one model build; the design with mutsel = 0 must pass the whole kill suite first.
+#
+# Kill suite, in this order, stopping at the first failure (GoogleTest --gtest_fail_fast):
+#   1. rtl_engine_test (tests/rtl/engine_test.cpp): crops of real pairs in every mode
+#      (left / right / LR, raw / sub-pixel), D from 2 to DMAX, strides, back-to-back
+#      frames, reset and start while busy, aborts, every configuration error code
+#      (not its death test: the design is read for synthesis, without the RTL's
+#      simulation assertions);
+#   2. rtl_axi_test (tests/rtl/axi_test.cpp): AXI4 bursts, tiled input, response
+#      errors, abort with bursts in flight, 4 KiB;
+#   3. mcadsw_sim_random --cases 40 --seed 2026 --fail-fast: random sizes, D, modes,
+#      strides, latencies, interrupts, each frame against the reference.
+# A mutant is killed when a stage fails, crashes (an RTL assertion, a combinational
+# loop the model cannot settle) or runs out of its time (TIMEOUT seconds a stage,
+# default 300; the harness's own cycle limits end a hung frame long before).
+# The block tests (census, weight generator, cost aggregator, WTA, post, registers)
+# verilate the blocks as written, so they cannot see a mutant of the flattened engine;
+# they are not in the suite.
+#
+# Survivors: tests/mutate/survivors.txt lists survivors by key (the `mutate` command
+# without -ctrl) with a kind and the reason: equivalent (cannot change any output; not
+# counted in the score) or open (could, but no test shows it yet; counted as
+# survived). A survivor in neither fails the run (exit 1).
+# Output: build/mutate/summary.json (total, killed, survived, equivalent, open,
+# unlisted, score = killed / (total - equivalent), per module counts, the survivors), results.tsv
+# (one line a mutant: number, module, outcome, the test that killed it, seconds)
+# and logs/ (each mutant's kill-suite output).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+n=${N:-200}
+seed=${SEED:-1}
+sample=${SAMPLE:-0}
+jobs=${JOBS:-$(nproc)}
+stage_timeout=${TIMEOUT:-300}
+build=${BUILD_DIR:-$root/build}
+out=$build/mutate
+listfile=$root/tests/mutate/survivors.txt
+die() { echo "mutate: $*" >&2; exit 1; }
+
+[[ "$n" =~ ^[0-9]+$ ]] && [ "$n" -ge 1 ] && [ "$n" -le 65535 ] || die "N must be 1 to 65535, not '$n'"
+[[ "$seed" =~ ^[0-9]+$ ]] || die "SEED must be a number, not '$seed'"
+[[ "$sample" =~ ^[0-9]+$ ]] && [ "$sample" -le "$n" ] || die "SAMPLE must be 0 (all) to N, not '$sample'"
+[[ "$jobs" =~ ^[0-9]+$ ]] && [ "$jobs" -ge 1 ] || die "JOBS must be 1 or more, not '$jobs'"
+[ -f "$listfile" ] || die "no list of survivors at $listfile"
+mkdir -p "$out"
+start_all=$(date +%s)
+
+if [ "${REPORT_ONLY:-0}" = 1 ]; then
+  [ -d "$out/results" ] && [ -f "$out/mutants.tsv" ] || die "no results in $out: run make mutate first"
+  elapsed=$(cat "$out/run_seconds" 2>/dev/null || echo 0)
+else
+# 1. The mutant design (regenerated when the RTL, N, SEED or Yosys change).
+mods=$(ls rtl/mcadsw_*.sv | grep -v mcadsw_pkg.sv | tr '\n' ' ')
+width=1
+while [ $(( (1 << width) - 1 )) -lt "$n" ]; do width=$((width + 1)); done
+stamp=$( { cat rtl/mcadsw_pkg.sv $mods; echo "$n $seed $width"; yosys -V; } | sha1sum | cut -d' ' -f1)
+design=$out/mutants_n${n}_s${seed}.v
+if [ ! -f "$design" ] || [ "$(cat "$out/design.stamp" 2>/dev/null)" != "$stamp" ]; then
+  echo "mutate: Yosys: elaborating mcadsw_axi_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
+  rm -f "$out/instances.txt" "$out/design.stamp"
+  # Instance name -> module, for the per-module counts.
+  inst_cmds=""
+  for f in $mods; do
+    m=$(basename "$f" .sv)
+    inst_cmds+="tee -q -a $out/instances.txt log -- module $m; tee -q -a $out/instances.txt select -list t:*$m*; "
+  done
+  t0=$(date +%s)
+  yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS rtl/mcadsw_pkg.sv $mods
+    hierarchy -check -top mcadsw_axi_top
+    $inst_cmds
+    prep -flatten -top mcadsw_axi_top
+    mutate -list $n -seed $seed -ctrl mutsel $width 1 -o $out/list.ys
+    script $out/list.ys
+    opt_clean
+    write_verilog -noattr $design.tmp" > /dev/null || die "Yosys failed (log: $out/yosys.log)"
+  # mutsel as a port would be an input of the model, and Verilator re-evaluates the
+  # logic that depends on inputs every time they change (3x slower): make it a
+  # variable the model sets once from the plusarg +mcadsw_mutant=K (the harness
+  # passes MCADSW_MUTANT on, sim/engine_bench.cpp).
+  sed -e 's/, mutsel);$/);/' \
+      -e "s/^  input \[$((width - 1)):0\] mutsel;\$/  reg [$((width - 1)):0] mutsel;\n  initial if (!\$value\$plusargs(\"mcadsw_mutant=%d\", mutsel)) mutsel = 0;/" \
+      -e "/^  wire \[$((width - 1)):0\] mutsel;\$/d" "$design.tmp" > "$design"
+  rm -f "$design.tmp"
+  [ "$(grep -c 'mcadsw_mutant=' "$design")" = 1 ] && ! grep -q 'input .*mutsel' "$design" ||
+    die "could not turn the mutsel port of $design into a plusarg"
+  [ "$(grep -c '^mutate ' "$out/list.ys")" = "$n" ] || die "Yosys listed $(grep -c '^mutate ' "$out/list.ys") mutants, not $n"
+  echo "$stamp" > "$out/design.stamp"
+  echo "mutate: design written in $(( $(date +%s) - t0 )) s ($design)"
+fi
+
+# 2. The model and the kill suite's programs. -O1: the model of the flattened
+# design compiles in a third of the time and runs the suite nearly as fast.
+cmake -S "$root" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_MUTANT_VERILOG="$design" > "$out/cmake.log" 2>&1 ||
+  { tail -20 "$out/cmake.log"; die "cmake configure failed (log: $out/cmake.log)"; }
+t0=$(date +%s)
+echo "mutate: building the mutant model and the kill suite (Verilator, $out/cmake)"
+cmake --build "$out/cmake" --target rtl_engine_test_mut rtl_axi_test_mut mcadsw_sim_random_mut \
+  > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; die "build failed (log: $out/build.log)"; }
+echo "mutate: built in $(( $(date +%s) - t0 )) s"
+bin=$out/cmake/bin
+
+# 3. The kill suite on one mutant: prints "outcome<TAB>test".
+kill_suite() {
+  local k=$1 log=$2 rc
+  : > "$log"
+  local -a stages=(
+    "engine|$bin/rtl_engine_test_mut --gtest_fail_fast --gtest_brief=1 --gtest_filter=-*DeathTest*"
+    "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1"
+    "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast")
+  for s in "${stages[@]}"; do
+    local name=${s%%|*} cmd=${s#*|}
+    echo "== $name: $cmd" >> "$log"
+    rc=0
+    MCADSW_MUTANT=$k timeout -k 10 "$stage_timeout" $cmd >> "$log" 2>&1 || rc=$?
+    if [ "$rc" != 0 ]; then
+      local what
+      if [ "$rc" = 124 ] || [ "$rc" = 137 ]; then what="$name:timeout"
+      elif [ "$rc" -gt 128 ]; then what="$name:signal$((rc - 128))"
+      else
+        what=$(grep -m1 -oE '^\[  FAILED  \] [A-Za-z0-9_./]+|^case +[0-9]+ .*FAILED' "$log" |
+               sed -E 's/^\[  FAILED  \] //; s/^case +([0-9]+) .*/case \1/' || true)
+        what="$name:${what:-exit$rc}"
+      fi
+      printf 'killed\t%s\n' "${what// /_}"
+      return
+    fi
+  done
+  printf 'survived\t-\n'
+}
+
+echo "mutate: the design as written (mutsel = 0) through the kill suite"
+t0=$(date +%s)
+base=$(kill_suite 0 "$out/baseline.log")
+[ "${base%%$'\t'*}" = survived ] ||
+  die "the unmutated model fails the kill suite (${base#*$'\t'}; log: $out/baseline.log): fix this first"
+echo "mutate: unmutated model passes the kill suite in $(( $(date +%s) - t0 )) s"
+
+# 4. Which mutants: all, a list, or a seeded sample (a linear congruential
+# generator in shell arithmetic: the same picks on every machine).
+if [ -n "${MUTANTS:-}" ]; then
+  picks=$MUTANTS
+elif [ "$sample" -gt 0 ]; then
+  picks=$(state=$seed; left=$sample; declare -A seen=()
+          while [ "$left" -gt 0 ]; do
+            state=$(( (state * 1103515245 + 12345) % 2147483648 ))
+            k=$(( state % n + 1 ))
+            [ -n "${seen[$k]:-}" ] && continue
+            seen[$k]=1; echo "$k"; left=$((left - 1))
+          done | sort -n | tr '\n' ' ')
+else
+  picks=$(seq 1 "$n" | tr '\n' ' ')
+fi
+npicks=$(wc -w <<< "$picks")
+
+# Module of each mutant: the innermost instance on its cell's path.
+awk -v OFS='\t' '
+  FNR == NR { if ($1 == "--" && $2 == "module") m = $3
+              else { inst = $0; sub(/.*\//, "", inst); sub(/.*\./, "", inst); mod[inst] = m }
+              next }
+  /^mutate / { k++; cell = ""
+    for (i = 1; i < NF; i++) if ($i == "-cell") cell = $(i + 1)
+    who = "mcadsw_axi_top"; np = split(cell, seg, ".")
+    for (i = 1; i <= np; i++) { s = seg[i]; sub(/^\$flatten/, "", s); sub(/^\\/, "", s)
+                                 if (s in mod) who = mod[s] }
+    key = $0; sub(/ -ctrl [^ ]+ [0-9]+ [0-9]+/, "", key)
+    print k, who, key }' "$out/instances.txt" "$out/list.ys" > "$out/mutants.tsv"
+
+# 5. Run them.
+echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames"
+if [ -n "${MUTANTS:-}" ]; then     # re-run these, keep the other results of the last run
+  for k in $picks; do rm -f "$out/results/$k" "$out/logs/mutant_$k.log"; done
+else
+  rm -rf "$out/logs" "$out/results"
+fi
+mkdir -p "$out/logs" "$out/results"
+export -f kill_suite
+export bin stage_timeout out
+tstart=$(date +%s)
+for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
+  k={}; t0=$(date +%s)
+  r=$(kill_suite "$k" "$out/logs/mutant_$k.log")
+  printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 ))" > "$out/results/$k"
+  printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
+elapsed=$(( $(date +%s) - tstart ))
+echo "$elapsed" > "$out/run_seconds"
+fi
+
+# 6. Summary: survivors found in the committed list are equivalent or open.
+cat "$out/results"/* | sort -n > "$out/outcomes.tsv"
+awk -F'\t' -v OFS='\t' -v listfile="$listfile" '
+  BEGIN { while ((getline line < listfile) > 0) { if (line !~ /^mutate /) continue
+            split(line, p, "\t"); kind[p[1]] = p[2] } }
+  FNR == NR { mod[$1] = $2; key[$1] = $3; next }
+  { k = $1; o = $2; kd = (key[k] in kind) ? kind[key[k]] : ""
+    if (o == "survived" && kd != "") o = kd                 # equivalent or open
+    else if (o == "killed" && kd != "") o = "killed_listed"
+    print k, mod[k], o, $3, $4, key[k] }' "$out/mutants.tsv" "$out/outcomes.tsv" > "$out/results.tsv"
+
+# Counts: survived = open + unlisted; score = killed / (total - equivalent).
+awk -F'\t' -v n="$n" -v seed="$seed" -v sample="$sample" -v secs="$elapsed" -v jobs="$jobs" '
+  function esc(s) { gsub(/\\/, "&&", s); gsub(/"/, "\\\"", s); return s }
+  { tot++; m = $2; mods[m] = 1; pm_t[m]++
+    if ($3 == "killed" || $3 == "killed_listed") { kil++; pm_k[m]++ }
+    else if ($3 == "equivalent") { eq++; pm_e[m]++ }
+    else { sur++; pm_s[m]++; if ($3 == "open") op++; else un++
+           surv[sur] = $1 "\t" m "\t" $3 "\t" $6 }
+    if ($3 == "killed_listed") stale[++ns] = $1 }
+  END {
+    score = (tot - eq) > 0 ? 100.0 * kil / (tot - eq) : 100
+    printf "{\n  \"n\": %d, \"seed\": %d, \"sample\": %d, \"jobs\": %d, \"seconds\": %d,\n", n, seed, sample, jobs, secs
+    printf "  \"total\": %d, \"killed\": %d, \"survived\": %d, \"equivalent\": %d, \"open\": %d, \"unlisted\": %d,\n", tot, kil, sur, eq, op, un
+    printf "  \"score_percent\": %.1f,\n  \"per_module\": {\n", score
+    np = 0; for (m in mods) names[++np] = m
+    for (a = 1; a <= np; a++) for (b = a + 1; b <= np; b++) if (names[b] < names[a]) { t = names[a]; names[a] = names[b]; names[b] = t }
+    for (a = 1; a <= np; a++) { m = names[a]
+      printf "    \"%s\": {\"total\": %d, \"killed\": %d, \"survived\": %d, \"equivalent\": %d}%s\n", m, pm_t[m], pm_k[m] + 0, pm_s[m] + 0, pm_e[m] + 0, (a < np ? "," : "") }
+    printf "  },\n  \"survivors\": ["
+    for (a = 1; a <= sur; a++) { split(surv[a], p, "\t")
+      printf "%s\n    {\"mutant\": %d, \"module\": \"%s\", \"kind\": \"%s\", \"mutation\": \"%s\"}", (a > 1 ? "," : ""), p[1], p[2], p[3], esc(p[4]) }
+    printf "%s],\n  \"listed_but_killed\": [", (sur ? "\n  " : "")
+    for (a = 1; a <= ns; a++) printf "%s%d", (a > 1 ? ", " : ""), stale[a]
+    printf "]\n}\n" }' "$out/results.tsv" > "$out/summary.json"
+
+read -r tot kil eq op un < <(awk -F'\t' '{t++; if ($3 ~ /^killed/) k++; else if ($3 == "equivalent") e++; else if ($3 == "open") o++; else u++}
+                                  END {print t, k + 0, e + 0, o + 0, u + 0}' "$out/results.tsv")
+score=$(awk -v k="$kil" -v t="$tot" -v e="$eq" 'BEGIN {printf "%.1f", ((t - e) > 0 ? 100 * k / (t - e) : 100)}')
+echo "mutate: $tot mutants: $kil killed, $eq equivalent, $op open (listed), $un unlisted survivors; score $score % (killed / non-equivalent; target >= 95 %)"
+echo "mutate: per module (total killed survived equivalent):"
+awk -F'\t' '{t[$2]++; if ($3 ~ /^killed/) k[$2]++; else if ($3 == "equivalent") e[$2]++; else s[$2]++}
+            END {for (m in t) printf "  %-20s %4d %4d %4d %4d\n", m, t[m], k[m], s[m], e[m]}' "$out/results.tsv" | sort
+awk -F'\t' '$3 == "killed_listed" {printf "mutate: warning: mutant %d is listed in %s but was killed (%s): remove it\n", $1, list, $4}' \
+  list="${listfile#$root/}" "$out/results.tsv"
+[ "${REPORT_ONLY:-0}" = 1 ] || echo "mutate: $(( $(date +%s) - start_all )) s in all, $elapsed s running mutants"
+echo "mutate: $out/summary.json"
+if [ "$un" -gt 0 ]; then
+  echo "mutate: survivors not in ${listfile#$root/} (kill them with a test, or list them: equivalent or open, with the reason):" >&2
+  awk -F'\t' '$3 == "survived" {printf "  mutant %d (%s): %s\n", $1, $2, $6}' "$out/results.tsv" >&2
+  exit 1
+fi
