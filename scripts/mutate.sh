@@ -68,141 +68,141 @@ if [ "${REPORT_ONLY:-0}" = 1 ]; then
   [ -d "$out/results" ] && [ -f "$out/mutants.tsv" ] || die "no results in $out: run make mutate first"
   elapsed=$(cat "$out/run_seconds" 2>/dev/null || echo 0)
 else
-# 1. The mutant design (regenerated when the RTL, N, SEED or Yosys change).
-mods=$(ls rtl/mcadsw_*.sv | grep -v mcadsw_pkg.sv | tr '\n' ' ')
-width=1
-while [ $(( (1 << width) - 1 )) -lt "$n" ]; do width=$((width + 1)); done
-stamp=$( { cat rtl/mcadsw_pkg.sv $mods; echo "$n $seed $width"; yosys -V; } | sha1sum | cut -d' ' -f1)
-design=$out/mutants_n${n}_s${seed}.v
-if [ ! -f "$design" ] || [ "$(cat "$out/design.stamp" 2>/dev/null)" != "$stamp" ]; then
-  echo "mutate: Yosys: elaborating mcadsw_axi_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
-  rm -f "$out/instances.txt" "$out/design.stamp"
-  # Instance name -> module, for the per-module counts.
-  inst_cmds=""
-  for f in $mods; do
-    m=$(basename "$f" .sv)
-    inst_cmds+="tee -q -a $out/instances.txt log -- module $m; tee -q -a $out/instances.txt select -list t:*$m*; "
-  done
+  # 1. The mutant design (regenerated when the RTL, N, SEED or Yosys change).
+  mods=$(ls rtl/mcadsw_*.sv | grep -v mcadsw_pkg.sv | tr '\n' ' ')
+  width=1
+  while [ $(( (1 << width) - 1 )) -lt "$n" ]; do width=$((width + 1)); done
+  stamp=$( { cat rtl/mcadsw_pkg.sv $mods; echo "$n $seed $width"; yosys -V; } | sha1sum | cut -d' ' -f1)
+  design=$out/mutants_n${n}_s${seed}.v
+  if [ ! -f "$design" ] || [ "$(cat "$out/design.stamp" 2>/dev/null)" != "$stamp" ]; then
+    echo "mutate: Yosys: elaborating mcadsw_axi_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
+    rm -f "$out/instances.txt" "$out/design.stamp"
+    # Instance name -> module, for the per-module counts.
+    inst_cmds=""
+    for f in $mods; do
+      m=$(basename "$f" .sv)
+      inst_cmds+="tee -q -a $out/instances.txt log -- module $m; tee -q -a $out/instances.txt select -list t:*$m*; "
+    done
+    t0=$(date +%s)
+    yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS rtl/mcadsw_pkg.sv $mods
+      hierarchy -check -top mcadsw_axi_top
+      $inst_cmds
+      prep -flatten -top mcadsw_axi_top
+      mutate -list $n -seed $seed -ctrl mutsel $width 1 -o $out/list.ys
+      script $out/list.ys
+      opt_clean
+      write_verilog -noattr $design.tmp" > /dev/null || die "Yosys failed (log: $out/yosys.log)"
+    # mutsel as a port would be an input of the model, and Verilator re-evaluates the
+    # logic that depends on inputs every time they change (3x slower): make it a
+    # variable the model sets once from the plusarg +mcadsw_mutant=K (the harness
+    # passes MCADSW_MUTANT on, sim/engine_bench.cpp).
+    sed -e 's/, mutsel);$/);/' \
+        -e "s/^  input \[$((width - 1)):0\] mutsel;\$/  reg [$((width - 1)):0] mutsel;\n  initial if (!\$value\$plusargs(\"mcadsw_mutant=%d\", mutsel)) mutsel = 0;/" \
+        -e "/^  wire \[$((width - 1)):0\] mutsel;\$/d" "$design.tmp" > "$design"
+    rm -f "$design.tmp"
+    [ "$(grep -c 'mcadsw_mutant=' "$design")" = 1 ] && ! grep -q 'input .*mutsel' "$design" ||
+      die "could not turn the mutsel port of $design into a plusarg"
+    [ "$(grep -c '^mutate ' "$out/list.ys")" = "$n" ] || die "Yosys listed $(grep -c '^mutate ' "$out/list.ys") mutants, not $n"
+    echo "$stamp" > "$out/design.stamp"
+    echo "mutate: design written in $(( $(date +%s) - t0 )) s ($design)"
+  fi
+
+  # 2. The model and the kill suite's programs, at -O1 as for `make gls`: the
+  # generated model of the flattened design compiles in about 30 s.
+  cmake -S "$root" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_MUTANT_VERILOG="$design" > "$out/cmake.log" 2>&1 ||
+    { tail -20 "$out/cmake.log"; die "cmake configure failed (log: $out/cmake.log)"; }
   t0=$(date +%s)
-  yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS rtl/mcadsw_pkg.sv $mods
-    hierarchy -check -top mcadsw_axi_top
-    $inst_cmds
-    prep -flatten -top mcadsw_axi_top
-    mutate -list $n -seed $seed -ctrl mutsel $width 1 -o $out/list.ys
-    script $out/list.ys
-    opt_clean
-    write_verilog -noattr $design.tmp" > /dev/null || die "Yosys failed (log: $out/yosys.log)"
-  # mutsel as a port would be an input of the model, and Verilator re-evaluates the
-  # logic that depends on inputs every time they change (3x slower): make it a
-  # variable the model sets once from the plusarg +mcadsw_mutant=K (the harness
-  # passes MCADSW_MUTANT on, sim/engine_bench.cpp).
-  sed -e 's/, mutsel);$/);/' \
-      -e "s/^  input \[$((width - 1)):0\] mutsel;\$/  reg [$((width - 1)):0] mutsel;\n  initial if (!\$value\$plusargs(\"mcadsw_mutant=%d\", mutsel)) mutsel = 0;/" \
-      -e "/^  wire \[$((width - 1)):0\] mutsel;\$/d" "$design.tmp" > "$design"
-  rm -f "$design.tmp"
-  [ "$(grep -c 'mcadsw_mutant=' "$design")" = 1 ] && ! grep -q 'input .*mutsel' "$design" ||
-    die "could not turn the mutsel port of $design into a plusarg"
-  [ "$(grep -c '^mutate ' "$out/list.ys")" = "$n" ] || die "Yosys listed $(grep -c '^mutate ' "$out/list.ys") mutants, not $n"
-  echo "$stamp" > "$out/design.stamp"
-  echo "mutate: design written in $(( $(date +%s) - t0 )) s ($design)"
-fi
+  echo "mutate: building the mutant model and the kill suite (Verilator, $out/cmake)"
+  cmake --build "$out/cmake" --target rtl_engine_test_mut rtl_axi_test_mut mcadsw_sim_random_mut \
+    > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; die "build failed (log: $out/build.log)"; }
+  echo "mutate: built in $(( $(date +%s) - t0 )) s"
+  bin=$out/cmake/bin
 
-# 2. The model and the kill suite's programs. -O1: the model of the flattened
-# design compiles in a third of the time and runs the suite nearly as fast.
-cmake -S "$root" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_MUTANT_VERILOG="$design" > "$out/cmake.log" 2>&1 ||
-  { tail -20 "$out/cmake.log"; die "cmake configure failed (log: $out/cmake.log)"; }
-t0=$(date +%s)
-echo "mutate: building the mutant model and the kill suite (Verilator, $out/cmake)"
-cmake --build "$out/cmake" --target rtl_engine_test_mut rtl_axi_test_mut mcadsw_sim_random_mut \
-  > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; die "build failed (log: $out/build.log)"; }
-echo "mutate: built in $(( $(date +%s) - t0 )) s"
-bin=$out/cmake/bin
-
-# 3. The kill suite on one mutant: prints "outcome<TAB>test".
-kill_suite() {
-  local k=$1 log=$2 rc
-  : > "$log"
-  local -a stages=(
-    "engine|$bin/rtl_engine_test_mut --gtest_fail_fast --gtest_brief=1 --gtest_filter=-*DeathTest*"
-    "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1"
-    "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast")
-  for s in "${stages[@]}"; do
-    local name=${s%%|*} cmd=${s#*|}
-    echo "== $name: $cmd" >> "$log"
-    rc=0
-    MCADSW_MUTANT=$k timeout -k 10 "$stage_timeout" $cmd >> "$log" 2>&1 || rc=$?
-    if [ "$rc" != 0 ]; then
-      local what
-      if [ "$rc" = 124 ] || [ "$rc" = 137 ]; then what="$name:timeout"
-      elif [ "$rc" -gt 128 ]; then what="$name:signal$((rc - 128))"
-      else
-        what=$(grep -m1 -oE '^\[  FAILED  \] [A-Za-z0-9_./]+|^case +[0-9]+ .*FAILED' "$log" |
-               sed -E 's/^\[  FAILED  \] //; s/^case +([0-9]+) .*/case \1/' || true)
-        what="$name:${what:-exit$rc}"
+  # 3. The kill suite on one mutant: prints "outcome<TAB>test".
+  kill_suite() {
+    local k=$1 log=$2 rc
+    : > "$log"
+    local -a stages=(
+      "engine|$bin/rtl_engine_test_mut --gtest_fail_fast --gtest_brief=1 --gtest_filter=-*DeathTest*"
+      "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1"
+      "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast")
+    for s in "${stages[@]}"; do
+      local name=${s%%|*} cmd=${s#*|}
+      echo "== $name: $cmd" >> "$log"
+      rc=0
+      MCADSW_MUTANT=$k timeout -k 10 "$stage_timeout" $cmd >> "$log" 2>&1 || rc=$?
+      if [ "$rc" != 0 ]; then
+        local what
+        if [ "$rc" = 124 ] || [ "$rc" = 137 ]; then what="$name:timeout"
+        elif [ "$rc" -gt 128 ]; then what="$name:signal$((rc - 128))"
+        else
+          what=$(grep -m1 -oE '^\[  FAILED  \] [A-Za-z0-9_./]+|^case +[0-9]+ .*FAILED' "$log" |
+                 sed -E 's/^\[  FAILED  \] //; s/^case +([0-9]+) .*/case \1/' || true)
+          what="$name:${what:-exit$rc}"
+        fi
+        printf 'killed\t%s\n' "${what// /_}"
+        return
       fi
-      printf 'killed\t%s\n' "${what// /_}"
-      return
-    fi
-  done
-  printf 'survived\t-\n'
-}
+    done
+    printf 'survived\t-\n'
+  }
 
-echo "mutate: the design as written (mutsel = 0) through the kill suite"
-t0=$(date +%s)
-base=$(kill_suite 0 "$out/baseline.log")
-[ "${base%%$'\t'*}" = survived ] ||
-  die "the unmutated model fails the kill suite (${base#*$'\t'}; log: $out/baseline.log): fix this first"
-echo "mutate: unmutated model passes the kill suite in $(( $(date +%s) - t0 )) s"
+  echo "mutate: the design as written (mutsel = 0) through the kill suite"
+  t0=$(date +%s)
+  base=$(kill_suite 0 "$out/baseline.log")
+  [ "${base%%$'\t'*}" = survived ] ||
+    die "the unmutated model fails the kill suite (${base#*$'\t'}; log: $out/baseline.log): fix this first"
+  echo "mutate: unmutated model passes the kill suite in $(( $(date +%s) - t0 )) s"
 
-# 4. Which mutants: all, a list, or a seeded sample (a linear congruential
-# generator in shell arithmetic: the same picks on every machine).
-if [ -n "${MUTANTS:-}" ]; then
-  picks=$MUTANTS
-elif [ "$sample" -gt 0 ]; then
-  picks=$(state=$seed; left=$sample; declare -A seen=()
-          while [ "$left" -gt 0 ]; do
-            state=$(( (state * 1103515245 + 12345) % 2147483648 ))
-            k=$(( state % n + 1 ))
-            [ -n "${seen[$k]:-}" ] && continue
-            seen[$k]=1; echo "$k"; left=$((left - 1))
-          done | sort -n | tr '\n' ' ')
-else
-  picks=$(seq 1 "$n" | tr '\n' ' ')
-fi
-npicks=$(wc -w <<< "$picks")
+  # 4. Which mutants: all, a list, or a seeded sample (a linear congruential
+  # generator in shell arithmetic: the same picks on every machine).
+  if [ -n "${MUTANTS:-}" ]; then
+    picks=$MUTANTS
+  elif [ "$sample" -gt 0 ]; then
+    picks=$(state=$seed; left=$sample; declare -A seen=()
+            while [ "$left" -gt 0 ]; do
+              state=$(( (state * 1103515245 + 12345) % 2147483648 ))
+              k=$(( state % n + 1 ))
+              [ -n "${seen[$k]:-}" ] && continue
+              seen[$k]=1; echo "$k"; left=$((left - 1))
+            done | sort -n | tr '\n' ' ')
+  else
+    picks=$(seq 1 "$n" | tr '\n' ' ')
+  fi
+  npicks=$(wc -w <<< "$picks")
 
-# Module of each mutant: the innermost instance on its cell's path.
-awk -v OFS='\t' '
-  FNR == NR { if ($1 == "--" && $2 == "module") m = $3
-              else { inst = $0; sub(/.*\//, "", inst); sub(/.*\./, "", inst); mod[inst] = m }
-              next }
-  /^mutate / { k++; cell = ""
-    for (i = 1; i < NF; i++) if ($i == "-cell") cell = $(i + 1)
-    who = "mcadsw_axi_top"; np = split(cell, seg, ".")
-    for (i = 1; i <= np; i++) { s = seg[i]; sub(/^\$flatten/, "", s); sub(/^\\/, "", s)
-                                 if (s in mod) who = mod[s] }
-    key = $0; sub(/ -ctrl [^ ]+ [0-9]+ [0-9]+/, "", key)
-    print k, who, key }' "$out/instances.txt" "$out/list.ys" > "$out/mutants.tsv"
+  # Module of each mutant: the innermost instance on its cell's path.
+  awk -v OFS='\t' '
+    FNR == NR { if ($1 == "--" && $2 == "module") m = $3
+                else { inst = $0; sub(/.*\//, "", inst); sub(/.*\./, "", inst); mod[inst] = m }
+                next }
+    /^mutate / { k++; cell = ""
+      for (i = 1; i < NF; i++) if ($i == "-cell") cell = $(i + 1)
+      who = "mcadsw_axi_top"; np = split(cell, seg, ".")
+      for (i = 1; i <= np; i++) { s = seg[i]; sub(/^\$flatten/, "", s); sub(/^\\/, "", s)
+                                   if (s in mod) who = mod[s] }
+      key = $0; sub(/ -ctrl [^ ]+ [0-9]+ [0-9]+/, "", key)
+      print k, who, key }' "$out/instances.txt" "$out/list.ys" > "$out/mutants.tsv"
 
-# 5. Run them.
-echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames"
-if [ -n "${MUTANTS:-}" ]; then     # re-run these, keep the other results of the last run
-  for k in $picks; do rm -f "$out/results/$k" "$out/logs/mutant_$k.log"; done
-else
-  rm -rf "$out/logs" "$out/results"
-fi
-mkdir -p "$out/logs" "$out/results"
-export -f kill_suite
-export bin stage_timeout out
-tstart=$(date +%s)
-for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
-  k={}; t0=$(date +%s)
-  r=$(kill_suite "$k" "$out/logs/mutant_$k.log")
-  printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 ))" > "$out/results/$k"
-  printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
-elapsed=$(( $(date +%s) - tstart ))
-echo "$elapsed" > "$out/run_seconds"
+  # 5. Run them.
+  echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames"
+  if [ -n "${MUTANTS:-}" ]; then     # re-run these, keep the other results of the last run
+    for k in $picks; do rm -f "$out/results/$k" "$out/logs/mutant_$k.log"; done
+  else
+    rm -rf "$out/logs" "$out/results"
+  fi
+  mkdir -p "$out/logs" "$out/results"
+  export -f kill_suite
+  export bin stage_timeout out
+  tstart=$(date +%s)
+  for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
+    k={}; t0=$(date +%s)
+    r=$(kill_suite "$k" "$out/logs/mutant_$k.log")
+    printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 ))" > "$out/results/$k"
+    printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
+  elapsed=$(( $(date +%s) - tstart ))
+  echo "$elapsed" > "$out/run_seconds"
 fi
 
 # 6. Summary: survivors found in the committed list are equivalent or open.
