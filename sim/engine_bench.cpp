@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -27,15 +28,11 @@
 #else
 #include "Vmcadsw_top.h"
 #endif
-#if MCADSW_MUTANT
-#include <cstdlib>
-#endif
 #if VM_COVERAGE
 #include <unistd.h>
 #include <verilated_cov.h>
 
 #include <atomic>
-#include <cstdlib>
 #endif
 #include "vbits.hpp"
 
