@@ -49,19 +49,22 @@ using Dut = Vmcadsw_top;
 // V, right Y, U, V) of stride bytes per row (default: the width rounded up to
 // 4) and the output plane of out_stride bytes per row (default: its row, 1 or
 // 2 bytes a pixel, rounded up to 4), each starting on a 4 KiB boundary after a
-// 4 KiB guard. The right view's U and V are always in memory; only the right
-// and LR modes may read them. The LR mode adds, after the output plane, the
-// scratch planes dL (output stride) and dR (input stride) and the mask plane
-// (input stride). Tiled (EngineOptions::tiled), the six input planes are
-// column-tiled, tile bytes a column of 4 pixels (default 4 x height); dR and
-// the mask keep the raster stride.
+// 4 KiB guard, from EngineOptions::origin (EngineOptions::packed: each plane
+// at the first multiple of 4 after the previous one's stride x height bytes).
+// The right view's U and V are always in memory; only the right and LR modes
+// may read them. The LR mode adds, after the output plane, the scratch planes
+// dL (output stride) and dR (input stride) and the mask plane (input stride).
+// Tiled (EngineOptions::tiled), the six input planes are column-tiled, tile
+// bytes a column of 4 pixels (default 4 x height); dR and the mask keep the
+// raster stride. Sizes are computed in 64 bits: a layout that does not fit
+// below 2^32 is refused.
 struct Layout {
-  uint32_t stride, out_stride, plane, out_plane, ly, lu, lv, ry, ru, rv, out, dl = 0, dr = 0,
-      mask = 0, total, tile = 0, in_plane;
+  uint32_t stride, out_stride, ly, lu, lv, ry, ru, rv, out, dl = 0, dr = 0, mask = 0, tile = 0;
+  uint64_t origin, plane, out_plane, in_plane, total;  // sizes: stride x height etc.
   int width, height, out_bpp, lr_t;
   bool right, lr;
-  Layout(int w, int h, uint32_t origin, const EngineOptions& opt)
-      : width(w), height(h), out_bpp(opt.subpixel ? 2 : 1), lr_t(opt.lr_tolerance),
+  Layout(int w, int h, uint64_t origin_at, const EngineOptions& opt)
+      : origin(origin_at), width(w), height(h), out_bpp(opt.subpixel ? 2 : 1), lr_t(opt.lr_tolerance),
         right(opt.right), lr(opt.lr) {
     stride = opt.stride ? opt.stride : uint32_t((w + 3) / 4 * 4);
     if (stride < uint32_t(w) || stride % 4 != 0)
@@ -73,8 +76,12 @@ struct Layout {
       throw std::invalid_argument("output stride " + std::to_string(out_stride) +
                                   " must be a multiple of 4 and at least the output row of " +
                                   std::to_string(row) + " bytes");
-    plane = (stride * uint32_t(h) + 4095) / 4096 * 4096;
-    out_plane = (out_stride * uint32_t(h) + 4095) / 4096 * 4096;
+    if (opt.origin % 4096 != 0)
+      throw std::invalid_argument("origin " + std::to_string(opt.origin) + " must be a multiple of 4096");
+    const uint64_t align = opt.packed ? 4 : 4096;
+    const auto up = [align](uint64_t n) { return (n + align - 1) / align * align; };
+    plane = up(uint64_t(stride) * uint64_t(h));
+    out_plane = up(uint64_t(out_stride) * uint64_t(h));
     in_plane = plane;
     if (opt.tiled) {
       tile = opt.tile_stride ? opt.tile_stride : 4 * uint32_t(h);
@@ -82,21 +89,25 @@ struct Layout {
         throw std::invalid_argument("tile stride " + std::to_string(tile) +
                                     " must be a multiple of 4 and at least 4 x the height " +
                                     std::to_string(h));
-      in_plane = (tile * uint32_t((w + 3) / 4) + 4095) / 4096 * 4096;
+      in_plane = up(uint64_t(tile) * uint64_t((w + 3) / 4));
     }
     // The planes in this order from the origin, or (reversed_planes) the other
     // way round: the written planes below the ones read.
-    std::vector<std::pair<uint32_t*, uint32_t>> order{{&ly, in_plane}, {&lu, in_plane}, {&lv, in_plane},
+    std::vector<std::pair<uint32_t*, uint64_t>> order{{&ly, in_plane}, {&lu, in_plane}, {&lv, in_plane},
                                                        {&ry, in_plane}, {&ru, in_plane}, {&rv, in_plane},
-                                                       {&out, out_plane + (lr ? 4096u : 0u)}};
+                                                       {&out, out_plane + (lr ? align : 0u)}};
     if (lr) order.insert(order.end(), {{&dl, out_plane}, {&dr, plane}, {&mask, plane}});
     if (opt.reversed_planes) std::reverse(order.begin(), order.end());
-    uint32_t at = origin + 4096;
+    uint64_t at = origin + 4096;
     for (const auto& [base, size] : order) {
-      *base = at;
+      *base = uint32_t(at);
       at += size;
     }
     total = at + 4096;
+    if (total > (uint64_t(1) << 32))
+      throw std::invalid_argument("the frame's planes (" + std::to_string(total - origin) +
+                                  " bytes from the origin " + std::to_string(origin) +
+                                  ") do not fit in the 32-bit address space");
   }
   RawConfig raw(int disparities) const {
     RawConfig c{ly, lu, lv, ry, out, stride, out_stride, width, height, disparities};
@@ -130,7 +141,8 @@ void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, uint32_t tile, co
   for (int y = 0; y < p.height; ++y)
     for (int x = 0; x < p.width; ++x) {
       const uint32_t ux = uint32_t(x), uy = uint32_t(y);
-      m.data()[base + (tile ? ux / 4 * tile + 4 * uy + ux % 4 : uy * stride + ux)] = p.at(x, y);
+      m.byte(uint64_t(base) + (tile ? uint64_t(ux / 4) * tile + 4 * uy + ux % 4 : uint64_t(uy) * stride + ux)) =
+          p.at(x, y);
     }
 }
 
@@ -422,8 +434,12 @@ long frame_limit(int W, int H, const EngineOptions& opt) {
   return opt.max_cycles > 0 ? opt.max_cycles : (opt.lr ? 3 : 1) * (40000 * blocks + 100000);
 }
 
-// Writes a frame's planes at its layout and fills its disparity plane with
-// 0xff ("never written").
+// Writes a frame's planes at its layout and fills the pixels of its disparity
+// plane with 0xff ("never written"; LR: dL and dR too, the mask with 0x77).
+void fill_pixels(MemoryModel& mem, uint32_t base, uint32_t stride, uint32_t row, int height, uint8_t v) {
+  for (int y = 0; y < height; ++y)
+    for (uint32_t i = 0; i < row; ++i) mem.byte(uint64_t(base) + uint64_t(y) * stride + i) = v;
+}
 void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right) {
   put_plane(mem, lay.ly, lay.stride, lay.tile, left.y);
   put_plane(mem, lay.lu, lay.stride, lay.tile, left.u);
@@ -431,12 +447,18 @@ void load_frame(MemoryModel& mem, const Layout& lay, const YuvImage& left, const
   put_plane(mem, lay.ry, lay.stride, lay.tile, right.y);
   put_plane(mem, lay.ru, lay.stride, lay.tile, right.u);
   put_plane(mem, lay.rv, lay.stride, lay.tile, right.v);
-  for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.out + i] = 0xff;
+  const uint32_t w = uint32_t(lay.width), orow = w * uint32_t(lay.out_bpp);
+  fill_pixels(mem, lay.out, lay.out_stride, orow, lay.height, 0xff);
   if (lay.lr) {
-    for (uint32_t i = 0; i < lay.out_plane; ++i) mem.data()[lay.dl + i] = 0xff;
-    for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.dr + i] = 0xff;
-    for (uint32_t i = 0; i < lay.plane; ++i) mem.data()[lay.mask + i] = 0x77;
+    fill_pixels(mem, lay.dl, lay.out_stride, orow, lay.height, 0xff);
+    fill_pixels(mem, lay.dr, lay.stride, w, lay.height, 0xff);
+    fill_pixels(mem, lay.mask, lay.stride, w, lay.height, 0x77);
   }
+}
+
+// Byte x of row y of a plane.
+uint8_t& at(MemoryModel& mem, uint32_t base, uint32_t stride, int x, int y) {
+  return mem.byte(uint64_t(base) + uint64_t(y) * stride + uint64_t(x));
 }
 
 // LR mode: the output plane and the mask against depth_map() (docs/algorithm.md
@@ -463,8 +485,9 @@ void score_lr(MemoryModel& mem, const Layout& lay, const YuvImage& left, const Y
   };
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const uint8_t* p = mem.data() + lay.out + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp);
-      const int got = opt.subpixel ? p[0] | p[1] << 8 : p[0];
+      const int ox = x * lay.out_bpp;
+      const int got = at(mem, lay.out, lay.out_stride, ox, y) |
+                      (opt.subpixel ? at(mem, lay.out, lay.out_stride, ox + 1, y) << 8 : 0);
       const int want = opt.subpixel ? ref.disp16.at(x, y) : ref.disp16.at(x, y) / kSubpixelScale;
       if (opt.subpixel) {
         r.disparity16.at(x, y) = uint16_t(got);
@@ -473,13 +496,13 @@ void score_lr(MemoryModel& mem, const Layout& lay, const YuvImage& left, const Y
         r.disparity.at(x, y) = uint8_t(got);
       }
       if (got != want) bad(opt.subpixel ? "output 16d+o" : "output d", x, y, got, want);
-      const int mk = mem.data()[lay.mask + uint32_t(y) * lay.stride + uint32_t(x)];
+      const int mk = at(mem, lay.mask, lay.stride, x, y);
       r.mask.at(x, y) = uint8_t(mk);
       if (mk != ref.valid.at(x, y)) bad("mask", x, y, mk, ref.valid.at(x, y));
-      const int dl = mem.data()[lay.dl + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp)] &
+      const int dl = at(mem, lay.dl, lay.out_stride, x * lay.out_bpp, y) &
                      (opt.subpixel ? (1 << kDispBits) - 1 : 0xff);
       if (dl != ref.raw.at(x, y)) bad("scratch dL", x, y, dl, ref.raw.at(x, y));
-      const int dr = mem.data()[lay.dr + uint32_t(y) * lay.stride + uint32_t(x)];
+      const int dr = at(mem, lay.dr, lay.stride, x, y);
       if (dr != ref.right.at(x, y)) bad("scratch dR", x, y, dr, ref.right.at(x, y));
     }
   r.bus = mem.violations();
@@ -513,8 +536,9 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const int xp = opt.right ? W - 1 - x : x;  // the pass's column
-      const uint8_t* p = mem.data() + lay.out + uint32_t(y) * lay.out_stride + uint32_t(x * lay.out_bpp);
-      const int got = opt.subpixel ? p[0] | p[1] << 8 : p[0];
+      const int ox = x * lay.out_bpp;
+      const int got = at(mem, lay.out, lay.out_stride, ox, y) |
+                      (opt.subpixel ? at(mem, lay.out, lay.out_stride, ox + 1, y) << 8 : 0);
       const int want = opt.subpixel ? ref16.at(xp, y) : ref.at(xp, y);
       if (opt.subpixel) {
         r.disparity16.at(x, y) = uint16_t(got);
@@ -545,17 +569,19 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
 // the run verilator_out.hex (the disparity plane's words) and
 // verilator_counters.txt.
 void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, const WeightTable& table) {
+  // The Verilog bench's memory starts at address 0 (tests/icarus/tb_mcadsw_top.sv).
+  if (mem.lo() != 0) throw std::invalid_argument("--dump needs the frame at origin 0");
   std::ofstream m(dir + "/mem.hex");
-  for (size_t a = 0; a + 4 <= mem.size(); a += 4) {
+  for (uint64_t a = 0; a + 4 <= mem.hi(); a += 4) {
     uint32_t w = 0;
-    for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
+    for (int b = 0; b < 4; ++b) w |= uint32_t(mem.byte(a + b)) << (8 * b);
     char buf[16];
     std::snprintf(buf, sizeof buf, "%08x\n", w);
     m << buf;
   }
   const WeightThresholds thr = weight_thresholds(table);
   std::ofstream f(dir + "/config.txt");
-  f << "+WORDS=" << mem.size() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
+  f << "+WORDS=" << mem.hi() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
     << " +BASE_LV=" << c.base_lv << " +BASE_RY=" << c.base_ry << " +BASE_OUT=" << c.base_out
     << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv << " +BASE_DL=" << c.base_dl
     << " +BASE_DR=" << c.base_dr << " +BASE_MASK=" << c.base_mask << " +LR_T=" << c.lr_t
@@ -570,17 +596,17 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
 
 void dump_after(const std::string& dir, MemoryModel& mem, const Layout& lay, const EngineResult& r) {
   std::ofstream m(dir + "/verilator_out.hex");
-  const auto words = [&](uint32_t base, uint32_t bytes) {
-    for (uint32_t a = base; a < base + bytes; a += 4) {
+  const auto words = [&](uint64_t base, uint64_t bytes) {
+    for (uint64_t a = base; a < base + bytes; a += 4) {
       uint32_t w = 0;
-      for (int b = 0; b < 4; ++b) w |= uint32_t(mem.data()[a + b]) << (8 * b);
+      for (int b = 0; b < 4; ++b) w |= uint32_t(mem.byte(a + b)) << (8 * b);
       char buf[16];
       std::snprintf(buf, sizeof buf, "%08x\n", w);
       m << buf;
     }
   };
-  words(lay.out, lay.out_stride * uint32_t(lay.height));
-  if (lay.lr) words(lay.mask, lay.stride * uint32_t(lay.height));  // and the mask plane
+  words(lay.out, uint64_t(lay.out_stride) * uint32_t(lay.height));
+  if (lay.lr) words(lay.mask, uint64_t(lay.stride) * uint32_t(lay.height));  // and the mask plane
   std::ofstream c(dir + "/verilator_counters.txt");
   c << "cycles " << r.cycles << " words_read " << r.words_read << " words_written "
     << r.words_written << "\n";
@@ -589,11 +615,16 @@ void dump_after(const std::string& dir, MemoryModel& mem, const Layout& lay, con
 
 }  // namespace
 
+uint64_t frame_bytes(int w, int h, const EngineOptions& opt) {
+  const Layout lay(w, h, opt.origin, opt);
+  return lay.total - lay.origin;
+}
+
 EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Config& cfg,
                         const EngineOptions& opt) {
   const int W = left.width(), H = left.height();
-  const Layout lay(W, H, 0, opt);
-  MemoryModel mem(lay.total, opt.latency);
+  const Layout lay(W, H, opt.origin, opt);
+  MemoryModel mem(lay.origin, lay.total, opt.latency);
   load_frame(mem, lay, left, right);
   mem.set_regions(lay.regions());
 
@@ -616,12 +647,12 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
 std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const EngineOptions& opt,
                                      FaultSpec fault) {
   std::vector<Layout> lays;
-  uint32_t origin = 0;
+  uint64_t at = opt.origin;
   for (const Frame& f : frames) {
-    lays.emplace_back(f.left.width(), f.left.height(), origin, opt);
-    origin = lays.back().total;
+    lays.emplace_back(f.left.width(), f.left.height(), at, opt);
+    at = lays.back().total;
   }
-  MemoryModel mem(origin, opt.latency);
+  MemoryModel mem(opt.origin, at, opt.latency);
   for (size_t k = 0; k < frames.size(); ++k) load_frame(mem, lays[k], frames[k].left, frames[k].right);
 
   std::vector<EngineResult> results(frames.size());
@@ -653,6 +684,29 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
     score(mem, lay, f.left, f.right, f.cfg, opt, r);
   }
   return results;
+}
+
+MemoryModel::Violations with_registers(const std::function<void(RegisterPort&)>& script,
+                                       const EngineOptions& opt) {
+#if MCADSW_DUT_AXIL
+  MemoryModel mem(1 << 20, opt.latency);
+  mem.set_regions({});
+  {
+    Engine e(mem, opt);
+    RegisterPort port;
+    port.write = [&e](uint32_t off, uint32_t v) { return e.axi().write(off, v); };
+    port.read = [&e](uint32_t off, int* resp) { return e.axi().read(off, resp); };
+    port.cycles = [&e](long n) {
+      for (long i = 0; i < n; ++i) e.cycle();
+    };
+    script(port);
+  }
+  return mem.violations();
+#else
+  (void)script;
+  (void)opt;
+  throw std::runtime_error("with_registers: the gate-level model has no register block");
+#endif
 }
 
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles) {

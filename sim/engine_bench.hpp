@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ struct EngineOptions {
   // The planes in memory in the reverse order: output (LR: and the scratch and
   // mask planes) below the input planes, right view's below the left view's.
   bool reversed_planes = false;
+  // Where the frame's memory starts (a multiple of 4 KiB): the planes follow a
+  // 4 KiB guard from here, so a frame can lie anywhere in the 32-bit space.
+  uint32_t origin = 0;
+  // The planes back to back, each at the first multiple of 4 after the previous
+  // one's stride x height bytes, instead of on 4 KiB boundaries.
+  bool packed = false;
   bool lr = false;               // mode bit 1: left-right check, fill, median (docs/algorithm.md 12.2-12.5)
   int lr_tolerance = kLrToleranceDefault;  // T
   long max_cycles = 0;           // 0: derived from the frame size
@@ -63,6 +70,11 @@ struct EngineResult {
   // memory model passed.
   bool clean() const { return !timed_out && !error && mismatches == 0 && bus.total() == 0; }
 };
+
+// Bytes of memory a frame of w x h pixels takes with these options (its planes,
+// padding and guards, from EngineOptions::origin); throws std::invalid_argument
+// for an illegal stride or a layout that does not fit in the 32-bit space.
+uint64_t frame_bytes(int w, int h, const EngineOptions& opt);
 
 // Runs one frame. Throws std::runtime_error for harness failures (memory
 // access out of range, model errors).
@@ -108,5 +120,19 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 // without comparing (fault tests: rejected configurations); any write is
 // counted in bus.bad_writes.
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
+
+// The SoC's AXI4-Lite register port (mcadsw_axi_top, engine idle after reset),
+// for register-level tests: write and read return or report the response (0
+// OKAY, 2 SLVERR), cycles runs the clock.
+struct RegisterPort {
+  std::function<int(uint32_t offset, uint32_t data)> write;
+  std::function<uint32_t(uint32_t offset, int* resp)> read;
+  std::function<void(long n)> cycles;
+};
+// Runs `script` on a fresh SoC whose AXI4 port faces 1 MiB of memory that
+// nothing may touch: the result counts any access (bad_reads, bad_writes).
+// Not available in the gate-level model (no register block): throws.
+MemoryModel::Violations with_registers(const std::function<void(RegisterPort&)>& script,
+                                       const EngineOptions& opt = {});
 
 }  // namespace mcadsw::sim

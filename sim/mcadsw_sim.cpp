@@ -4,6 +4,7 @@
 //              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
 //              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]
 //              [--subpixel] [--right] [--out-stride N] [--tiled] [--tile-stride N]
+//              [--origin ADDR] [--packed]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -25,13 +26,16 @@ const char* kUsage =
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
     "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N] [--ar-interval N]\n"
-    "                  [--tiled] [--tile-stride N]\n"
+    "                  [--tiled] [--tile-stride N] [--origin ADDR] [--packed]\n"
     "  --latency N     AXI4 memory: N wait states before each burst's first R beat and each B\n"
     "  --random-latency SEED  AXI4 memory: 0..8 more wait states a burst, READY 70 % of the time\n"
     "  --ar-interval N AXI4 memory: an AR accepted at most once in N clocks (default 1)\n"
     "  --crop X,Y,W,H  run on that region of both images (and of the ground truth)\n"
     "  --stride N      bytes per row of the input planes in memory: a multiple of 4, at least\n"
-    "                  the width (default: the width rounded up to 4)\n"
+    "                  the width (default: the width rounded up to 4); N, ADDR: decimal or 0x hex\n"
+    "  --origin ADDR   the frame's memory from ADDR (a multiple of 4096; default 0): the planes\n"
+    "                  after a 4 KiB guard, anywhere in the 32-bit space\n"
+    "  --packed        the planes back to back at 4-byte alignment (default: 4 KiB boundaries)\n"
     "  --tiled         input planes column-tiled (docs/memory_map.md): a column of 4 pixels,\n"
     "                  all rows, is consecutive words, so strip words are read in bursts\n"
     "  --tile-stride N tiled: bytes from one 4-pixel column to the next, a multiple of 4, at\n"
@@ -72,13 +76,13 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
         return argv[++i];
       };
-      // A row stride in bytes: a multiple of 4 in 4..1 MiB.
+      // A row stride in bytes: a multiple of 4, not 0 (the planes must still fit
+      // in the 32-bit space: the harness's layout checks that).
       auto stride = [](const std::string& text, const std::string& what) {
-        const long v = mcadsw::parse_long(text, what);
-        if (v < 4 || v % 4 != 0 || v > (1L << 20))
-          throw std::invalid_argument(what + " " + std::to_string(v) +
-                                      " must be a multiple of 4 in 4..1048576");
-        return uint32_t(v);
+        const uint32_t v = mcadsw::parse_u32(text, what);
+        if (v < 4 || v % 4 != 0)
+          throw std::invalid_argument(what + " " + std::to_string(v) + " must be a multiple of 4, at least 4");
+        return v;
       };
       if (a == "-d") d = int(mcadsw::parse_long(val(), "D"));
       else if (a == "--gamma") gamma = mcadsw::parse_double(val(), "gamma");
@@ -97,6 +101,8 @@ int main(int argc, char** argv) {
       else if (a == "--dump") opt.dump_dir = val();
       else if (a == "--stride") opt.stride = stride(val(), "stride");
       else if (a == "--tiled") opt.tiled = true;
+      else if (a == "--origin") opt.origin = mcadsw::parse_u32(val(), "origin");
+      else if (a == "--packed") opt.packed = true;
       else if (a == "--tile-stride") {
         opt.tile_stride = stride(val(), "tile stride");
         opt.tiled = true;

@@ -11,6 +11,8 @@
 // SLVERR or DECERR, or CTRL.ABORT at a random cycle; that frame must end with
 // code 13, 14 or 15 (an abort due after the frame's end changes nothing), and the
 // same case run again on the same engine, without a reset, must be exact.
+// Each case lies somewhere in the 32-bit address space (place(): origin, packed
+// planes, strides padded by up to 2^30 bytes).
 // Every pixel is compared; a failing case prints the one command that reruns it
 // alone.
 // Exit status: 0 all cases bit-exact, 1 a mismatch or harness error, 2 usage.
@@ -77,6 +79,51 @@ YuvImage right_view(const YuvImage& l, std::mt19937& rng) {
       }
   }
   return r;
+}
+
+// Where the frame lies in the 32-bit space (issue 20: every address bit),
+// drawn from a generator of its own so the draws of make_case stay those of
+// earlier versions: in one case out of three the strides (input, output, tile)
+// get padding of up to 2^30 bytes, halved until the frame fits; the planes
+// are packed at 4-byte alignment in every other case; the origin is 0 in a
+// third of the cases, the highest that fits in a third, anywhere in the rest.
+// An interrupted case runs two frames, one after the other in memory.
+void place(Case& c, uint32_t seed, int k) {
+  std::seed_seq seq{seed, uint32_t(k), 0x706c6163u};
+  std::mt19937 rng(seq);
+  const int w = c.left.width(), h = c.left.height();
+  const uint64_t frames = c.interrupt == Interrupt::kNone ? 1 : 2;
+  if (rng() % 3 == 0) {
+    const auto pad = [&rng](uint32_t& stride, uint32_t row) {
+      const int bits = std::uniform_int_distribution<int>(8, 30)(rng);
+      stride = (row + 3) / 4 * 4 + 4 * uint32_t(std::uniform_int_distribution<uint64_t>(0, (1ull << (bits - 2)) - 1)(rng));
+    };
+    const uint32_t row = uint32_t(w * (c.opt.subpixel ? 2 : 1));
+    pad(c.opt.stride, uint32_t(w));
+    pad(c.opt.out_stride, row);
+    if (c.opt.tiled) pad(c.opt.tile_stride, 4 * uint32_t(h));
+    const auto fits = [&] {
+      try {
+        return frames * sim::frame_bytes(w, h, c.opt) <= (uint64_t(1) << 32);
+      } catch (const std::invalid_argument&) {
+        return false;
+      }
+    };
+    // Halve the padding of the largest stride until the frame fits.
+    while (!fits()) {
+      uint32_t* s = &c.opt.stride;
+      uint32_t min = (uint32_t(w) + 3) / 4 * 4;
+      if (c.opt.out_stride > *s) s = &c.opt.out_stride, min = (row + 3) / 4 * 4;
+      if (c.opt.tiled && c.opt.tile_stride > *s) s = &c.opt.tile_stride, min = 4 * uint32_t(h);
+      *s = min + (*s - min) / 8 * 4;
+    }
+  }
+  c.opt.packed = rng() % 2;
+  const uint64_t room = (uint64_t(1) << 32) - frames * sim::frame_bytes(w, h, c.opt);
+  const int where = int(rng() % 3);
+  c.opt.origin = where == 0 ? 0u
+                 : where == 1 ? uint32_t(room / 4096 * 4096)
+                              : uint32_t(std::uniform_int_distribution<uint64_t>(0, room / 4096)(rng) * 4096);
 }
 
 Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvImage>>& real) {
@@ -177,6 +224,7 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
       c.abort_at = std::uniform_int_distribution<long>(1, 20000)(rng);
     }
   }
+  place(c, seed, k);
   return c;
 }
 
@@ -261,7 +309,7 @@ int main(int argc, char** argv) {
     const bool ok = err.empty() && ended.empty() && r.clean();
     static const char* kInterrupt[] = {"", "  after a read error", "  after a write error",
                                        "  after an abort"};
-    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s  %s latency  %8ld cycles  %s%s\n", k,
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s at 0x%08x%s  %s latency  %8ld cycles  %s%s\n", k,
                 c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
                 c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
                 c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
@@ -269,6 +317,7 @@ int main(int argc, char** argv) {
                                                                          : 4u * unsigned(c.left.height())))
                                   .c_str()
                             : "",
+                unsigned(c.opt.origin), c.opt.packed ? " packed" : "",
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED", kInterrupt[int(c.interrupt)]);
     if (!ok) {

@@ -16,16 +16,23 @@
 //     back the two scratch planes: `more_outs`, each written at most once a
 //     byte, read only where marked readable.
 // Violations are counted, the first of each kind described; a word address
-// outside the modelled memory or misaligned is a harness error (exception).
+// outside the modelled range or misaligned is a harness error (exception).
+//
+// The modelled range [lo, hi) may be anywhere in the 32-bit address space and
+// up to 4 GiB long: it is stored sparsely, in 4 KiB pages allocated (zeroed) on
+// first touch, so a frame may sit at the top of the space or have strides of
+// hundreds of MiB (issue 20: the address bits above the first MiB).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace mcadsw::sim {
@@ -75,10 +82,31 @@ class MemoryModel {
     std::string describe() const;
   };
 
-  MemoryModel(size_t bytes, Latency lat) : mem_(bytes, 0), lat_(lat), rng_(lat.seed) {}
+  // The addresses [lo, hi); hi at most 2^32.
+  MemoryModel(uint64_t lo, uint64_t hi, Latency lat) : lo_(lo), hi_(hi), lat_(lat), rng_(lat.seed) {
+    if (lo > hi || hi > (uint64_t(1) << 32))
+      throw std::invalid_argument("memory range 0x" + hex64(lo) + "..0x" + hex64(hi) +
+                                  " is not inside the 32-bit address space");
+  }
+  // The addresses [0, bytes).
+  MemoryModel(uint64_t bytes, Latency lat) : MemoryModel(0, bytes, lat) {}
 
-  uint8_t* data() { return mem_.data(); }
-  size_t size() const { return mem_.size(); }
+  // The byte at address a (inside the range, else an exception).
+  uint8_t& byte(uint64_t a) {
+    if (a < lo_ || a >= hi_)
+      throw std::runtime_error("memory byte 0x" + hex64(a) + " outside the modelled range 0x" +
+                               hex64(lo_) + "..0x" + hex64(hi_));
+    const uint32_t page = uint32_t(a >> kPageBits);
+    if (page != last_page_ || !last_) {
+      auto& p = pages_[page];
+      if (!p) p = std::make_unique<uint8_t[]>(size_t(1) << kPageBits);  // zeroed
+      last_page_ = page;
+      last_ = p.get();
+    }
+    return last_[a & ((uint64_t(1) << kPageBits) - 1)];
+  }
+  uint64_t lo() const { return lo_; }
+  uint64_t hi() const { return hi_; }
   // Starts a frame's checks: new regions, no byte written yet, counts cleared.
   void set_regions(const Regions& r) {
     regions_ = r;
@@ -144,7 +172,7 @@ class MemoryModel {
     check_range(addr);
     note_read(addr);
     uint32_t v = 0;
-    for (int b = 0; b < 4; ++b) v |= uint32_t(mem_[addr + b]) << (8 * b);
+    for (int b = 0; b < 4; ++b) v |= uint32_t(byte(uint64_t(addr) + b)) << (8 * b);
     return v;
   }
   void write_word(uint32_t addr, unsigned be, uint32_t wdata);
@@ -163,6 +191,11 @@ class MemoryModel {
   static std::string hex(uint32_t v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%08x", v);
+    return buf;
+  }
+  static std::string hex64(uint64_t v) {
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%09llx", static_cast<unsigned long long>(v));
     return buf;
   }
 
@@ -233,7 +266,7 @@ class MemoryModel {
   }
 
   void check_range(uint32_t addr) const {
-    if (addr % 4 != 0 || size_t(addr) + 4 > mem_.size())
+    if (addr % 4 != 0 || addr < lo_ || uint64_t(addr) + 4 > hi_)
       throw std::runtime_error("memory access out of range or misaligned: 0x" + hex(addr));
   }
 
@@ -254,7 +287,11 @@ class MemoryModel {
       v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
   }
 
-  std::vector<uint8_t> mem_;
+  static constexpr int kPageBits = 12;
+  uint64_t lo_, hi_;
+  std::unordered_map<uint32_t, std::unique_ptr<uint8_t[]>> pages_;
+  uint32_t last_page_ = 0;      // the page last touched, a shortcut for byte()
+  uint8_t* last_ = nullptr;
   Latency lat_;
   std::mt19937 rng_;
   std::deque<Pending> pending_;
@@ -288,7 +325,7 @@ inline void MemoryModel::write_word(uint32_t addr, unsigned be, uint32_t wdata) 
                               " written again (word 0x" + hex(addr) + ", be " + std::to_string(be) +
                               ")";
     }
-    mem_[addr + b] = uint8_t(wdata >> (8 * b));
+    byte(uint64_t(addr) + b) = uint8_t(wdata >> (8 * b));
   }
 }
 

@@ -71,6 +71,27 @@ TEST(MemoryModel, FlagsReadsOutsideTheInputPixels) {
   EXPECT_NE(v.first_bad_read.find("0x0000010c"), std::string::npos) << v.first_bad_read;
 }
 
+// The modelled range may lie anywhere in the 32-bit space, up to its top, and
+// span gigabytes (stored sparsely): bytes at both ends are kept, words just
+// outside the range (or misaligned) are harness errors, and a range beyond
+// 2^32 is refused.
+TEST(MemoryModel, RangeAnywhereInTheAddressSpace) {
+  MemoryModel mem(0x40000000u, uint64_t(1) << 32, {});
+  mem.set_regions({});
+  mem.byte(0xffffffffu) = 0xab;
+  mem.byte(0x40000000u) = 0xcd;
+  mem.byte(0x9abcdef0u) = 0x12;
+  EXPECT_EQ(mem.byte(0xffffffffu), 0xab);
+  EXPECT_EQ(mem.byte(0x40000000u), 0xcd);
+  EXPECT_EQ(mem.byte(0x9abcdef0u), 0x12);
+  EXPECT_EQ(mem.byte(0x9abcdef1u), 0) << "untouched bytes read 0";
+  EXPECT_EQ(mem.read_word(0xfffffffcu), 0xab000000u);
+  EXPECT_THROW(mem.byte(0x3fffffffu), std::runtime_error);
+  EXPECT_THROW(mem.read_word(0x3ffffffcu), std::runtime_error);
+  EXPECT_THROW(mem.read_word(0x40000002u), std::runtime_error);
+  EXPECT_THROW(MemoryModel(0x1000, (uint64_t(1) << 32) + 4, {}), std::invalid_argument);
+}
+
 // A read burst (mem_len_o + 1 words) on the request/grant port: its words at
 // consecutive addresses, one a cycle from the cycle after the grant; a burst
 // across a 4 KiB boundary is a protocol violation. Column-tiled input planes
@@ -81,7 +102,7 @@ TEST(MemoryModel, ReadBurstsAndTiledPlanes) {
   r.inputs = {0x100};
   r.tile = 12;  // 3 rows x 4 bytes; 10 pixels: columns 0..2 (the last holds x 8, 9)
   mem.set_regions(r);
-  for (uint32_t a = 0; a < 0x2000; ++a) mem.data()[a] = uint8_t(a / 4);
+  for (uint32_t a = 0; a < 0x2000; ++a) mem.byte(a) = uint8_t(a / 4);
   Port p;
   std::vector<uint32_t> got;
   const auto cycle = [&](bool req, uint32_t addr, unsigned len) {
@@ -194,7 +215,7 @@ struct AxiBench {
   explicit AxiBench(MemoryModel::Latency lat = {}, AxiMemory::Fault f = {})
       : mem(0x400, lat), axi(mem, lat, f) {
     mem.set_regions(regions());
-    for (uint32_t a = 0x100; a < 0x400; ++a) mem.data()[a] = uint8_t(a);
+    for (uint32_t a = 0x100; a < 0x400; ++a) mem.byte(a) = uint8_t(a);
   }
   template <typename F>
   void cycle(F set) {
@@ -263,7 +284,7 @@ TEST(AxiMemory, ServesReadAndWriteBurstsInOrderUnderBackPressure) {
   EXPECT_EQ(b.rdata[0], 0x03020100u);
   EXPECT_EQ(b.rdata[4], 0x07060504u);
   EXPECT_EQ(b.bresp, std::vector<unsigned>{0});
-  EXPECT_EQ(b.mem.data()[0x307], 8);
+  EXPECT_EQ(b.mem.byte(0x307), 8);
 }
 
 TEST(AxiMemory, AWriteLandsAtItsResponse) {
@@ -284,9 +305,9 @@ TEST(AxiMemory, AWriteLandsAtItsResponse) {
                           q.m_wvalid_o = true; q.m_wdata_o = 0xaabbccdd; q.m_wlast_o = true;
                           done = q.m_awready_i && q.m_wready_i; });
   cyc([](AxiPort& q) { q.m_awvalid_o = q.m_wvalid_o = false; });
-  EXPECT_EQ(b.mem.data()[0x300], 0x00) << "landed before its B";
+  EXPECT_EQ(b.mem.byte(0x300), 0x00) << "landed before its B";
   for (int i = 0; i < 60; ++i) cyc([](AxiPort&) {});
-  EXPECT_EQ(b.mem.data()[0x300], 0xdd);
+  EXPECT_EQ(b.mem.byte(0x300), 0xdd);
   EXPECT_EQ(b.mem.violations().total(), 0) << b.mem.violations().describe();
 }
 
@@ -352,7 +373,7 @@ TEST(AxiMemory, InjectsResponseErrors) {
   b.idle(10);
   EXPECT_EQ(b.rresp, (std::vector<unsigned>{0, 0, 3, 3}));
   EXPECT_EQ(b.bresp, std::vector<unsigned>{3});
-  EXPECT_EQ(b.mem.data()[0x300], 0x00) << "a failed write burst landed";
+  EXPECT_EQ(b.mem.byte(0x300), 0x00) << "a failed write burst landed";
 }
 
 }  // namespace mcadsw::sim

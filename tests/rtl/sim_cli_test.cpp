@@ -66,9 +66,23 @@ TEST_F(SimCli, LargeStrideRunsBitExact) {
 TEST_F(SimCli, BadStride) {
   expect_failure(run(pair() + " -d 8 --stride 1002" + outputs()), "must be a multiple of 4");
   expect_failure(run(pair() + " -d 8 --stride 0" + outputs()), "must be a multiple of 4");
-  expect_failure(run(pair() + " -d 8 --stride x" + outputs()), "must be an integer");
+  expect_failure(run(pair() + " -d 8 --stride x" + outputs()), "must be a 32-bit unsigned integer");
+  expect_failure(run(pair() + " -d 8 --stride 0x100000000" + outputs()), "must be a 32-bit unsigned integer");
   expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --stride 28" + outputs()),
                  "stride 28 is below the width 30");
+}
+
+// The frame's placement (--origin, --stride): an origin off a 4 KiB boundary, or
+// planes that do not fit below 2^32, are refused with a message, nothing run.
+TEST_F(SimCli, BadPlacement) {
+  expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --origin 0x1004" + outputs()),
+                 "origin 4100 must be a multiple of 4096");
+  expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --origin -4096" + outputs()),
+                 "must be a 32-bit unsigned integer");
+  expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --origin 0xfffff000" + outputs()),
+                 "do not fit in the 32-bit address space");
+  expect_failure(run(pair() + " -d 8 --crop 100,100,30,20 --stride 0x10000000" + outputs()),
+                 "do not fit in the 32-bit address space");
 }
 
 // The clock period of constraints/mcadsw.sdc, in ps.
