@@ -181,7 +181,8 @@ TEST(Engine, CostsNearTheAccumulatorsTopBits) {
 // The widest frame (kMaxWidth columns): column and address bits above 1023 (found by
 // `make mutate`: the random cases this wide were flat, striped or a real crop
 // replicated beyond its border, so a column read 1024 too far left gave the same
-// pixels). Noise in both views; left and right view as base, raster and tiled.
+// pixels). Noise in both views; left and right view as base, raster and tiled;
+// the LR mode at its widest.
 TEST(Engine, WidestFrameOfNoise) {
   std::mt19937 rng(13);
   const YuvImage l = test::random_yuv(kMaxWidth, 3, rng), r = test::random_yuv(kMaxWidth, 3, rng);
@@ -195,19 +196,32 @@ TEST(Engine, WidestFrameOfNoise) {
       opt.tiled = tiled;
       expect_exact(sim::run_engine(l, r, cfg, opt));
     }
+  // The LR mode at the post stage's widest (kPostMaxWidth): its column bits,
+  // raw and sub-pixel (twice the dL words a row).
+  for (const bool sub : {false, true}) {
+    SCOPED_TRACE(std::string("LR mode") + (sub ? ", sub-pixel" : ""));
+    EngineOptions lr;
+    lr.lr = true;
+    lr.subpixel = sub;
+    expect_exact(sim::run_engine(crop(l, 0, 0, kPostMaxWidth, 3), crop(r, 0, 0, kPostMaxWidth, 3), cfg, lr));
+  }
 }
 
 // The tallest frames, kMaxHeight - 1 and kMaxHeight rows: row bits above 1023
 // (found by `make mutate`: no other test has a frame that tall, so the
-// scheduler's last-block-row compare could ignore the height's bit 10).
+// scheduler's last-block-row compare could ignore the height's bit 10), and
+// in the LR mode.
 TEST(Engine, TallestFrames) {
   std::mt19937 rng(15);
   Config cfg;
   cfg.disparities = 2;
-  for (const int h : {kMaxHeight - 1, kMaxHeight}) {
-    SCOPED_TRACE("H = " + std::to_string(h));
-    expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, {}));
-  }
+  for (const int h : {kMaxHeight - 1, kMaxHeight})
+    for (const bool lr : {false, true}) {  // the LR mode: its post stage's row bits
+      SCOPED_TRACE("H = " + std::to_string(h) + (lr ? ", LR mode" : ""));
+      EngineOptions opt;
+      opt.lr = lr;
+      expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, opt));
+    }
 }
 
 // The planes in the reverse order in memory (written planes below the ones
@@ -227,6 +241,75 @@ TEST(Engine, PlanesInReverseOrder) {
     opt.lr = mode == 2;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
+}
+
+// Frames anywhere in the 32-bit address space (issue 20: the address, base
+// and stride bits above the first MiB, which no frame laid out from address 0
+// reaches): at the top of the space (the planes end less than 8 KiB below
+// 2^32), planes packed at 4-byte alignment (base bits 2..11), and strides of up
+// to 3 GiB a row (sim::MemoryModel stores the space sparsely). Each placement
+// in every mode whose planes fit (the LR mode has two more planes of the input
+// stride and one more of the output stride): exact, no access outside the
+// planes' pixels.
+TEST(Engine, FramesAnywhereInTheAddressSpace) {
+  std::mt19937 rng(16);
+  struct Placement {
+    const char* what;
+    int w, h;
+    uint32_t stride, out_stride, tile_stride;  // 0: the harness's default
+    bool tiled, packed, top;
+  };
+  const Placement placements[] = {
+      {"at the top, packed", 37, 21, 0, 0, 0, false, true, true},
+      {"at the top, 4 KiB aligned, tiled", 37, 21, 0, 0, 0, true, false, true},
+      {"input stride 2^29 + 4, one row", 23, 1, 0x20000004u, 0, 0, false, true, false},
+      {"input stride 2^27 + 2^26 + 36, two rows, at the top", 23, 2, 0x0c000024u, 0, 0, false, true, true},
+      {"output stride 3 GiB, one row", 23, 1, 0, 0xc0000000u, 0, false, false, false},
+      {"output stride 2^27 - 4, 3 rows, at the top", 23, 3, 0, 0x07fffffcu, 0, false, true, true},
+      {"tile stride 2^29 - 4, one column of tiles", 4, 5, 0, 0, 0x1ffffffcu, true, true, false},
+      {"tile stride 2^26 + 2^25 + 4, two columns, at the top", 7, 4, 0, 0, 0x06000004u, true, true, true},
+      // Alternating bit patterns: the row and column offsets (stride x row, tile
+      // stride x column) set every other bit up to bit 28.
+      {"input stride 0x15545554, two rows", 23, 2, 0x15545554u, 0, 0, false, true, false},
+      {"input stride 0x0aaaaaa8, two rows", 23, 2, 0x0aaaaaa8u, 0, 0, false, true, false},
+      {"tile stride 0x15545554, two columns", 5, 3, 0, 0, 0x15545554u, true, true, false},
+      {"tile stride 0x0aaaaaa8, two columns", 5, 3, 0, 0, 0x0aaaaaa8u, true, true, false},
+      {"input stride 0x05555554, two rows", 23, 2, 0x05555554u, 0, 0, false, true, false},
+      // A window's first row far down a tall frame: its row offset (row x stride).
+      {"input stride 0x000aaaa8, 600 rows", 4, 600, 0x000aaaa8u, 0, 0, false, true, false},
+      // The LR mode's widest strides (its dL, dR, output and mask planes must fit too).
+      {"input stride 0x1ffff000, one row", 23, 1, 0x1ffff000u, 0, 0, false, true, false},
+      {"output stride 0x7fff0000, one row", 23, 1, 0, 0x7fff0000u, 0, false, true, false},
+  };
+  Config cfg;
+  cfg.disparities = 5;
+  int runs = 0;
+  for (const Placement& pl : placements) {
+    const YuvImage l = test::random_yuv(pl.w, pl.h, rng), r = test::random_yuv(pl.w, pl.h, rng);
+    for (const int mode : {0, 1, 2}) {
+      EngineOptions opt;
+      opt.stride = pl.stride;
+      opt.out_stride = pl.out_stride;
+      opt.tiled = pl.tiled;
+      opt.tile_stride = pl.tile_stride;
+      opt.packed = pl.packed;
+      opt.right = mode == 1;
+      opt.lr = mode == 2;
+      opt.subpixel = mode == 2;
+      uint64_t bytes = 0;
+      try {
+        bytes = sim::frame_bytes(pl.w, pl.h, opt);
+      } catch (const std::invalid_argument&) {
+        continue;  // the LR mode's two more planes of this stride do not fit
+      }
+      if (pl.top) opt.origin = uint32_t(((uint64_t(1) << 32) - bytes) / 4096 * 4096);
+      SCOPED_TRACE(std::string(pl.what) + (mode == 0 ? ", left view as base" : mode == 1 ? ", right view as base" : ", LR sub-pixel") +
+                   ", origin " + std::to_string(opt.origin));
+      expect_exact(sim::run_engine(l, r, cfg, opt));
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 45) << "placements that no longer fit";
 }
 
 // Sub-pixel mode (docs/algorithm.md 12.6): every 16-bit value equal to the

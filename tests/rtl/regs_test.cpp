@@ -16,6 +16,7 @@
 #include "Vmcadsw_regs.h"
 #include "axil_driver.hpp"
 #include "mcadsw/regs.hpp"
+#include "regs_expect.hpp"
 #include "vbits.hpp"
 
 namespace mcadsw {
@@ -24,21 +25,7 @@ namespace {
 using namespace regs;
 constexpr int kOkay = 0, kSlverr = 2;
 
-uint32_t mask(int width) { return width >= 32 ? ~0u : (1u << width) - 1; }
-
-// The bits each read-write register keeps (the rest read 0).
-std::map<uint32_t, uint32_t> writable_bits() {
-  std::map<uint32_t, uint32_t> m;
-  for (uint32_t o = kBaseLy; o <= kBaseMask; o += 4) m[o] = ~0u;
-  m[kStride] = m[kOutStride] = m[kTileStride] = ~0u;
-  m[kSize] = (mask(kSizeBits) << kSizeWidthLsb) | (mask(kSizeBits) << kSizeHeightLsb);
-  m[kDisp] = mask(kDispBitsReg);
-  m[kLrT] = mask(kLrTBits);
-  for (int i = 0; i < kWeightThresholds; ++i) m[kThr0 + 4 * i] = mask(kThrBits);
-  m[kIrqEnable] = (1u << kIrqDoneLsb) | (1u << kIrqErrorLsb);
-  m[kCtrl] = mask(kCtrlModeWidth) << kCtrlModeLsb;
-  return m;
-}
+using test::writable_bits;
 
 class Bench {
  public:
@@ -176,12 +163,8 @@ TEST_P(Regs, ReadOnlyWritesAreDroppedUnmappedOffsetsAnswerSlverr) {
   EXPECT_EQ(b.axi.read(kStalls), 333u);
   EXPECT_EQ(b.axi.read(kIrqStatus), 0u);
   // Every word slot not in the map, and misaligned offsets of mapped ones.
-  std::vector<bool> mapped(kSpan / 4, false);
-  for (const Reg& r : kRegs) mapped[r.offset / 4] = true;
   int unmapped = 0;
-  for (uint32_t off = 0; off < kSpan; ++off) {
-    if (off % 4 == 0 && mapped[off / 4]) continue;
-    if (off % 4 != 0 && off % 7 != 1) continue;  // a sample of the misaligned ones
+  for (const uint32_t off : test::unmapped_offsets()) {
     int resp = -1;
     EXPECT_EQ(b.axi.read(off, &resp), 0u) << "offset " << off;
     EXPECT_EQ(resp, kSlverr) << "read of offset " << off;
