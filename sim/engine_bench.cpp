@@ -461,6 +461,14 @@ uint8_t& at(MemoryModel& mem, uint32_t base, uint32_t stride, int x, int y) {
   return mem.byte(uint64_t(base) + uint64_t(y) * stride + uint64_t(x));
 }
 
+// Pixel (x, y) of the output plane: a byte, or in sub-pixel mode a
+// little-endian halfword.
+int out_pixel(MemoryModel& mem, const Layout& lay, int x, int y) {
+  const int ox = x * lay.out_bpp;
+  return at(mem, lay.out, lay.out_stride, ox, y) |
+         (lay.out_bpp == 2 ? at(mem, lay.out, lay.out_stride, ox + 1, y) << 8 : 0);
+}
+
 // LR mode: the output plane and the mask against depth_map() (docs/algorithm.md
 // 12.2-12.5), and the two scratch planes against the left and right maps
 // (dL's integer d in sub-pixel mode), every pixel.
@@ -485,9 +493,7 @@ void score_lr(MemoryModel& mem, const Layout& lay, const YuvImage& left, const Y
   };
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const int ox = x * lay.out_bpp;
-      const int got = at(mem, lay.out, lay.out_stride, ox, y) |
-                      (opt.subpixel ? at(mem, lay.out, lay.out_stride, ox + 1, y) << 8 : 0);
+      const int got = out_pixel(mem, lay, x, y);
       const int want = opt.subpixel ? ref.disp16.at(x, y) : ref.disp16.at(x, y) / kSubpixelScale;
       if (opt.subpixel) {
         r.disparity16.at(x, y) = uint16_t(got);
@@ -536,9 +542,7 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const int xp = opt.right ? W - 1 - x : x;  // the pass's column
-      const int ox = x * lay.out_bpp;
-      const int got = at(mem, lay.out, lay.out_stride, ox, y) |
-                      (opt.subpixel ? at(mem, lay.out, lay.out_stride, ox + 1, y) << 8 : 0);
+      const int got = out_pixel(mem, lay, x, y);
       const int want = opt.subpixel ? ref16.at(xp, y) : ref.at(xp, y);
       if (opt.subpixel) {
         r.disparity16.at(x, y) = uint16_t(got);
