@@ -371,6 +371,8 @@ module mcadsw_cost_agg #(
   assign mon_fc_o       = fc;
 
 `ifndef SYNTHESIS
+  // Simulation-only checks: not design, left out of `make coverage`.
+  // verilator coverage_off
   // Ping-pong ownership (docs/architecture.md section 9), checked in simulation:
   // the vertical side never writes a bank the horizontal side has still to read
   // (h0 issues the reads of the following cycles; the read in h1 in the same
@@ -384,6 +386,7 @@ module mcadsw_cost_agg #(
         else $error("cost_agg: ping-pong bank handed over before the previous one was read");
     end
   end
+  // verilator coverage_on
 `endif
 
 `ifdef FORMAL

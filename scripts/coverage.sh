@@ -5,6 +5,10 @@
 # configurations, small pairs), the random differential regression (N cases,
 # default 40, seed 2026) and two bundled pairs through the harness,
 # merges the per-run files and reports line and toggle coverage per module.
+# Then checks the toggle points left at 0 against tests/coverage/untoggled.txt
+# (each listed with its reason; scripts/untoggled_check.awk) and the total
+# toggle coverage against MIN_TOGGLE percent (default 90, issue 20): an unlisted
+# point, a stale line or less coverage fails (exit 1).
 #   scripts/coverage.sh [BUILD_DIR]     N=<cases> to change the random part
 # Outputs BUILD_DIR/coverage/: merged.dat, coverage.info (lcov), annotated/ (sources
 # with per-line counts), summary.txt.
@@ -16,13 +20,16 @@ out=$build/coverage
 command -v verilator_coverage >/dev/null || { echo "coverage: verilator_coverage not found" >&2; exit 2; }
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_COVERAGE=ON > /dev/null
 echo "coverage: building the instrumented model ($build)"
-cmake --build "$build" --target mcadsw_sim mcadsw_sim_random rtl_engine_test -j "$(nproc)" > "$build/coverage_build.log" 2>&1 || {
+cmake --build "$build" --target mcadsw_sim mcadsw_sim_random rtl_engine_test rtl_axi_test -j "$(nproc)" > "$build/coverage_build.log" 2>&1 || {
   tail -30 "$build/coverage_build.log"; echo "coverage: build failed" >&2; exit 1; }
 rm -rf "$out"; mkdir -p "$out/runs"
 export MCADSW_COVERAGE_DIR=$out/runs
 echo "coverage: engine tests (faults, invalid configurations)"
 "$build/bin/rtl_engine_test" > "$out/engine_test.log" 2>&1 || {
   tail -20 "$out/engine_test.log"; echo "coverage: the engine tests failed" >&2; exit 1; }
+echo "coverage: AXI tests (bursts, response errors, abort, the register window)"
+"$build/bin/rtl_axi_test" > "$out/axi_test.log" 2>&1 || {
+  tail -20 "$out/axi_test.log"; echo "coverage: the AXI tests failed" >&2; exit 1; }
 echo "coverage: $n random cases (seed 2026)"
 "$build/bin/mcadsw_sim_random" --cases "$n" --seed 2026 > "$out/random.log" || {
   tail -20 "$out/random.log"; echo "coverage: the random regression failed" >&2; exit 1; }
@@ -52,6 +59,24 @@ awk '
     for (m in mods) printf "%-24s %-24s %s\n", m, pct(hit[m, "v_line"], tot[m, "v_line"]), pct(hit[m, "v_toggle"], tot[m, "v_toggle"]) | "sort"
     close("sort")
     printf "%-24s %-24s %s\n", "TOTAL", pct(thit["v_line"], ttot["v_line"]), pct(thit["v_toggle"], ttot["v_toggle"])
+    printf "toggle_percent %.1f\n", ttot["v_toggle"] ? 100 * thit["v_toggle"] / ttot["v_toggle"] : 0
   }' "$out/merged.dat" > "$out/summary.txt"
-cat "$out/summary.txt"
+status=0
+if [ "$n" = 40 ]; then
+  awk -f "$root/scripts/untoggled_check.awk" "$root/tests/coverage/untoggled.txt" "$out/merged.dat" \
+    >> "$out/summary.txt" || status=1
+else
+  echo "untoggled points not checked: tests/coverage/untoggled.txt is for the default stimulus (N=40)" >> "$out/summary.txt"
+fi
+grep -v '^toggle_percent' "$out/summary.txt"
 echo "coverage: annotated sources in $out/annotated, lcov data $out/coverage.info"
+min=${MIN_TOGGLE:-90}
+toggle=$(awk '/^toggle_percent/ { print $2 }' "$out/summary.txt")
+if awk -v t="$toggle" -v m="$min" 'BEGIN { exit !(t + 0 < m + 0) }'; then
+  echo "coverage: toggle coverage $toggle % is below $min %" >&2
+  status=1
+fi
+if [ "$status" -ne 0 ]; then
+  echo "coverage: FAILED (tests/coverage/untoggled.txt: list each new untoggled point with its reason, delete stale lines)" >&2
+fi
+exit "$status"
