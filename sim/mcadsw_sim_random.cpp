@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,7 @@ void place(Case& c, uint32_t seed, int k) {
       uint32_t min = (uint32_t(w) + 3) / 4 * 4;
       if (c.opt.out_stride > *s) s = &c.opt.out_stride, min = (row + 3) / 4 * 4;
       if (c.opt.tiled && c.opt.tile_stride > *s) s = &c.opt.tile_stride, min = 4 * uint32_t(h);
+      if (*s - min < 8) throw std::logic_error("place: case " + std::to_string(k) + " does not fit below 2^32");
       *s = min + (*s - min) / 8 * 4;
     }
   }
