@@ -22,12 +22,12 @@
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
 #                (build-cov/coverage/summary.txt; N=<random cases>, default 40); fails below
 #                90 % toggle or on an untoggled point tests/coverage/untoggled.txt does not list
-#   make formal  bounded proofs (Yosys SAT) of the memory controller, AXI4 master and depth FIFO
-#                properties in formal/ (build/formal/summary.json); SELFTEST=1: each against a
+#   make formal  bounded proofs (Yosys SAT) of the memory controller, AXI4 master, depth FIFO
+#                and ping-pong ownership properties in formal/ (build/formal/summary.json); SELFTEST=1: each against a
 #                mutant that must fail (scripts/formal.sh)
 #   make mutate  mutation score: N=200 Yosys mutants (SEED=1) of the flattened design, each
 #                against the kill suite (engine and AXI tests, random frames); survivors must
-#                be listed in tests/mutate/equivalent.txt (build/mutate/summary.json;
+#                be listed in tests/mutate/survivors.txt (build/mutate/summary.json;
 #                SAMPLE=20 a seeded sample of them, as CI runs; scripts/mutate.sh)
 #   make lint    verilator --lint-only -Wall on every RTL module
 #   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp

@@ -8,14 +8,15 @@
 #   MUTANTS="3 17"                      only these mutants of the list, again (after a new
 #                                       test); the other results of the last run are kept
 #   REPORT_ONLY=1                       the summary of the last run again (after editing
-#                                       the list of equivalent mutants)
+#                                       tests/mutate/survivors.txt)
 #
 # Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS), elaborates mcadsw_axi_top
 # (the engine, its register block and AXI4 master: every RTL module), flattens it and
-# applies every mutant of the list behind a select input (`mutate -ctrl mutsel W k`:
-# mutant k is active when mutsel == k, 0 is the design as written). Verilator builds
-# that one model into the engine harness (sim/CMakeLists.txt, MCADSW_MUTANT_VERILOG),
-# and the harness sets mutsel from the environment variable MCADSW_MUTANT. So N mutants
+# applies every mutant of the list behind a select (`mutate -ctrl mutsel W k`: mutant
+# k is active when mutsel == k, 0 is the design as written; the port becomes a variable
+# set from the plusarg +mcadsw_mutant=K, below). Verilator builds that one model into
+# the engine harness (sim/CMakeLists.txt, MCADSW_MUTANT_VERILOG), and the harness passes
+# the environment variable MCADSW_MUTANT on as that plusarg. So N mutants
 # cost one model build; the design with mutsel = 0 must pass the whole kill suite first.
 #
 # Kill suite, in this order, stopping at the first failure (GoogleTest --gtest_fail_fast):
