@@ -12,10 +12,9 @@
 #   make ref-sim the reference model alone: Middlebury error table
 #   make synth   Yosys -> OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
 #                (build/synth/report.md; DMAX=16 for the reduced configuration; DMAX=128 PAR=4
-#                another configuration in build/synth_dmax<n>[_par<p>]; FLAT=1 the
-#                whole engine flattened in one Yosys run, 40 min and 13.5 GB)
+#                another configuration in build/synth_dmax<n>[_par<p>])
 #   make synth-check  make synth, then gates, slack and memory against constraints/budget.json (CI)
-#   make fpga    FPGA estimate: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_axi_top,
+#   make fpga    FPGA estimate: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_top,
 #                whether it fits an XC7Z020 and an XC7A100T (build/fpga/summary.json)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
 #                (FRAME=1 also a whole Tsukuba frame against the reference)
@@ -94,10 +93,10 @@ ref-sim: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
 
-# make synth [DMAX=<n>] [PAR=<p>] [FLAT=1]: gate count, memory inventory and timing (scripts/synth.sh;
-# block by block and incremental, FLAT=1 the flattened flow of scripts/synth_flat.sh)
+# make synth [DMAX=<n>] [PAR=<p>]: gate count, memory inventory and timing (scripts/synth.sh;
+# block by block and incremental)
 synth: bootstrap
-	@DMAX=$(DMAX) PAR=$(PAR) FLAT=$(FLAT) scripts/synth.sh
+	@DMAX=$(DMAX) PAR=$(PAR) scripts/synth.sh
 
 # make synth-check: make synth (DMAX=64), then constraints/budget.json (scripts/synth_check.sh)
 synth-check: bootstrap

@@ -1,4 +1,4 @@
-# Timing constraints of mcadsw_top (OpenSTA, units of the OSU 0.18 um liberty:
+# Timing constraints of mcadsw_engine (OpenSTA, units of the OSU 0.18 um liberty:
 # ns, pF). The clock is the paper's 95 MHz (Table III). The external memory
 # port and the configuration are synchronous to the same clock; a fifth of the
 # period is budgeted outside the engine on each side.

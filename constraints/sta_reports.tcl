@@ -4,8 +4,8 @@
 # liberty), out (the run's directory) and sdc before sourcing this file.
 read_liberty $lib
 read_liberty $out/mcadsw_ram.lib
-read_verilog $out/mcadsw_top_sta.v
-link_design mcadsw_top
+read_verilog $out/mcadsw_engine_sta.v
+link_design mcadsw_engine
 read_sdc $sdc
 report_checks -path_delay max -digits 3 -fields {fanout cap slew}
 report_wns -digits 3

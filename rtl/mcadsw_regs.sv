@@ -15,7 +15,7 @@
 // CTRL.START written 1 starts a frame in the next cycle, with the registers as
 // they are after the write (the engine samples its configuration at the start
 // and ignores a start while busy); CTRL.ABORT written 1 pulses abort_o
-// (mcadsw_axi_top ends a running frame with it). STATUS.DONE and STATUS.ERROR are set when
+// (mcadsw_top ends a running frame with it). STATUS.DONE and STATUS.ERROR are set when
 // the engine's done / error rise (a frame finished, a start was rejected) and
 // cleared by writing 1; an event in the cycle of the clear wins. irq_o is
 // STATUS.{DONE, ERROR} and IRQ_ENABLE, OR-ed: a level until cleared.
@@ -52,7 +52,7 @@ module mcadsw_regs #(
   output logic [31:0]         s_rdata_o,
   output logic [1:0]          s_rresp_o,
   output logic                irq_o,
-  // Engine configuration (mcadsw_top's cfg_* ports) and start
+  // Engine configuration (mcadsw_engine's cfg_* ports) and start
   output logic [AW-1:0]       cfg_base_ly_o,
   output logic [AW-1:0]       cfg_base_lu_o,
   output logic [AW-1:0]       cfg_base_lv_o,

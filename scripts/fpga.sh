@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # make fpga: an FPGA estimate of the engine (issue 19). Yosys synth_xilinx for a
-# 7-series part maps mcadsw_axi_top (the engine behind its AXI4-Lite registers; an
+# 7-series part maps mcadsw_top (the engine behind its AXI4-Lite registers; an
 # IP core, so no I/O buffers or clock buffer)
 # to LUTs, flip-flops, block RAMs (RAMB18E1 / RAMB36E1), LUT RAMs and DSP48E1s;
 # the counts go to build/fpga/summary.json and report.md with whether they fit an
@@ -16,7 +16,7 @@ die() { echo "fpga: $*" >&2; exit 2; }
 
 dmax=${DMAX:-64}
 par=${PAR:-1}
-top=${TOP:-mcadsw_axi_top}
+top=${TOP:-mcadsw_top}
 # No result of an earlier run may pass for this one's: with OUT given, its summary
 # goes before anything is checked.
 [ -z "${OUT:-}" ] || rm -f "$OUT/summary.json" "$OUT/report.md"
@@ -36,9 +36,9 @@ command -v yosys >/dev/null || die "yosys not found (run scripts/bootstrap.sh, o
 # The RTL with a package for this configuration (as the CMake build makes it).
 rtl=$out/rtl
 rm -rf "$rtl"; mkdir -p "$rtl"
-cp "$root"/rtl/mcadsw_*.sv "$rtl"/
+cp $("$root/scripts/rtl_files.sh") "$rtl"/
 "$root/scripts/rtl_pkg_dmax.sh" "$dmax" "$root/rtl/mcadsw_pkg.sv" "$rtl/mcadsw_pkg.sv" "$par"
-mods=$(cd "$rtl" && ls mcadsw_*.sv | grep -v '^mcadsw_pkg.sv$' | sort | tr '\n' ' ')
+mods=$("$root/scripts/rtl_files.sh" --no-pkg . | sed 's|^\./||' | tr '\n' ' ')
 
 cat > "$out/fpga.ys" <<YS
 read_verilog -sv -D SYNTHESIS $rtl/mcadsw_pkg.sv $(for m in $mods; do printf '%s ' "$rtl/$m"; done)

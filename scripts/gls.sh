@@ -16,7 +16,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 dmax=${DMAX:-64}
 build=${BUILD_DIR:-$root/build}
 if [ "$dmax" = 64 ]; then synth_dir=$build/synth; else synth_dir=$build/synth_dmax$dmax; fi
-netlist=$synth_dir/mcadsw_top_osu018.v
+netlist=$synth_dir/mcadsw_engine_osu018.v
 gls_build=$build/gls_dmax$dmax
 out=$build/gls
 d=$(( dmax < 16 ? dmax : 16 ))

@@ -10,7 +10,7 @@
 #   REPORT_ONLY=1                       the summary of the last run again (after editing
 #                                       tests/mutate/survivors.txt)
 #
-# Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS), elaborates mcadsw_axi_top
+# Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS), elaborates mcadsw_top
 # (the engine, its register block and AXI4 master: every RTL module), flattens it and
 # applies every mutant of the list behind a select (`mutate -ctrl mutsel W k`: mutant
 # k is active when mutsel == k, 0 is the design as written; the port becomes a variable
@@ -70,13 +70,13 @@ if [ "${REPORT_ONLY:-0}" = 1 ]; then
   elapsed=$(cat "$out/run_seconds" 2>/dev/null || echo 0)
 else
   # 1. The mutant design (regenerated when the RTL, N, SEED or Yosys change).
-  mods=$(ls rtl/mcadsw_*.sv | grep -v mcadsw_pkg.sv | tr '\n' ' ')
+  mods=$(scripts/rtl_files.sh --no-pkg rtl | tr '\n' ' ')
   width=1
   while [ $(( (1 << width) - 1 )) -lt "$n" ]; do width=$((width + 1)); done
   stamp=$( { cat rtl/mcadsw_pkg.sv $mods; echo "$n $seed $width"; yosys -V; } | sha1sum | cut -d' ' -f1)
   design=$out/mutants_n${n}_s${seed}.v
   if [ ! -f "$design" ] || [ "$(cat "$out/design.stamp" 2>/dev/null)" != "$stamp" ]; then
-    echo "mutate: Yosys: elaborating mcadsw_axi_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
+    echo "mutate: Yosys: elaborating mcadsw_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
     rm -f "$out/instances.txt" "$out/design.stamp"
     # Instance name -> module, for the per-module counts.
     inst_cmds=""
@@ -86,9 +86,9 @@ else
     done
     t0=$(date +%s)
     yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS rtl/mcadsw_pkg.sv $mods
-      hierarchy -check -top mcadsw_axi_top
+      hierarchy -check -top mcadsw_top
       $inst_cmds
-      prep -flatten -top mcadsw_axi_top
+      prep -flatten -top mcadsw_top
       mutate -list $n -seed $seed -ctrl mutsel $width 1 -o $out/list.ys
       script $out/list.ys
       opt_clean
@@ -180,7 +180,7 @@ else
                 next }
     /^mutate / { k++; cell = ""
       for (i = 1; i < NF; i++) if ($i == "-cell") cell = $(i + 1)
-      who = "mcadsw_axi_top"; np = split(cell, seg, ".")
+      who = "mcadsw_top"; np = split(cell, seg, ".")
       for (i = 1; i <= np; i++) { s = seg[i]; sub(/^\$flatten/, "", s); sub(/^\\/, "", s)
                                    if (s in mod) who = mod[s] }
       key = $0; sub(/ -ctrl [^ ]+ [0-9]+ [0-9]+/, "", key)

@@ -115,7 +115,7 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
   # first prep_done (times in ps, fstminer lists first occurrences), a tenth
   # more on each side, marker at prep_done. gtkwave shows 2^-zoom time units in
   # 200 pixels (calczoom()): zoom = -log2(span * 200 / 1000) for a 1000-pixel wave pane.
-  eng=mcadsw_axi_top.u_engine   # the engine inside the model's top (rtl/mcadsw_axi_top.sv)
+  eng=mcadsw_top.u_engine   # the engine inside the model's top (rtl/mcadsw_top.sv)
   first() { fstminer -d "$out/$only.fst" -m 1 2>/dev/null | awk -v s="TOP.$eng.$1" '!f && $2 == s {sub(/^#/, "", $1); print $1; f = 1}'; }
   t0=$(first prep_start); t1=$(first prep_done)
   window=""
@@ -132,8 +132,8 @@ if [ "$waves" = 1 ] && [ -n "$only" ]; then
     echo "[dumpfile] \"$out/$only.fst\""
     echo "[size] 1600 900"
     [ -n "$window" ] && echo "$window"
-    for grp in "Registers (AXI4-Lite):mcadsw_axi_top.u_regs:s_awvalid_i s_awready_o s_wvalid_i s_wready_o s_bvalid_o s_bready_i s_arvalid_i s_rvalid_o start_o irq_o" \
-               "AXI4 master:mcadsw_axi_top.u_axi_master:m_arvalid_o m_arready_i m_araddr_o m_arlen_o m_rvalid_i m_rlast_i m_awvalid_o m_awready_i m_awaddr_o m_awlen_o m_wvalid_o m_wready_i m_wlast_o m_bvalid_i wr_idle_o drain_i" \
+    for grp in "Registers (AXI4-Lite):mcadsw_top.u_regs:s_awvalid_i s_awready_o s_wvalid_i s_wready_o s_bvalid_o s_bready_i s_arvalid_i s_rvalid_o start_o irq_o" \
+               "AXI4 master:mcadsw_top.u_axi_master:m_arvalid_o m_arready_i m_araddr_o m_arlen_o m_rvalid_i m_rlast_i m_awvalid_o m_awready_i m_awaddr_o m_awlen_o m_wvalid_o m_wready_i m_wlast_o m_bvalid_i wr_idle_o drain_i" \
                "Top:$eng:start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i mem_wr_idle_i" \
                "Scheduler:$eng.u_scheduler:prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o" \
                "Memory controller:$eng.u_mem_ctrl:rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o" \

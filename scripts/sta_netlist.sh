@@ -2,13 +2,12 @@
 # The netlist and macro models OpenSTA reads (called by scripts/synth.sh).
 #   scripts/sta_netlist.sh NETLIST OUT_DIR LIBERTY
 # NETLIST is the gate-level netlist of `make synth` (also the one gate-level
-# simulation uses): the block netlists assembled by scripts/synth.sh (mcadsw_top
-# instantiating one module per block), or the FLAT=1 netlist (blocks kept as modules
-# too). Every instantiated module must be defined in it, a cell or a macro, with
+# simulation uses): the block netlists assembled by scripts/synth.sh (mcadsw_engine
+# instantiating one module per block). Every instantiated module must be defined in it, a cell or a macro, with
 # matching port widths (hierarchy -check; a resized port stops here). OpenSTA's
 # Verilog reader takes neither instance parameters nor concatenations on the left
 # of an assign, so this writes
-#   OUT_DIR/mcadsw_top_sta.v  flattened by Yosys, nets split to bits, remaining
+#   OUT_DIR/mcadsw_engine_sta.v  flattened by Yosys, nets split to bits, remaining
 #                             wire-to-wire assigns replaced by BUFX2, every MCADSW_RAM instance renamed to a
 #                             parameter-free cell per shape (MCADSW_RAM_S<words>_W<bits>_A<addr bits>_<SYNC|ASYNC>,
 #                             _WE when all bit write enables are one net: a word write enable)
@@ -22,14 +21,14 @@ cat > "$out/sta_netlist.ys" <<YS
 read_verilog -lib $root/sim/gls/mcadsw_ram_model.v
 read_liberty -lib $lib
 read_verilog $netlist
-hierarchy -check -top mcadsw_top
+hierarchy -check -top mcadsw_engine
 flatten
 # Single-bit nets, so that bits of one wire that alias another bit merge
 # instead of becoming buffers (a write enable fanned out to 384 aliases did).
 splitnets
 opt_clean -purge
 insbuf -buf BUFX2 A Y
-write_verilog -noattr -noexpr -nohex -nodec $out/mcadsw_top_flat.v
+write_verilog -noattr -noexpr -nohex -nodec $out/mcadsw_engine_flat.v
 YS
 yosys -q -l "$out/sta_netlist.log" "$out/sta_netlist.ys" > /dev/null || {
   tail -20 "$out/sta_netlist.log"; echo "sta_netlist: yosys failed" >&2; exit 1; }
@@ -56,8 +55,8 @@ awk -v shapes="$out/mcadsw_ram_shapes.txt" '
   }
   inmac { print "sta_netlist: unexpected line in a macro instance: " $0 > "/dev/stderr"; exit 1 }
   { print }
-' "$out/mcadsw_top_flat.v" > "$out/mcadsw_top_renamed.v"
-rm -f "$out/mcadsw_top_flat.v"
+' "$out/mcadsw_engine_flat.v" > "$out/mcadsw_engine_renamed.v"
+rm -f "$out/mcadsw_engine_flat.v"
 
 # A macro whose bit write enables are all one net is a macro with a word write
 # enable (WR_WE): that is how it would be built, and it keeps a single enable
@@ -74,10 +73,10 @@ awk '
   }
   inst { buf[++nbuf] = $0; if ($0 ~ /^ *\);$/) { inst = 0; flush() } next }
   { print }
-' "$out/mcadsw_top_renamed.v" > "$out/mcadsw_top_sta.v"
-rm -f "$out/mcadsw_top_renamed.v"
-if grep -q "#(" "$out/mcadsw_top_sta.v"; then
-  echo "sta_netlist: parameterised instances left in $out/mcadsw_top_sta.v" >&2; exit 1
+' "$out/mcadsw_engine_renamed.v" > "$out/mcadsw_engine_sta.v"
+rm -f "$out/mcadsw_engine_renamed.v"
+if grep -q "#(" "$out/mcadsw_engine_sta.v"; then
+  echo "sta_netlist: parameterised instances left in $out/mcadsw_engine_sta.v" >&2; exit 1
 fi
 
 # Liberty: bus types and one cell per shape.
@@ -139,4 +138,4 @@ awk -v clk_to_q="$clk_to_q" -v access="$access" -v setup="$setup" -v hold="$hold
     }
     print "}"
   }' "$out/mcadsw_ram_shapes.txt" > "$out/mcadsw_ram.lib"
-echo "sta_netlist: $(wc -l < "$out/mcadsw_ram_shapes.txt") macro shapes -> $out/mcadsw_ram.lib, netlist $out/mcadsw_top_sta.v"
+echo "sta_netlist: $(wc -l < "$out/mcadsw_ram_shapes.txt") macro shapes -> $out/mcadsw_ram.lib, netlist $out/mcadsw_engine_sta.v"

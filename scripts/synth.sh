@@ -8,8 +8,6 @@
 #   DMAX=16 scripts/synth.sh      reduced configuration (build/synth_dmax16)
 #   PAR=2 scripts/synth.sh        2 disparities a step (1, 2, 4; issue 18), in
 #                                 build/synth_dmax<N>_par<P>
-#   FLAT=1 scripts/synth.sh       the earlier flow: the whole engine in one Yosys process
-#                                 (scripts/synth_flat.sh; 40 min, 13.5 GB at DMAX = 64)
 #   OUT=dir                       output directory (default build/synth, or
 #                                 build/synth_dmax<N> for another DMAX)
 #   SYNTH_JOBS=n                  Yosys processes at a time (default 2)
@@ -17,19 +15,19 @@
 #   RTL_DIR=dir, YOSYS=binary     other sources / Yosys executable (tests/synth/bad_input.sh)
 #
 # Flow: (1) one cheap Yosys run elaborates the design with chparam DMAX
-# (hierarchy -check -top mcadsw_top) and writes it as RTLIL; scripts/synth_elab.awk
+# (hierarchy -check -top mcadsw_engine) and writes it as RTLIL; scripts/synth_elab.awk
 # lists the blocks (each distinct module the top instantiates, i.e. each
 # parameterisation) and renames them mcadsw_<instance>; (2) scripts/synth_block.sh
 # synthesises each block with its sub-modules flattened into it, and the top's own
 # logic with the blocks as black boxes, two Yosys processes at a time, longest first;
 # a block whose stamp (a hash of its source files, the package, its parameters,
 # the flow files and the Yosys version) is unchanged is not synthesised again;
-# (3) the block netlists are concatenated into mcadsw_top_osu018.v (the netlist
+# (3) the block netlists are concatenated into mcadsw_engine_osu018.v (the netlist
 # scripts/gls.sh simulates); (4) scripts/sta_netlist.sh and OpenSTA time it;
 # (5) report.md and summary.json, written last (deleted at the start).
 #
 # Outputs in OUT: elab.log, blocks/<block>/{yosys.log,netlist.v,area.txt,memories.txt,registers.txt,stamp},
-# blocks.txt, memories.txt, registers.txt, mcadsw_top_osu018.v, sta.log, sta_endpoints.log,
+# blocks.txt, memories.txt, registers.txt, mcadsw_engine_osu018.v, sta.log, sta_endpoints.log,
 # report.md, summary.json.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -65,7 +63,7 @@ elif [ "$dmax_ok" = 1 ]; then
   elif [ "$dmax" = 64 ]; then out=$root/build/synth; else out=$root/build/synth_dmax$dmax; fi
 fi
 if [ -n "$out" ] && [ -d "$out" ]; then
-  rm -f "$out/summary.json" "$out/report.md" "$out/mcadsw_top_osu018.v" "$out/mcadsw_top_sta.v" \
+  rm -f "$out/summary.json" "$out/report.md" "$out/mcadsw_engine_osu018.v" "$out/mcadsw_engine_sta.v" \
         "$out/sta.log" "$out/sta_endpoints.log"
 fi
 [ "$dmax_ok" = 1 ] ||
@@ -73,11 +71,6 @@ fi
 # PAR, the disparities a step: a parameter of the top (chparam), DMAX a multiple of it.
 [[ "$par" =~ ^[124]$ ]] || die "PAR='$par' is not supported: 1, 2 or 4"
 [ $((dmax % par)) -eq 0 ] || die "DMAX=$dmax is not a multiple of PAR=$par"
-case "${FLAT:-0}" in
-  0|"") flat=0 ;;
-  1) flat=1 ;;
-  *) die "FLAT='${FLAT}' is not 0 or 1" ;;
-esac
 jobs=${SYNTH_JOBS:-2}
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || die "SYNTH_JOBS='$jobs' is not a positive integer"
 mem_budget=${SYNTH_MEM_MB:-7500}
@@ -88,12 +81,6 @@ for tool in "$yosys_bin" sta awk sha256sum; do
   command -v "$tool" >/dev/null || die "'$tool' not found in PATH (run scripts/bootstrap.sh, or make synth, which runs it)"
 done
 [ -f "$lib" ] || die "liberty $lib not found (apt install qflow-tech-osu018)"
-if [ "$flat" = 1 ]; then
-  [ -z "${RTL_DIR:-}" ] && [ -z "${YOSYS:-}" ] || die "RTL_DIR and YOSYS apply to the hierarchical flow only"
-  [ "$dmax" -le "$pkg_dmax" ] || die "FLAT=1 takes DMAX up to $pkg_dmax"
-  [ "$par" = 1 ] || die "FLAT=1 takes PAR = 1 only"
-  DMAX=$dmax exec "$root/scripts/synth_flat.sh"
-fi
 
 mkdir -p "$out/blocks"
 out=$(cd "$out" && pwd)
@@ -102,7 +89,7 @@ out=$(cd "$out" && pwd)
 if [ "$dmax" -gt "$pkg_dmax" ]; then
   stage=$out/rtl
   rm -rf "$stage"; mkdir -p "$stage"
-  cp "$rtl"/mcadsw_*.sv "$stage"/
+  cp $("$root/scripts/rtl_files.sh" "$rtl") "$stage"/
   "$root/scripts/rtl_pkg_dmax.sh" "$dmax" "$rtl/mcadsw_pkg.sv" "$stage/mcadsw_pkg.sv" ||
     die "could not make the package for DMAX = $dmax"
   echo "synth: DMAX = $dmax above the package's $pkg_dmax: RTL with a package for it in $stage"
@@ -149,13 +136,13 @@ sampler_pid=$!
 
 # ---- (1) Elaboration ----------------------------------------------------------------------
 cd "$rtl"
-mods=$(ls mcadsw_*.sv | grep -v '^mcadsw_pkg.sv$' | sort | tr '\n' ' ')
+mods=$("$root/scripts/rtl_files.sh" --no-pkg . | sed 's|^\./||' | tr '\n' ' ')
 cat > "$out/elab.ys" <<YS
 read_verilog -sv mcadsw_pkg.sv $mods
 read_verilog -lib $root/sim/gls/mcadsw_ram_model.v
-chparam -set DMAX $dmax mcadsw_top
-chparam -set PAR $par mcadsw_top
-hierarchy -check -top mcadsw_top
+chparam -set DMAX $dmax mcadsw_engine
+chparam -set PAR $par mcadsw_engine
+hierarchy -check -top mcadsw_engine
 write_rtlil $out/elab_raw.il
 YS
 echo "synth: DMAX=$dmax, PAR=$par, clock ${period_ns} ns, liberty $(basename "$lib"); elaborating (log: $out/elab.log)"
@@ -168,7 +155,7 @@ if ! timed "$out/elab_time.txt" "$yosys_bin" -q -l "$out/elab.log" "$out/elab.ys
   if [ -n "$efile" ] && [ -f "$out/blocks.txt" ]; then
     eblocks=$(awk -v f="$(basename "$efile")" '{n = split($5, a, ","); for (i = 1; i <= n; i++) if (a[i] == f) print $1}' "$out/blocks.txt" | tr '\n' ' ' | sed 's/ $//')
   fi
-  echo "synth: elaboration of mcadsw_top failed${eblocks:+ in block $eblocks}: ${err:-see the log} (DMAX=$dmax, PAR=$par, sources $rtl; log: $out/elab.log)" >&2
+  echo "synth: elaboration of mcadsw_engine failed${eblocks:+ in block $eblocks}: ${err:-see the log} (DMAX=$dmax, PAR=$par, sources $rtl; log: $out/elab.log)" >&2
   exit 1
 fi
 rm -f "$out"/blocks/*.sig "$out/blocks.txt"
@@ -299,21 +286,21 @@ yosys_wall=$(( $(date +%s) - t_start ))
 # One file, the top first, then each block module once; MCADSW_RAM stays a black
 # box (sim/gls/mcadsw_ram_model.v for simulation, a generated liberty for STA).
 {
-  echo "// mcadsw_top, DMAX = $dmax, PAR = $par: OSU 0.18 um netlist assembled by scripts/synth.sh from the"
+  echo "// mcadsw_engine, DMAX = $dmax, PAR = $par: OSU 0.18 um netlist assembled by scripts/synth.sh from the"
   echo "// block netlists in $out/blocks (each synthesised on its own)."
   cat "$out/blocks/top/netlist.v"
   awk '$1 != "top" {print $1}' "$out/blocks.txt" | while read -r label; do cat "$out/blocks/$label/netlist.v"; done
-} > "$out/mcadsw_top_osu018.v.tmp"
-for m in mcadsw_top $block_modules; do
-  n=$(grep -c "^module $m(" "$out/mcadsw_top_osu018.v.tmp" || true)
+} > "$out/mcadsw_engine_osu018.v.tmp"
+for m in mcadsw_engine $block_modules; do
+  n=$(grep -c "^module $m(" "$out/mcadsw_engine_osu018.v.tmp" || true)
   [ "$n" = 1 ] || { echo "synth: assembly: module $m defined $n times in the assembled netlist" >&2; exit 1; }
 done
-mv "$out/mcadsw_top_osu018.v.tmp" "$out/mcadsw_top_osu018.v"
+mv "$out/mcadsw_engine_osu018.v.tmp" "$out/mcadsw_engine_osu018.v"
 
 # ---- (4) OpenSTA --------------------------------------------------------------------------
 echo "synth: OpenSTA on the assembled netlist (log: $out/sta.log)"
 sta_start=$(date +%s)
-timed "$out/sta_netlist_time.txt" "$root/scripts/sta_netlist.sh" "$out/mcadsw_top_osu018.v" "$out" "$lib" > "$out/sta_netlist.out" 2>&1 || {
+timed "$out/sta_netlist_time.txt" "$root/scripts/sta_netlist.sh" "$out/mcadsw_engine_osu018.v" "$out" "$lib" > "$out/sta_netlist.out" 2>&1 || {
   tail -20 "$out/sta_netlist.out" | sed 's/^/  | /' >&2; echo "synth: preparing the STA netlist failed (log: $out/sta_netlist.log)" >&2; exit 1; }
 cat > "$out/sta.tcl" <<TCL
 set lib $lib
@@ -384,7 +371,7 @@ while read -r label module inst base files weight; do
       else if (base == "mcadsw_scheduler") grp = "block_scheduler"
       else if (base == "mcadsw_depth_fifo") grp = "depth_fifo"
       else if (base == "mcadsw_post") grp = "post_stage"
-      else if (base == "mcadsw_top") grp = "top_registers_counters"
+      else if (base == "mcadsw_engine") grp = "top_registers_counters"
       else grp = "other"
       printf "%s %s %d %d %d %d %s %d %d %d\n", label, m, inst, area / a + 0.5, ff, mem, grp, s, mb, cached
     }' "$d/area.txt" >> "$out/block_figures.txt"
@@ -396,7 +383,7 @@ done < "$out/blocks.txt"
 # block_figures.txt: label module instances nand2 ff mem_bits group seconds peak_MB cached
 nand2_total=$(awk '{s += $3 * $4} END {print s + 0}' "$out/block_figures.txt")
 ff_count=$(awk '{s += $3 * $5} END {print s + 0}' "$out/block_figures.txt")
-# The SoC wrapper around the engine (mcadsw_axi_top: AXI4-Lite registers, AXI4
+# The SoC wrapper around the engine (mcadsw_top: AXI4-Lite registers, AXI4
 # master), mapped and timed apart by scripts/synth_soc.sh (about 20 s).
 "$root/scripts/synth_soc.sh" "$rtl" "$out/soc" "$lib" "$dmax" "$par" ||
   die "the SoC wrapper's synthesis failed (log: $out/soc/yosys.log)"
@@ -464,7 +451,7 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "(each module parameterisation the top instantiates, sub-modules flattened into it) and the top's own"
   echo "logic (blocks as black boxes) in its own Yosys process, $jobs at a time; ABC with buffering"
   echo "(\`constraints/abc_osu018.script\`, \`-constr constraints/abc_osu018.constr\`) per block; the block"
-  echo "netlists assembled into \`mcadsw_top_osu018.v\`; OpenSTA on it against \`constraints/mcadsw.sdc\`."
+  echo "netlists assembled into \`mcadsw_engine_osu018.v\`; OpenSTA on it against \`constraints/mcadsw.sdc\`."
   echo "On-chip memories are black-box macros (\`MCADSW_RAM\`, ports from \`sim/gls/mcadsw_ram_model.v\`),"
   echo "counted apart as the paper does."
   echo
@@ -476,7 +463,7 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "| figure | this engine | paper (Table III, UMC 90 nm) |"
   echo "|---|---|---|"
   echo "| gates (NAND2 equivalents, memories excluded) | $nand2_total | 563k |"
-  echo "| with the SoC wrapper (mcadsw_axi_top: AXI4-Lite registers $soc_regs, AXI4 master $soc_master; each timed alone, worst slack $soc_slack ns) | $soc_total | |"
+  echo "| with the SoC wrapper (mcadsw_top: AXI4-Lite registers $soc_regs, AXI4 master $soc_master; each timed alone, worst slack $soc_slack ns) | $soc_total | |"
   echo "| on-chip memory | $mem_bits bits = $mem_kb kB in $mem_count macros | 21.3 kB |"
   echo "| of which the engine of the paper (without the LR post stage) | $eng_bits bits = $eng_kb kB | 21.3 kB |"
   echo "| LR post stage (issue 17, beyond the paper): gates, memory | $post_nand2 NAND2 eq, $post_bits bits = $post_kb kB | |"
@@ -488,11 +475,6 @@ paper_share() {   # what the paper's text says of Fig. 16 (the figure's numbers 
   echo "| achievable clock (1 / (period - slack)) | $fmax MHz | 95 MHz |"
   if [ -n "$cif_cycles" ] && [ "$dmax" = 64 ] && [ "$par" = 1 ]; then
     echo "| CIF frame at D = 64 (\`make sim\`) | $cif_cycles cycles = $(awk -v c="$cif_cycles" -v f="$fmax" 'BEGIN {printf "%.1f", f * 1e6 / c}') fps at $fmax MHz, $(awk -v c="$cif_cycles" 'BEGIN {printf "%.1f", 95e6 / c}') fps at 95 MHz | 42 fps at 95 MHz |"
-  fi
-  if [ "$dmax" = 64 ] && [ "$par" = 1 ]; then
-    echo
-    echo "The flattened flow (\`make synth FLAT=1\`: one Yosys process, 2370 s and 13 450 MB on the RTL of"
-    echo "commit 42dc1ac) against this one on the same RTL: docs/architecture.md section 11."
   fi
   echo
   echo "Critical path: from \`$crit_start\` to \`$crit_end\`, arrival $crit_arrival ns"
@@ -598,5 +580,5 @@ mv "$out/summary.json.tmp" "$out/summary.json"
 echo "synth: $nand2_total NAND2 eq (paper 563k), memory $mem_kb kB in $mem_count macros ($eng_kb kB without the LR post stage; paper 21.3 kB),"
 echo "       LR post stage $post_nand2 NAND2 eq, $post_kb kB; with the SoC wrapper (registers $soc_regs, AXI4 master $soc_master, slack $soc_slack ns) $soc_total NAND2 eq,"
 echo "       worst slack $slack ns (WNS $wns ns) at $clock_mhz MHz, achievable $fmax MHz (paper 95 MHz)"
-echo "synth: report $out/report.md, summary $out/summary.json, netlist $out/mcadsw_top_osu018.v"
+echo "synth: report $out/report.md, summary $out/summary.json, netlist $out/mcadsw_engine_osu018.v"
 echo "synth: wall time ${wall_s} s (${#queue[@]} blocks synthesised, ${#cached[@]} reused); peak memory ${proc_peak_mb} MB in one process ($proc_peak_what), ${sum_peak_mb} MB all processes together"

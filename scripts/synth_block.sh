@@ -11,7 +11,7 @@
 #
 #   scripts/synth_block.sh MODULE ELAB_IL OUT_DIR PERIOD_PS LIBERTY [BLACKBOX_MODULE...]
 #
-# MODULE is the block module (mcadsw_top for the top's own logic, with the block
+# MODULE is the block module (mcadsw_engine for the top's own logic, with the block
 # modules given as BLACKBOX_MODULEs: only their ports are kept). Writes in OUT_DIR:
 # synth.ys, yosys.log, time.txt, netlist.v (the block module alone), area.txt
 # (stat -liberty), memories.txt (module cell width words bits read_ports write_ports

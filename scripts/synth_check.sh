@@ -16,7 +16,7 @@ budget=${BUDGET:-$root/constraints/budget.json}
 if [ -z "${SUMMARY:-}" ]; then
   [ -z "${DMAX:-}" ] || [ "$DMAX" = 64 ] || { echo "synth-check: the budget is for DMAX = 64 (got DMAX=$DMAX)" >&2; exit 2; }
   out=${OUT:-$root/build/synth}
-  OUT=$out DMAX=64 FLAT=0 "$root/scripts/synth.sh" || { echo "synth-check: FAILED: make synth did not complete (above)" >&2; exit 1; }
+  OUT=$out DMAX=64 "$root/scripts/synth.sh" || { echo "synth-check: FAILED: make synth did not complete (above)" >&2; exit 1; }
   summary=$out/summary.json
 else
   summary=$SUMMARY
@@ -50,7 +50,7 @@ check() {   # name value op limit unit explanation
 check "gates (NAND2 eq)" "$nand2" "<=" "$max_nand2" "" "the engine exceeds the gate budget (build/synth/report.md lists the blocks)"
 check "worst slack at ${clock:-?} MHz" "$slack" ">=" "$min_slack" "ns" "timing is not met (build/synth/sta.log has the critical path, sta_endpoints.log every endpoint)"
 check "on-chip memory (engine)" "$mem" "<=" "$max_mem" "kB" "the memories exceed the budget (build/synth/report.md lists them per module)"
-# The whole IP (engine and SoC wrapper, mcadsw_axi_top) where the summary has it.
+# The whole IP (engine and SoC wrapper, mcadsw_top) where the summary has it.
 soc_total=$(num soc_total_nand2_eq "$summary")
 if [ -n "$soc_total" ]; then
   check "gates with the SoC wrapper" "$soc_total" "<=" "$max_nand2" "" "the engine with its AXI4-Lite registers and AXI4 master exceeds the gate budget (build/synth/report.md)"

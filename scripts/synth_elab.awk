@@ -1,7 +1,7 @@
 # Blocks of the elaborated design (scripts/synth.sh). Reads the RTLIL that
-# `hierarchy -check -top mcadsw_top` wrote (after chparam DMAX) twice:
+# `hierarchy -check -top mcadsw_engine` wrote (after chparam DMAX) twice:
 #   pass 1: modules, their source file, parameters, ports and cells;
-#   pass 2: the same RTLIL with the top renamed mcadsw_top and every block module
+#   pass 2: the same RTLIL with the top renamed mcadsw_engine and every block module
 #           (each distinct module type the top instantiates) renamed
 #           mcadsw_<instance name without u_>, written to stdout.
 # Also writes (-v dir=DIR):
@@ -47,7 +47,7 @@ FNR == NR {
 FNR == 1 {
   # End of pass 1: name the blocks.
   if (top == "") { print "synth_elab: no top module in the elaborated design" > "/dev/stderr"; exit 1 }
-  newname[top] = "\\mcadsw_top"
+  newname[top] = "\\mcadsw_engine"
   nb = 0
   for (i = 1; i <= ncell[top]; i++) {
     t = ctype[top, i]

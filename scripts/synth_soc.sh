@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The SoC wrapper's own logic (issue 19), for `make synth`: the AXI4-Lite
 # register block (mcadsw_regs) and the AXI4 master (mcadsw_axi_master) that
-# mcadsw_axi_top puts around the engine, each flattened and mapped as the
+# mcadsw_top puts around the engine, each flattened and mapped as the
 # engine's blocks are (scripts/synth_block.sh: OSU 0.18 um flip-flops, ABC with
 # the buffering script and -constr), area in NAND2 equivalents, then timed alone
 # by OpenSTA at the SDC's clock with the engine's port budget (a fifth of the

@@ -29,7 +29,7 @@ FNR == NR {
   if ($NF + 0 > 0) next
   o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o)
   h = $0; sub(/.*\001h\002/, "", h); sub(/\001.*/, "", h); sub(/'[^']*$/, "", h)
-  sub(/^TOP\.mcadsw_axi_top\.?/, "", h); if (h == "") h = "top"
+  sub(/^TOP\.mcadsw_top\.?/, "", h); if (h == "") h = "top"
   b = "-"
   if (match(o, /\[[0-9]+\]$/)) { b = substr(o, RSTART + 1, RLENGTH - 2); o = substr(o, 1, RSTART - 1) }
   name = h "/" o

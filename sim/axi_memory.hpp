@@ -1,5 +1,5 @@
 // AXI4 slave model of the frame memory (issue 19), in front of MemoryModel
-// (its bytes and its address checks): the harness's memory for mcadsw_axi_top.
+// (its bytes and its address checks): the harness's memory for mcadsw_top.
 //
 // Serves one ID, in order: AR and AW bursts (INCR, 4-byte beats), R beats a
 // read latency after the AR handshake, B once a burst's AW and all its W beats

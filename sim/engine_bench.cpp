@@ -17,16 +17,16 @@
 #include <utility>
 #include <vector>
 
-// The model: mcadsw_axi_top, programmed through its AXI4-Lite registers as a
-// driver would (issue 19), or, for the gate-level netlist of mcadsw_top
+// The model: mcadsw_top, programmed through its AXI4-Lite registers as a
+// driver would (issue 19), or, for the gate-level netlist of mcadsw_engine
 // (MCADSW_DUT_AXIL 0, scripts/gls.sh), the engine's configuration ports.
 #if MCADSW_DUT_AXIL
-#include "Vmcadsw_axi_top.h"
+#include "Vmcadsw_top.h"
 #include "axi_memory.hpp"
 #include "axil_driver.hpp"
 #include "mcadsw/regs.hpp"
 #else
-#include "Vmcadsw_top.h"
+#include "Vmcadsw_engine.h"
 #endif
 #if VM_COVERAGE
 #include <unistd.h>
@@ -40,9 +40,9 @@ namespace mcadsw::sim {
 namespace {
 
 #if MCADSW_DUT_AXIL
-using Dut = Vmcadsw_axi_top;
-#else
 using Dut = Vmcadsw_top;
+#else
+using Dut = Vmcadsw_engine;
 #endif
 
 // Memory layout of a frame (docs/memory_map.md): six input planes (left Y, U,
@@ -573,7 +573,7 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
 // the run verilator_out.hex (the disparity plane's words) and
 // verilator_counters.txt.
 void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, const WeightTable& table) {
-  // The Verilog bench's memory starts at address 0 (tests/icarus/tb_mcadsw_top.sv).
+  // The Verilog bench's memory starts at address 0 (tests/icarus/tb_mcadsw_engine.sv).
   if (mem.lo() != 0) throw std::invalid_argument("--dump needs the frame at origin 0");
   std::ofstream m(dir + "/mem.hex");
   for (uint64_t a = 0; a + 4 <= mem.hi(); a += 4) {

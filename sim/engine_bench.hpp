@@ -121,7 +121,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 // counted in bus.bad_writes.
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
 
-// The SoC's AXI4-Lite register port (mcadsw_axi_top, engine idle after reset),
+// The SoC's AXI4-Lite register port (mcadsw_top, engine idle after reset),
 // for register-level tests: write and read return or report the response (0
 // OKAY, 2 SLVERR), cycles runs the clock.
 struct RegisterPort {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Second simulator: the same small pair through Verilator (mcadsw_sim --dump)
-# and through Icarus Verilog (4-state, tests/icarus/tb_mcadsw_top.sv) from the
+# and through Icarus Verilog (4-state, tests/icarus/tb_mcadsw_engine.sv) from the
 # memory image the C++ harness wrote; the disparity planes and the counters
 # must be identical, and no output may be X after reset. Runs the raw mode,
 # the sub-pixel mode (16-bit output plane) and the right view as base with
@@ -18,8 +18,8 @@ crop=${CROP:-150,120,22,12}
 d=${D:-10}
 
 cd "$root/rtl"
-mods=$(ls mcadsw_*.sv | grep -v '^mcadsw_pkg.sv$')
-iverilog -g2012 -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_top.sv" 2> "$work/iverilog.log" || {
+mods=$("$root/scripts/rtl_files.sh" --no-pkg .)
+iverilog -g2012 -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_engine.sv" 2> "$work/iverilog.log" || {
   cat "$work/iverilog.log"; echo "icarus: compile failed" >&2; exit 1; }
 for mode in raw subpixel right_subpixel lr_subpixel right_tiled; do
   run=$work/$mode; mkdir -p "$run"

@@ -223,7 +223,7 @@ TEST(Axi, LongReadLatency) {
 }
 
 // The register window through the whole SoC (the block's decode as
-// mcadsw_axi_top wires it, not only the block alone, rtl_regs_test): every
+// mcadsw_top wires it, not only the block alone, rtl_regs_test): every
 // unmapped word offset and a sample of misaligned ones answer SLVERR and read
 // 0; writes to the read-only registers answer OKAY and change nothing; every
 // read-write register keeps exactly its bits of all-ones, all-zeros

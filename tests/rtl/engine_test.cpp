@@ -1,4 +1,4 @@
-// The whole engine (mcadsw_top) in the modelled memory, against the reference:
+// The whole engine (mcadsw_engine) in the modelled memory, against the reference:
 // every pixel of the disparity plane, nothing written outside it. Small pairs
 // so that the suite stays fast; `make sim` runs the full-size regression.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "Vmcadsw_axi_top.h"
+#include "Vmcadsw_top.h"
 #include "engine_bench.hpp"
 #include "engine_expect.hpp"
 #include "mcadsw/image_io.hpp"
@@ -575,7 +575,7 @@ TEST(EngineDeathTest, AssertionStopsTheSimulation) {
   const auto spurious_read_data = [] {
     dup2(2, 1);  // Verilator reports on stdout; the death test reads stderr
     VerilatedContext ctx;
-    Vmcadsw_axi_top top{&ctx};
+    Vmcadsw_top top{&ctx};
     const auto cycle = [&] {
       top.clk_i = 0;
       top.eval();

@@ -14,7 +14,7 @@ fails=0
 
 # expect NAME RC_WANTED REGEX -- ENV... : run $synth with stale result files
 # ($stale_files) in its OUT and check exit code, message, and that they are gone.
-stale_files="summary.json mcadsw_top_osu018.v"
+stale_files="summary.json mcadsw_engine_osu018.v"
 expect() {
   local name=$1 want_rc=$2 regex=$3; shift 4
   local out=$work/out_$name
@@ -41,7 +41,6 @@ expect dmax_zero  2 "DMAX='0' is not supported: an integer from 1 to 128" -- DMA
 expect dmax_text  2 "DMAX='abc' is not supported" -- DMAX=abc
 expect dmax_above 2 "DMAX='129' is not supported" -- DMAX=129
 expect dmax_neg   2 "DMAX='-4' is not supported" -- DMAX=-4
-expect flat_bad   2 "FLAT='yes' is not 0 or 1" -- FLAT=yes
 # PAR: 1, 2 or 4, and DMAX a multiple of it.
 expect par_three  2 "PAR='3' is not supported: 1, 2 or 4" -- PAR=3
 expect par_text   2 "PAR='x' is not supported" -- PAR=x
@@ -56,7 +55,7 @@ expect fpga_dmax_text 2 "DMAX='x1' is not supported" -- DMAX=x1
 expect fpga_par_three 2 "PAR='3' is not supported: 1, 2 or 4" -- PAR=3
 expect fpga_par_dmax  2 "DMAX=10 is not a multiple of PAR=4" -- DMAX=10 PAR=4
 synth=$synth_saved
-stale_files="summary.json mcadsw_top_osu018.v"
+stale_files="summary.json mcadsw_engine_osu018.v"
 
 # A missing tool: a PATH with everything the script needs except yosys.
 bin=$work/bin; mkdir -p "$bin"
@@ -68,7 +67,7 @@ expect no_yosys 2 "'yosys' not found in PATH" -- PATH="$bin"
 # A broken source: elaboration fails, the message names the file (Yosys's error).
 rtl=$work/rtl; cp -r "$root/rtl" "$rtl"
 sed -i '0,/endmodule/s/endmodule/  this is not verilog;\nendmodule/' "$rtl/mcadsw_depth_fifo.sv"
-expect broken_source 1 "elaboration of mcadsw_top failed" -- RTL_DIR="$rtl"
+expect broken_source 1 "elaboration of mcadsw_engine failed" -- RTL_DIR="$rtl"
 grep -q "mcadsw_depth_fifo.sv" "$work/broken_source.err" ||
   { echo "FAIL broken_source: the message does not name mcadsw_depth_fifo.sv"; fails=$((fails + 1)); }
 

@@ -1,5 +1,5 @@
-// Second simulator (Icarus Verilog, 4-state): mcadsw_top and its AXI4 master
-// (mcadsw_axi_master, as in mcadsw_axi_top) on the memory image the C++
+// Second simulator (Icarus Verilog, 4-state): mcadsw_engine and its AXI4 master
+// (mcadsw_axi_master, as in mcadsw_top) on the memory image the C++
 // harness dumped (mcadsw_sim --dump DIR), with a zero-latency AXI4 memory timed
 // as the C++ model's (sim/axi_memory.hpp, latency 0): always ready, an R beat
 // the cycle after its AR, a burst written and answered (B) the cycle after its
@@ -7,7 +7,7 @@
 // writes the disparity plane and the counters for tests/icarus/run.sh to
 // compare with the Verilator run.
 `timescale 1ns/1ps
-module tb_mcadsw_top;
+module tb_mcadsw_engine;
   localparam int MAXW = 1 << 20;           // memory words
   localparam int NTHR = mcadsw_pkg::WTHRESHOLDS;  // 7: thr0 .. thr6 below
   localparam int DCB  = mcadsw_pkg::COLOR_DIST_BITS;
@@ -45,7 +45,7 @@ module tb_mcadsw_top;
   logic [1:0]  arburst, awburst;
   logic [3:0]  wstrb;
 
-  mcadsw_top dut (
+  mcadsw_engine dut (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_base_ly_i (cfg_base_ly), .cfg_base_lu_i (cfg_base_lu), .cfg_base_lv_i (cfg_base_lv),
     .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),

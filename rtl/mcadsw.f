@@ -1,0 +1,24 @@
+// The RTL of the MCADSW engine: every tool reads this list (CMake/Verilator,
+// Yosys, Icarus, the formal, mutation, FPGA and synthesis flows; scripts/rtl_files.sh
+// prints it as paths). One file a line, relative to this folder, the package
+// first; `verilator -f mcadsw.f` and `iverilog -c mcadsw.f` work from rtl/.
+// A configuration other than DMAX 64 / PAR 1 replaces mcadsw_pkg.sv with its own
+// (make sim-build, make synth DMAX=<n> PAR=<p>).
+mcadsw_pkg.sv
+mcadsw_axi_master.sv
+mcadsw_census.sv
+mcadsw_cost_agg.sv
+mcadsw_depth_fifo.sv
+mcadsw_engine.sv
+mcadsw_horz_agg.sv
+mcadsw_mem_ctrl.sv
+mcadsw_pingpong.sv
+mcadsw_post.sv
+mcadsw_regs.sv
+mcadsw_scheduler.sv
+mcadsw_strip_stage.sv
+mcadsw_top.sv
+mcadsw_vert_agg.sv
+mcadsw_weight_gen.sv
+mcadsw_win_reader.sv
+mcadsw_wta.sv
