@@ -31,9 +31,7 @@ module cost_agg_props #(
     .cen_l_i ('0), .cen_r_i ('0), .wv_i ('0),
     .hrd_en_o (), .hrd_row_o (), .hrd_grp_o (), .hrd_slot_o (), .hrd_rel_o (), .wh_i ('0),
     .disp_valid_o (), .disp_row_o (), .disp_grp_o (), .disp_o (), .busy_o (),
-    .sub_valid_o (), .sub_row_o (), .sub_grp_o (), .sub_o (), .sub_d_o (), .sub_busy_o (),
-    .mon_ev_valid_o (), .mon_ev_row_o (), .mon_ev_d_o (), .mon_ev_grp_o (), .mon_ev_o (),
-    .mon_fc_valid_o (), .mon_fc_row_o (), .mon_fc_d_o (), .mon_fc_grp_o (), .mon_fc_o ()
+    .sub_valid_o (), .sub_row_o (), .sub_grp_o (), .sub_o (), .sub_d_o (), .sub_busy_o ()
   );
 
   `include "props_reset.svh"

@@ -7,9 +7,11 @@
 mcadsw_pkg.sv
 mcadsw_axi_master.sv
 mcadsw_census.sv
+mcadsw_cfg_check.sv
 mcadsw_cost_agg.sv
 mcadsw_depth_fifo.sv
 mcadsw_engine.sv
+mcadsw_frame_ctrl.sv
 mcadsw_horz_agg.sv
 mcadsw_mem_ctrl.sv
 mcadsw_pingpong.sv
@@ -20,5 +22,6 @@ mcadsw_strip_stage.sv
 mcadsw_top.sv
 mcadsw_vert_agg.sv
 mcadsw_weight_gen.sv
+mcadsw_win_geom.sv
 mcadsw_win_reader.sv
 mcadsw_wta.sv

@@ -77,10 +77,27 @@ package mcadsw_pkg;
   localparam int REG_WORDS_READ     = 'h84;  // RO memory words read in the last frame
   localparam int REG_WORDS_WRITTEN  = 'h88;  // RO memory words written in the last frame
   localparam int REG_STALLS         = 'h8C;  // RO cycles with a memory request not granted
-  // Error codes of a frame ended early (STATUS.ERROR_CODE)
-  localparam logic [3:0] ERR_READ_RESPONSE = 4'd13;
-  localparam logic [3:0] ERR_WRITE_RESPONSE = 4'd14;
-  localparam logic [3:0] ERR_ABORTED = 4'd15;
+  // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,
+  // 13..15 a frame ended early
+  localparam int ERR_BITS = 4;
+  typedef enum logic [ERR_BITS-1:0] {
+    ErrNone          = 4'd0,
+    ErrWidth         = 4'd1,
+    ErrHeight        = 4'd2,
+    ErrDisp          = 4'd3,
+    ErrStride        = 4'd4,
+    ErrAlign         = 4'd5,
+    ErrOverlap       = 4'd6,
+    ErrOutStride     = 4'd7,
+    ErrMode          = 4'd8,
+    ErrBeyond        = 4'd9,
+    ErrLrTolerance   = 4'd10,
+    ErrLrWidth       = 4'd11,
+    ErrLrColour      = 4'd12,
+    ErrReadResponse  = 4'd13,
+    ErrWriteResponse = 4'd14,
+    ErrAborted       = 4'd15
+  } err_e;
   // Fields: <register>_<field>_LSB and _W
   localparam int ID_VALUE_LSB           = 0;
   localparam int ID_VALUE_W             = 32;

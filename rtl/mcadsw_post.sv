@@ -27,6 +27,7 @@
 //       edges replicated).
 // After the last row a CD pass without fill makes the median of row H - 1.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_post #(
   parameter int MAXW = mcadsw_pkg::POST_MAX_WIDTH,
@@ -574,6 +575,16 @@ module mcadsw_post #(
   end
 
   assign busy_o = st_q != S_IDLE;
+
+  // ---- Invariants -------------------------------------------------------------------------
+  // The write queue takes every word the pixels in flight push (q_room keeps room
+  // for them), the dL word queue every word requested (the credit), and a request
+  // waits for its grant before the next one.
+  `MCADSW_ASSERT(WriteQueueFits, 32'(qc_q) + 32'(qa_push) + 32'(qb_push) <= QD + 32'(q_pop))
+  `MCADSW_ASSERT(WordQueueFits, !(f_push && !f_pop && fc_q == (FI + 1)'(FD)))
+  `MCADSW_ASSERT(CreditWithinQueue, cred_q <= (FI + 1)'(FD))
+  `MCADSW_ASSERT(OneRequestAtATime, !(port_free == 1'b0 && (rd_issue || q_pop)))
+  `MCADSW_ASSERT(QuietWhenIdle, st_q != S_IDLE || (!req_q && qc_q == '0))
 
 endmodule
 

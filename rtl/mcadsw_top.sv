@@ -9,6 +9,7 @@
 // read data is dropped), then released; STATUS.BUSY stays high until then.
 // The first cause is reported. The counters restart from 0 with the engine.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_top #(
   parameter int DMAX = mcadsw_pkg::DMAX,
@@ -112,8 +113,8 @@ module mcadsw_top #(
     end else begin
       if (!drain_q && (rd_err || wr_err || (abort && eng_busy))) begin
         drain_q    <= 1'b1;
-        end_code_q <= rd_err ? mcadsw_pkg::ERR_READ_RESPONSE :
-                      wr_err ? mcadsw_pkg::ERR_WRITE_RESPONSE : mcadsw_pkg::ERR_ABORTED;
+        end_code_q <= rd_err ? mcadsw_pkg::ErrReadResponse :
+                      wr_err ? mcadsw_pkg::ErrWriteResponse : mcadsw_pkg::ErrAborted;
       end else if (drain_q && bus_idle) begin
         drain_q <= 1'b0;
         ended_q <= 1'b1;
@@ -165,6 +166,15 @@ module mcadsw_top #(
     .m_wvalid_o, .m_wready_i, .m_wdata_o, .m_wstrb_o, .m_wlast_o,
     .m_bvalid_i, .m_bready_o, .m_bresp_i
   );
+
+  // ---- Invariants -------------------------------------------------------------------------
+  // A frame ended early reports a bus error or an abort; the engine is held in
+  // reset, and the IP busy, until the AXI4 master has nothing in flight.
+  `MCADSW_ASSERT(EndedWithABusCode, !ended_q || end_code_q == mcadsw_pkg::ErrReadResponse ||
+                                    end_code_q == mcadsw_pkg::ErrWriteResponse ||
+                                    end_code_q == mcadsw_pkg::ErrAborted)
+  `MCADSW_ASSERT(DrainKeepsBusy, !drain_q || busy)
+  `MCADSW_ASSERT(EndedNotBusy, !ended_q || !eng_busy)
 
 endmodule
 

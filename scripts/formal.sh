@@ -22,6 +22,7 @@ checks=(
   "axi_master|mcadsw_axi_master.sv|10|s/assign contig     = mem_addr_i == ob_next_q \&\& mem_addr_i\[11:0\] != 12'd0;/assign contig     = mem_addr_i == ob_next_q;/"
   "depth_fifo|mcadsw_depth_fifo.sv|8|s/        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);/        tail_q <= tail_q;/"
   "cost_agg|mcadsw_cost_agg.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv|28|s/    else if (bank_full) wbank_q <= !wbank_q;/    else if (bank_full) wbank_q <= wbank_q;/"
+  "frame_ctrl|mcadsw_frame_ctrl.sv|24|s/state_q != StCheck \&\& state_d == StIdle) done_d = 1'b1;/state_q != StCheck \&\& state_d != StCheck) done_d = 1'b1;/"
 )
 
 run_check() {  # name "rtl_files" depth [mutant_sed]
@@ -35,7 +36,7 @@ run_check() {  # name "rtl_files" depth [mutant_sed]
     if cmp -s "$src" "$root/rtl/$file"; then echo "formal: the $name mutant does not apply" >&2; return 2; fi
     log=$out/$name.mutant.log
   fi
-  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS -I $root/formal $root/rtl/mcadsw_pkg.sv $src$subs $root/formal/${name}_props.sv
+  yosys -q -l "$log" -p "read_verilog -sv -formal -DFORMAL -DSYNTHESIS -I $root/formal -I $root/rtl $root/rtl/mcadsw_pkg.sv $src$subs $root/formal/${name}_props.sv
     prep -top ${name}_props; async2sync; flatten; opt -fast
     sat -seq $depth -prove-asserts -set-assumes -set-init-zero -verify" > /dev/null 2>&1
 }

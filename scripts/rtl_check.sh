@@ -22,7 +22,7 @@ files=("$pkg" "${mods[@]}")
 run_lint() {
   for f in "${mods[@]}"; do
     top=${f%.sv}
-    out=$(verilator --lint-only -Wall --assert "${waivers[@]}" "${files[@]}" --top-module "$top" 2>&1) || {
+    out=$(verilator --lint-only -Wall --assert -I. "${waivers[@]}" "${files[@]}" --top-module "$top" 2>&1) || {
       echo "$out"; echo "rtl_check: verilator lint FAILED for $top" >&2; return 1; }
     if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
   done
@@ -59,7 +59,7 @@ run_yosys() {
 
 run_iverilog() {
   tmp=$(mktemp); trap 'rm -f "$tmp"' RETURN
-  out=$(iverilog -g2012 -Wall -Wno-timescale -o "$tmp" "${files[@]}" 2>&1) || {
+  out=$(iverilog -g2012 -Wall -Wno-timescale -I. -o "$tmp" "${files[@]}" 2>&1) || {
     echo "$out"; echo "rtl_check: iverilog FAILED" >&2; return 1; }
   if [ -n "$out" ]; then echo "$out"; echo "rtl_check: iverilog warned" >&2; return 1; fi
   echo "rtl_check: iverilog -g2012 compiles ${#files[@]} files"

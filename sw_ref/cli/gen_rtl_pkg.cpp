@@ -33,10 +33,18 @@ void print_regs_pkg() {
   for (const Reg& r : kRegs)
     std::printf("  localparam int REG_%-14s = 'h%02X;  // %s %s\n", r.name, r.offset, access_name(r.access),
                 r.doc);
-  std::printf("  // Error codes of a frame ended early (STATUS.ERROR_CODE)\n");
-  std::printf("  localparam logic [3:0] ERR_READ_RESPONSE = 4'd%d;\n", kErrReadResponse);
-  std::printf("  localparam logic [3:0] ERR_WRITE_RESPONSE = 4'd%d;\n", kErrWriteResponse);
-  std::printf("  localparam logic [3:0] ERR_ABORTED = 4'd%d;\n", kErrAborted);
+  // Icarus 11 crashes on a variable of a package enum type (docs/architecture.md,
+  // tool support), so the RTL carries codes as logic [ERR_BITS-1:0] named by these.
+  std::printf("  // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,\n");
+  std::printf("  // 13..15 a frame ended early\n");
+  std::printf("  localparam int ERR_BITS = %d;\n", kErrCodeBits);
+  std::printf("  typedef enum logic [ERR_BITS-1:0] {\n");
+  const int nerr = int(sizeof(kErrors) / sizeof(kErrors[0]));
+  for (int i = 0; i < nerr; ++i) {
+    const std::string n = std::string("Err") + kErrors[i].name;
+    std::printf("    %-16s = %d'd%d%s\n", n.c_str(), kErrCodeBits, kErrors[i].code, i + 1 < nerr ? "," : "");
+  }
+  std::printf("  } err_e;\n");
   std::printf("  // Fields: <register>_<field>_LSB and _W\n");
   for (const Field& f : kFields) {
     const std::string n = std::string(f.reg) + "_" + f.name;
@@ -66,6 +74,11 @@ int print_regs_doc() {
       std::printf("| %s | %s | %d:%d | %s | %s |\n", f.reg, f.name, f.lsb + f.width - 1, f.lsb,
                   access_name(f.access), f.doc);
   }
+  std::printf("\nError codes (STATUS.ERROR_CODE): 1 to 12 reject a start (the configuration check,\n");
+  std::printf("in this order of priority; nothing is read or written), 13 to 15 end a frame early.\n");
+  std::printf("The RTL names them `mcadsw_pkg::Err<Name>`.\n\n");
+  std::printf("| code | name | meaning |\n|---|---|---|\n");
+  for (const Error& e : kErrors) std::printf("| %d | %s | %s |\n", e.code, e.name, e.doc);
   return 0;
 }
 

@@ -19,7 +19,7 @@ d=${D:-10}
 
 cd "$root/rtl"
 mods=$("$root/scripts/rtl_files.sh" --no-pkg .)
-iverilog -g2012 -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_engine.sv" 2> "$work/iverilog.log" || {
+iverilog -g2012 -I. -o "$work/tb" mcadsw_pkg.sv $mods "$root/tests/icarus/tb_mcadsw_engine.sv" 2> "$work/iverilog.log" || {
   cat "$work/iverilog.log"; echo "icarus: compile failed" >&2; exit 1; }
 for mode in raw subpixel right_subpixel lr_subpixel right_tiled; do
   run=$work/$mode; mkdir -p "$run"

@@ -158,16 +158,16 @@ module tb_mcadsw_engine;
   logic seen_x = 1'b0;
   always @(negedge clk) begin
     if (rst_n && !seen_x) begin
-      if (dut.u_cost_agg.mon_ev_valid_o && $isunknown(dut.u_cost_agg.mon_ev_o)) begin
+      if (dut.u_cost_agg.ev_valid && dut.u_cost_agg.v2_valid_q && $isunknown(dut.u_cost_agg.ev)) begin
         seen_x = 1'b1;
         $display("DEBUG: X in vertical costs at %0t row %0d d %0d grp %0d: cen_l %0d cen_r %0d wv %0d",
-                 $time, dut.u_cost_agg.mon_ev_row_o, dut.u_cost_agg.mon_ev_d_o, dut.u_cost_agg.mon_ev_grp_o,
+                 $time, dut.u_cost_agg.v2_row_q, dut.u_cost_agg.v2_d_q, dut.u_cost_agg.v2_grp_q,
                  $isunknown(dut.cen_l), $isunknown(dut.cen_r), $isunknown(dut.wv));
       end
-      if (dut.u_cost_agg.mon_fc_valid_o && $isunknown(dut.u_cost_agg.mon_fc_o)) begin
+      if (dut.u_cost_agg.fc_valid && dut.u_cost_agg.h3_valid_q && $isunknown(dut.u_cost_agg.fc)) begin
         seen_x = 1'b1;
         $display("DEBUG: X in final costs at %0t row %0d d %0d grp %0d", $time,
-                 dut.u_cost_agg.mon_fc_row_o, dut.u_cost_agg.mon_fc_d_o, dut.u_cost_agg.mon_fc_grp_o);
+                 dut.u_cost_agg.h3_row_q, dut.u_cost_agg.h3_d_q, dut.u_cost_agg.h3_grp_q);
       end
     end
   end

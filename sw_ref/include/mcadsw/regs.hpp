@@ -1,6 +1,6 @@
 // Register map of the engine's AXI4-Lite slave (issue 19): the single source of
-// truth. rtl/mcadsw_regs_pkg.sv (offsets and field positions for
-// rtl/mcadsw_regs.sv) and docs/registers.md are generated from this file by
+// truth. rtl/mcadsw_pkg.sv (offsets, field positions and error codes for the
+// RTL) and docs/registers.md are generated from this file by
 // build/bin/gen_rtl_pkg (`make rtl-pkg`); tests fail when either is stale. A
 // driver includes this header for the offsets and fields.
 //
@@ -86,11 +86,67 @@ inline constexpr int kDispBitsReg = 8;  // D, whatever DMAX (<= 128); D > DMAX i
 inline constexpr int kLrTBits = 8;
 inline constexpr int kThrBits = kColorDistBits;
 
-// ---- Error codes of a frame ended early (STATUS.ERROR_CODE; 1..12, a start
-// rejected, are the engine's: docs/memory_map.md) ------------------------------------------
+// ---- Error codes (STATUS.ERROR_CODE) ---------------------------------------------------------
+// The single source of the codes: gen_rtl_pkg makes them the RTL package's enum
+// (mcadsw_pkg::err_e, ErrWidth ...) and the table in docs/registers.md; a driver
+// decodes STATUS.ERROR_CODE with error_text(). 1..12: a start rejected by the
+// engine's configuration check (rtl/mcadsw_cfg_check.sv), checked in this order,
+// nothing read or written; 13..15: a frame ended early by mcadsw_top.
+struct Error {
+  int code;
+  const char* name;  // the enum constant's name after "Err" (UpperCamelCase)
+  const char* doc;
+};
+inline constexpr int kErrCodeBits = 4;
 inline constexpr int kErrReadResponse = 13;   // an AXI4 read answered SLVERR or DECERR
 inline constexpr int kErrWriteResponse = 14;  // an AXI4 write answered SLVERR or DECERR
 inline constexpr int kErrAborted = 15;        // CTRL.ABORT written while busy
+inline constexpr Error kErrors[] = {
+    {0, "None", "accepted, and the frame finished"},
+    {1, "Width", "width 0 or above 2048"},
+    {2, "Height", "height 0 or above 2048"},
+    {3, "Disp", "D = 0 or above DMAX (64 by default; a build parameter up to 128)"},
+    {4, "Stride",
+     "input stride below the width, or not a multiple of 4 (raster input planes, or the LR "
+     "mode); tile stride (when not 0) below 4 x height, or not a multiple of 4"},
+    {5, "Align", "a base address not a multiple of 4 (the planes the mode reads and writes)"},
+    {6, "Overlap",
+     "a plane the mode writes overlaps a plane it reads or another plane it writes (the "
+     "disparity plane and, in the LR mode, dL: out_stride x height bytes; input planes, dR and "
+     "the mask: stride x height bytes)"},
+    {7, "OutStride",
+     "output stride below the output row (width bytes; 2 x width in sub-pixel mode), or not a "
+     "multiple of 4"},
+    {8, "Mode", "mode bits 1 (LR) and 2 (right view as base) both set"},
+    {9, "Beyond",
+     "a plane the mode reads or writes reaches beyond the 32-bit address space (base + stride x "
+     "height > 2^32)"},
+    {10, "LrTolerance", "LR mode: T above 63"},
+    {11, "LrWidth", "LR mode: width above 1024 (the post stage's row buffers)"},
+    {12, "LrColour",
+     "LR mode: the right U or V plane not configured: its base equals the other's or that of "
+     "the left Y, U, V or right Y plane (registers left at their reset value or copied)"},
+    {kErrReadResponse, "ReadResponse", "the frame ended: an AXI4 read was answered SLVERR or DECERR"},
+    {kErrWriteResponse, "WriteResponse",
+     "the frame ended: an AXI4 write burst was answered SLVERR or DECERR"},
+    {kErrAborted, "Aborted", "the frame ended: CTRL.ABORT was written while busy"},
+};
+
+// The text of an error code (STATUS.ERROR_CODE), for messages.
+constexpr const char* error_text(int code) {
+  for (const Error& e : kErrors)
+    if (e.code == code) return e.doc;
+  return "unknown error code";
+}
+
+// Codes 0 .. 2^kErrCodeBits - 1 each once, in order.
+constexpr bool errors_valid() {
+  const int n = int(sizeof(kErrors) / sizeof(kErrors[0]));
+  for (int i = 0; i < n; ++i)
+    if (kErrors[i].code != i) return false;
+  return n == (1 << kErrCodeBits);
+}
+static_assert(errors_valid(), "error codes must be 0 .. 15, each once, in order");
 
 inline constexpr Reg kRegs[] = {
     {"ID", kId, Access::kRO, "identification, \"MCAD\""},

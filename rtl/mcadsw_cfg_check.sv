@@ -1,0 +1,140 @@
+// Configuration check of a frame (docs/registers.md, error codes 1-12): the
+// configuration the engine registered at the start, checked in the cycle after it.
+// Combinational: the frame controller samples err_o in its Check state; a non-zero
+// code rejects the start before anything is read or written.
+//
+// Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
+// address space. The planes a mode reads and writes (docs/memory_map.md):
+//   read   base view Y, U, V and match view Y (the left view as base, or the right
+//          with mode bit 2); in the LR mode also the right U and V
+//   write  the first pass's output: the disparity plane, or in the LR mode dL;
+//          in the LR mode also dR, the disparity plane and the mask
+// dL and the disparity plane have the output stride, the others the input stride.
+`default_nettype none
+
+module mcadsw_cfg_check #(
+  parameter int AW   = 32,                            // address bits
+  parameter int CW   = 12,                            // width / height bits
+  parameter int DMAX = mcadsw_pkg::DMAX,              // largest D this build supports
+  parameter int NB   = $clog2(DMAX + 1)               // D bits
+) (
+  // Planes (byte addresses)
+  input  logic [AW-1:0]   base_ly_i,
+  input  logic [AW-1:0]   base_lu_i,
+  input  logic [AW-1:0]   base_lv_i,
+  input  logic [AW-1:0]   base_ry_i,
+  input  logic [AW-1:0]   base_ru_i,
+  input  logic [AW-1:0]   base_rv_i,
+  input  logic [AW-1:0]   base_out_i,
+  input  logic [AW-1:0]   base_dl_i,
+  input  logic [AW-1:0]   base_dr_i,
+  input  logic [AW-1:0]   base_mask_i,
+  input  logic [AW-1:0]   stride_i,          // input planes (raster), dR and the mask
+  input  logic [AW-1:0]   out_stride_i,      // disparity plane and dL
+  input  logic [AW-1:0]   tile_stride_i,     // input planes column-tiled; 0: raster
+  // Mode and frame
+  input  logic            sub_i,             // sub-pixel output
+  input  logic            lr_i,              // LR mode
+  input  logic            right_i,           // right view as base
+  input  logic [7:0]      lr_t_i,
+  input  logic [CW-1:0]   width_i,
+  input  logic [CW-1:0]   height_i,
+  input  logic [NB-1:0]   disp_i,
+  // mcadsw_pkg::ErrNone, or the first failing check's code
+  output logic [mcadsw_pkg::ERR_BITS-1:0] err_o
+);
+
+  localparam int SB = AW + CW;         // plane sizes: stride x height (or x columns), exact
+
+  function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
+                                    input logic [AW-1:0] b, input logic [SB-1:0] b_size);
+    overlaps = (SB'(a) < SB'(b) + b_size) && (SB'(b) < SB'(a) + a_size);
+  endfunction
+  function automatic logic beyond(input logic [AW-1:0] base, input logic [SB-1:0] size);
+    logic [SB:0] end_;
+    end_   = (SB + 1)'(base) + (SB + 1)'(size);
+    beyond = end_ > (SB + 1)'(64'd1 << AW);
+  endfunction
+
+  // The first pass's planes: base view Y, U, V and match view Y.
+  logic [AW-1:0] base_by, base_bu, base_bv, base_my, base_first;
+  assign base_by    = right_i ? base_ry_i : base_ly_i;
+  assign base_bu    = right_i ? base_ru_i : base_lu_i;
+  assign base_bv    = right_i ? base_rv_i : base_lv_i;
+  assign base_my    = right_i ? base_ly_i : base_ry_i;
+  assign base_first = lr_i ? base_dl_i : base_out_i;
+
+  // Planes the frame reads (in) and writes (wr), and which are enabled.
+  localparam int NIN = 6, NWR = 4;
+  logic [NIN*AW-1:0] in_base;
+  logic [NIN-1:0]    in_en;
+  logic [NWR*AW-1:0] wr_base;
+  logic [NWR-1:0]    wr_en, wr_outs;   // wr_outs: the plane has the output stride
+  assign in_base = {base_rv_i, base_ru_i, base_my, base_bv, base_bu, base_by};
+  assign in_en   = {lr_i, lr_i, 4'b1111};
+  assign wr_base = {base_mask_i, base_out_i, base_dr_i, base_first};
+  assign wr_en   = {lr_i, lr_i, lr_i, 1'b1};
+  assign wr_outs = 4'b0101;
+
+  always_comb begin
+    logic [SB-1:0] size, in_size, out_size;
+    logic [CW:0]   out_bytes;          // bytes of an output row
+    logic          misaligned, overlap, past;
+    logic          tiled;
+    logic [CW-1:0] wcols;              // columns of 4 pixels
+    tiled     = tile_stride_i != '0;
+    wcols     = width_i + CW'(3);
+    wcols     = wcols >> 2;
+    size      = SB'(stride_i) * SB'(height_i);
+    // The input planes: raster, stride x height; column-tiled, tile x the
+    // columns of 4 pixels.
+    in_size   = tiled ? SB'(tile_stride_i) * SB'(wcols) : size;
+    out_size  = SB'(out_stride_i) * SB'(height_i);
+    out_bytes = sub_i ? {width_i, 1'b0} : {1'b0, width_i};
+    misaligned = 1'b0;
+    past       = 1'b0;
+    overlap    = 1'b0;
+    for (int i = 0; i < NIN; i++) begin
+      misaligned = misaligned || (in_en[i] && in_base[i*AW +: 2] != 2'b00);
+      past       = past || (in_en[i] && beyond(in_base[i*AW +: AW], in_size));
+    end
+    for (int o = 0; o < NWR; o++) begin
+      misaligned = misaligned || (wr_en[o] && wr_base[o*AW +: 2] != 2'b00);
+      past       = past || (wr_en[o] && beyond(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size));
+      for (int i = 0; i < NIN; i++)
+        overlap = overlap || (wr_en[o] && in_en[i] &&
+                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                       in_base[i*AW +: AW], in_size));
+      for (int p = 0; p < NWR; p++)         // each pair once: p > o
+        overlap = overlap || (p > o && wr_en[o] && wr_en[p] &&
+                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                       wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
+    end
+    err_o = mcadsw_pkg::ErrNone;
+    if (width_i == '0 || 32'(width_i) > mcadsw_pkg::MAX_WIDTH) err_o = mcadsw_pkg::ErrWidth;
+    else if (height_i == '0 || 32'(height_i) > mcadsw_pkg::MAX_HEIGHT) err_o = mcadsw_pkg::ErrHeight;
+    else if (disp_i == '0 || 32'(disp_i) > DMAX) err_o = mcadsw_pkg::ErrDisp;
+    // STRIDE is the input planes' (raster) and, in the LR mode, dR's and the mask's.
+    else if ((!tiled || lr_i) && (stride_i < AW'(width_i) || (stride_i & AW'(3)) != '0))
+      err_o = mcadsw_pkg::ErrStride;
+    else if (tiled && (tile_stride_i < AW'({height_i, 2'b00}) || (tile_stride_i & AW'(3)) != '0))
+      err_o = mcadsw_pkg::ErrStride;
+    else if (misaligned) err_o = mcadsw_pkg::ErrAlign;
+    else if (overlap) err_o = mcadsw_pkg::ErrOverlap;
+    else if (out_stride_i < AW'(out_bytes) || (out_stride_i & AW'(3)) != '0)
+      err_o = mcadsw_pkg::ErrOutStride;
+    else if (lr_i && right_i) err_o = mcadsw_pkg::ErrMode;
+    else if (past) err_o = mcadsw_pkg::ErrBeyond;
+    else if (lr_i && 32'(lr_t_i) > mcadsw_pkg::LR_T_MAX) err_o = mcadsw_pkg::ErrLrTolerance;
+    else if (lr_i && 32'(width_i) > mcadsw_pkg::POST_MAX_WIDTH) err_o = mcadsw_pkg::ErrLrWidth;
+    // Right U and V not configured: the same base as each other or as another
+    // input plane (registers left at their reset value, or copied).
+    else if (lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
+                      base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
+                      base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my))
+      err_o = mcadsw_pkg::ErrLrColour;
+  end
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,224 @@
+// Frame controller of the engine: takes a start, has the registered
+// configuration checked, runs the passes of the frame's mode one after the
+// other, and owns busy, done, the error code and the frame's counters
+// (docs/architecture.md, frame controller; docs/memory_map.md, status).
+//
+//   StIdle ── start ──> StCheck ──(error)──────────────────────────────> StIdle, done + error
+//                          │ ok: the left view as base   the right view as base (mode bit 2)
+//                          v                                   v
+//                     StLeftPass ──(LR mode)──> StRightPass <──┘
+//                          │ (else)               │ (LR mode: post stage next) (else)
+//                          │                      v                             │
+//                          │           StDrain (writes in flight) -> StPost     │
+//                          v                                          v         v
+//                        StDone: every write answered (wr_idle_i) -> StIdle, done
+//
+// A pass starts the block scheduler in its first cycle (sched_start_o) and ends
+// with the scheduler's done. In the LR mode the left map (pass 1, the left view
+// as base, written to dL) is followed by the right map (pass 2, the right view as
+// base, dR); the post stage reads both back, so it starts only once every write
+// of the passes is answered (StDrain). A frame is done once every one of its
+// writes is answered. The pass (pass_second_o, pass_post_o) holds until the next
+// start: the post stage keeps the memory port until then.
+`default_nettype none
+`include "mcadsw_assert.svh"
+
+module mcadsw_frame_ctrl (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+  // Host
+  input  logic        start_i,              // ignored while busy_o
+  // Configuration registered at the start (accept_o) and its check
+  input  logic        cfg_lr_i,             // LR mode: left map, right map, post stage
+  input  logic        cfg_right_i,          // the right view as base
+  input  logic [mcadsw_pkg::ERR_BITS-1:0] err_i,   // valid in StCheck
+  output logic        accept_o,             // register the configuration now
+  // Passes and post stage
+  output logic        sched_start_o,        // a pass starts (one cycle)
+  input  logic        sched_busy_i,
+  input  logic        sched_done_i,         // the pass's last block row is out (one cycle)
+  output logic        to_second_o,          // the LR mode's second pass begins with the next cycle
+  output logic        pass_second_o,        // the LR mode's second pass (right map), or later
+  output logic        pass_post_o,          // the LR mode's post stage owns the memory port
+  output logic        post_start_o,         // one cycle
+  input  logic        post_done_i,          // one cycle
+  // No write requested, buffered or unanswered in the memory system
+  input  logic        wr_idle_i,
+  // The engine's memory port, for the counters
+  input  logic        mem_req_i,
+  input  logic        mem_gnt_i,
+  input  logic        mem_we_i,
+  input  logic [3:0]  mem_len_i,            // read burst: beats - 1
+  // Status
+  output logic        busy_o,
+  output logic        done_o,               // frame finished or rejected since the start
+  output logic        error_o,              // configuration rejected; nothing was written
+  output logic [mcadsw_pkg::ERR_BITS-1:0] error_code_o,
+  output logic [31:0] cnt_cycles_o,
+  output logic [31:0] cnt_words_read_o,
+  output logic [31:0] cnt_words_written_o,
+  output logic [31:0] cnt_stall_o           // cycles with a request and no grant
+);
+
+  typedef enum logic [2:0] {
+    StIdle, StCheck, StLeftPass, StRightPass, StDrain, StPost, StDone
+  } state_e;
+  // The pass whose planes the engine uses (held after the frame until the next start).
+  typedef enum logic [1:0] { PassFirst, PassSecond, PassPost } pass_e;
+
+  state_e state_q, state_d;
+  pass_e  pass_q, pass_d;
+  logic   done_q, done_d, error_q, error_d;
+  logic [mcadsw_pkg::ERR_BITS-1:0] code_q, code_d;
+  logic   sched_start_q, post_start_q;
+
+  assign accept_o = state_q == StIdle && start_i;
+
+  // The frame's end: done once every write is answered. (Icarus 11 wants an
+  // explicit cast for an enum from ?:, hence the if / else here and below.)
+  function automatic state_e frame_end(input logic idle);
+    if (idle) frame_end = StIdle;
+    else frame_end = StDone;
+  endfunction
+
+  always_comb begin
+    state_d = state_q;
+    pass_d  = pass_q;
+    done_d  = done_q;
+    error_d = error_q;
+    code_d  = code_q;
+    case (state_q)
+      StIdle: if (start_i) begin
+        state_d = StCheck;
+        pass_d  = PassFirst;
+        done_d  = 1'b0;
+        error_d = 1'b0;
+        code_d  = mcadsw_pkg::ErrNone;
+      end
+      StCheck: begin
+        code_d = err_i;
+        if (err_i != mcadsw_pkg::ErrNone) begin
+          state_d = StIdle;
+          done_d  = 1'b1;
+          error_d = 1'b1;
+        end else begin
+          if (cfg_right_i) state_d = StRightPass;
+          else state_d = StLeftPass;
+        end
+      end
+      StLeftPass: if (sched_done_i) begin
+        if (cfg_lr_i) begin
+          state_d = StRightPass;
+          pass_d  = PassSecond;
+        end else begin
+          state_d = frame_end(wr_idle_i);
+        end
+      end
+      StRightPass: if (sched_done_i) begin
+        if (cfg_lr_i) begin
+          if (wr_idle_i) state_d = StPost;
+          else state_d = StDrain;
+          pass_d  = PassPost;
+        end else begin
+          state_d = frame_end(wr_idle_i);
+        end
+      end
+      StDrain: if (wr_idle_i) state_d = StPost;
+      StPost: if (post_done_i) state_d = frame_end(wr_idle_i);
+      StDone: if (wr_idle_i) state_d = StIdle;
+      default: state_d = StIdle;
+    endcase
+    if (state_q != StIdle && state_q != StCheck && state_d == StIdle) done_d = 1'b1;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q       <= StIdle;
+      pass_q        <= PassFirst;
+      done_q        <= 1'b0;
+      error_q       <= 1'b0;
+      code_q        <= mcadsw_pkg::ErrNone;
+      sched_start_q <= 1'b0;
+      post_start_q  <= 1'b0;
+    end else begin
+      state_q       <= state_d;
+      pass_q        <= pass_d;
+      done_q        <= done_d;
+      error_q       <= error_d;
+      code_q        <= code_d;
+      sched_start_q <= (state_d == StLeftPass || state_d == StRightPass) && state_d != state_q;
+      post_start_q  <= state_d == StPost && state_q != StPost;
+    end
+  end
+
+  assign sched_start_o = sched_start_q;
+  assign post_start_o  = post_start_q;
+  assign to_second_o   = pass_d == PassSecond && pass_q != PassSecond;
+  assign pass_second_o = pass_q == PassSecond;
+  assign pass_post_o   = pass_q == PassPost;
+  assign busy_o        = state_q != StIdle;
+  assign done_o        = done_q;
+  assign error_o       = error_q;
+  assign error_code_o  = code_q;
+
+  // ---- Counters: from the start; cycles while the scheduler runs, in the LR
+  // mode from its first pass to the post stage's end, and while the last writes
+  // are answered.
+  logic count;
+  assign count = sched_busy_i || state_q == StDone ||
+                 (cfg_lr_i && state_q != StIdle && state_q != StCheck);
+  logic [31:0] cycles_d, rd_d, wr_d, stall_d;
+  always_comb begin
+    cycles_d = cnt_cycles_o;
+    rd_d     = cnt_words_read_o;
+    wr_d     = cnt_words_written_o;
+    stall_d  = cnt_stall_o;
+    if (accept_o) begin
+      cycles_d = '0;
+      rd_d     = '0;
+      wr_d     = '0;
+      stall_d  = '0;
+    end else if (count) begin
+      cycles_d = cnt_cycles_o + 32'd1;
+      // A granted read is a burst of mem_len_i + 1 words.
+      if (mem_req_i && mem_gnt_i && !mem_we_i) rd_d = cnt_words_read_o + 32'(mem_len_i) + 32'd1;
+      wr_d    = cnt_words_written_o + 32'(mem_req_i && mem_gnt_i && mem_we_i);
+      stall_d = cnt_stall_o + 32'(mem_req_i && !mem_gnt_i);
+    end
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      cnt_cycles_o        <= '0;
+      cnt_words_read_o    <= '0;
+      cnt_words_written_o <= '0;
+      cnt_stall_o         <= '0;
+    end else begin
+      cnt_cycles_o        <= cycles_d;
+      cnt_words_read_o    <= rd_d;
+      cnt_words_written_o <= wr_d;
+      cnt_stall_o         <= stall_d;
+    end
+  end
+
+  // ---- What the controller expects of the engine, and what it keeps ----------------------
+  // The scheduler runs and finishes only in a pass, the post stage only in StPost.
+  `MCADSW_ASSUME(SchedOnlyInAPass, !(sched_busy_i || sched_done_i) ||
+                                   state_q == StLeftPass || state_q == StRightPass)
+  `MCADSW_ASSUME(PostDoneOnlyInPost, !post_done_i || state_q == StPost)
+  // Done and a rejected start are reported only between frames, with a code
+  // exactly when there is an error.
+  `MCADSW_ASSERT(DoneOnlyWhenIdle, !done_o || !busy_o)
+  `MCADSW_ASSERT(ErrorOnlyWithDone, !error_o || done_o)
+  `MCADSW_ASSERT(CodeIffError, error_o == (error_code_o != mcadsw_pkg::ErrNone))
+  // The scheduler starts in the first cycle of a pass; the post stage in its own state.
+  `MCADSW_ASSERT(SchedStartInAPass, !sched_start_o || state_q == StLeftPass ||
+                                    state_q == StRightPass)
+  `MCADSW_ASSERT(PostStartInPost, !post_start_o || (state_q == StPost && pass_post_o))
+  // The LR mode alone has a second pass and a post stage.
+  `MCADSW_ASSERT(SecondPassOnlyInLr, !(pass_second_o || pass_post_o) || cfg_lr_i || !busy_o)
+  // The counters run only within a frame.
+  `MCADSW_ASSERT(CountOnlyWhenBusy, !count || busy_o)
+
+endmodule
+
+`default_nettype wire
