@@ -35,7 +35,7 @@ FNR == NR {
   name = h "/" o
   for (i = 1; i <= nl; i++)
     if (name ~ pat[i] && bit_in(bits[i], b)) { used[i]++; by[kind[i]]++; pts[i] = pts[i] " " name "[" b "]"; break }
-  if (i > nl) { unlisted++; if (unlisted <= 40) printf "  unlisted: %s[%s]\n", name, b }
+  if (i > nl) { unlisted++; if (unlisted <= 40 || ENVIRON["ALL"] != "") printf "  unlisted: %s[%s]\n", name, b }
 }
 END {
   if (verbose)
