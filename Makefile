@@ -11,15 +11,17 @@
 #                make sim and make sim-random with DMAX= or PAR= use that build
 #   make ref-sim the reference model alone: Middlebury error table
 #   make synth   Yosys -> OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
-#                (build/synth/report.md; DMAX=16 for the reduced configuration; DMAX=128 PAR=4
-#                another configuration in build/synth_dmax<n>[_par<p>])
+#                (flow/synth.py and the Yosys/OpenSTA scripts in flow/; build/synth/report.md;
+#                DMAX=16 for the reduced configuration; DMAX=128 PAR=4 another configuration in
+#                build/synth_dmax<n>[_par<p>]; SYNTH_JOBS=2 Yosys processes at a time whose
+#                expected peaks stay within SYNTH_MEM_MB=7500)
 #   make synth-check  make synth, then gates, slack and memory against constraints/budget.json (CI)
 #   make fpga    FPGA estimate: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_top,
-#                whether it fits an XC7Z020 and an XC7A100T (build/fpga/summary.json)
+#                whether it fits an XC7Z020 and an XC7A100T (build/fpga/summary.json; flow/synth.py fpga)
 #   make gls     gate-level simulation of the synthesised netlist against the RTL
 #                (FRAME=1 also a whole Tsukuba frame against the reference)
 #   make coverage  Verilator line and toggle coverage of the RTL under the regression stimulus
-#                (build-cov/coverage/summary.txt; N=<random cases>, default 40); fails below
+#                (build/cov/coverage/summary.txt; N=<random cases>, default 40); fails below
 #                90 % toggle or on an untoggled point tests/coverage/untoggled.txt does not list
 #   make formal  bounded proofs (Yosys SAT) of the memory controller, AXI4 master, depth FIFO
 #                and ping-pong ownership properties in formal/ (build/formal/summary.json); SELFTEST=1: each against a
@@ -29,16 +31,18 @@
 #                be listed in tests/mutate/survivors.txt (build/mutate/summary.json;
 #                SAMPLE=20 a seeded sample of them, as CI runs; scripts/mutate.sh)
 #   make lint    verilator --lint-only -Wall on every RTL module
-#   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp
+#   make rtl-pkg regenerate rtl/mcadsw_pkg.sv from params.hpp (build/bin/gen_rtl_pkg --dmax <n>
+#                --par <p> writes another configuration's package, and is the one check of DMAX/PAR)
 #   make bench   Google Benchmark of the reference and OpenCV's matchers (MDE/s)
 #   make report  build/report/report.md: Middlebury errors and figures next to the paper and
 #                OpenCV SGBM/BM, software and simulation speed, hardware figures
 #   make sweep   weight-table gamma sweep on the Middlebury pairs (docs/algorithm.md)
+#   make clean   remove build/ (every build tree, synthesis and report of these targets)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage synth synth-check gls fpga formal mutate lint rtl-pkg bench report sweep clean
+.PHONY: all bootstrap configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls fpga formal mutate lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -77,9 +81,9 @@ SEED ?= 1
 sim-random: $(CFG_DEP)
 	@$(CFG_DIR)/bin/mcadsw_sim_random --cases $(N) --seed $(SEED)
 
-# make coverage [N=40]: instrumented model in build-cov (scripts/coverage.sh)
+# make coverage [N=40]: instrumented model in build/cov (scripts/coverage.sh)
 coverage: bootstrap
-	@N=$(if $(filter command line,$(origin N)),$(N),40) scripts/coverage.sh $(abspath build-cov)
+	@N=$(if $(filter command line,$(origin N)),$(N),40) scripts/coverage.sh $(abspath $(BUILD_DIR)/cov)
 
 # make wave CASE=<name>: open the waves of `make sim CASE=<name> WAVES=1`
 wave:
@@ -93,21 +97,34 @@ ref-sim: build
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s middlebury -o $(BUILD_DIR)/ref
 	@scripts/eval_pairs.sh -b $(BUILD_DIR) -s cif -o $(BUILD_DIR)/ref
 
-# make synth [DMAX=<n>] [PAR=<p>]: gate count, memory inventory and timing (scripts/synth.sh;
-# block by block and incremental)
-synth: bootstrap
-	@DMAX=$(DMAX) PAR=$(PAR) scripts/synth.sh
+# The package generator of the default build: writes the RTL package of a
+# configuration and is the one check of DMAX and PAR (make synth, synth-check, fpga).
+GEN_RTL_PKG := $(abspath $(BUILD_DIR))/bin/gen_rtl_pkg
+gen-rtl-pkg: configure
+	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
 
-# make synth-check: make synth (DMAX=64), then constraints/budget.json (scripts/synth_check.sh)
-synth-check: bootstrap
-	@scripts/synth_check.sh
+# make synth [DMAX=<n>] [PAR=<p>] [SYNTH_JOBS=2] [SYNTH_MEM_MB=7500]: gate count, memory
+# inventory and timing (flow/synth.py; block by block and incremental)
+SYNTH_JOBS   ?= 2
+SYNTH_MEM_MB ?= 7500
+SYNTH_ARGS = $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --jobs $(SYNTH_JOBS) \
+  --mem-mb $(SYNTH_MEM_MB) --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
+synth: gen-rtl-pkg
+	@python3 flow/synth.py synth $(SYNTH_ARGS)
 
-# make fpga [DMAX=<n>] [PAR=<p>]: Yosys synth_xilinx estimate, build/fpga/summary.json (scripts/fpga.sh)
-fpga: bootstrap
-	@DMAX=$(DMAX) PAR=$(PAR) scripts/fpga.sh
+# make synth-check: make synth (DMAX=64), then constraints/budget.json (flow/synth.py check)
+synth-check: gen-rtl-pkg
+	@python3 flow/synth.py check $(SYNTH_ARGS)
+
+# make fpga [DMAX=<n>] [PAR=<p>] [TOP=<module>]: Yosys synth_xilinx estimate, build/fpga/summary.json
+# (flow/synth.py fpga, flow/fpga.tcl; TOP=mcadsw_regs a quick check of the flow, in build/fpga_<module>)
+fpga: gen-rtl-pkg
+	@python3 flow/synth.py fpga $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) \
+	  $(if $(TOP),--top $(TOP) --out $(abspath $(BUILD_DIR))/fpga_$(TOP)) \
+	  --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
 
 # make gls [DMAX=64]: the netlist in the Verilator harness (scripts/gls.sh)
-gls: bootstrap
+gls: gen-rtl-pkg
 	@DMAX=$(DMAX) FRAME=$(FRAME) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
 lint: bootstrap

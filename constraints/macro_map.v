@@ -2,7 +2,7 @@
 // a MCADSW_RAM black-box macro (sim/gls/mcadsw_ram_model.v, read with
 // `read_verilog -lib`: its ports only). Synchronous resets,
 // initial values and transparency of read ports are not supported by the
-// macro; synth.sh checks that no memory uses them.
+// macro; flow/synth.py checks that no memory uses them.
 (* techmap_celltype = "$mem_v2" *)
 module _mcadsw_mem_v2_to_macro (RD_CLK, RD_EN, RD_ARST, RD_SRST, RD_ADDR, RD_DATA,
                                 WR_CLK, WR_EN, WR_ADDR, WR_DATA);

@@ -10,6 +10,7 @@ PACKAGES=(
   cmake              # build system (source of truth)
   ninja-build        # CMake generator
   pkg-config
+  python3            # the synthesis and FPGA flow driver (flow/synth.py, standard library only)
   libopencv-dev      # image I/O, YUV conversion, colormaps, StereoSGBM baselines
   libgtest-dev       # GoogleTest
   googletest

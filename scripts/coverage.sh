@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make coverage: Verilator line and toggle coverage of the engine RTL under the
 # regression stimulus. Builds a coverage-instrumented model in BUILD_DIR
-# (default build-cov; -DMCADSW_COVERAGE=ON), runs the engine tests (faults, invalid
+# (default build/cov; -DMCADSW_COVERAGE=ON), runs the engine tests (faults, invalid
 # configurations, small pairs), the random differential regression (N cases,
 # default 40, seed 2026) and two bundled pairs through the harness,
 # merges the per-run files and reports line and toggle coverage per module.
@@ -14,7 +14,7 @@
 # with per-line counts), summary.txt.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$root/build-cov}
+build=${1:-$root/build/cov}
 n=${N:-40}
 out=$build/coverage
 command -v verilator_coverage >/dev/null || { echo "coverage: verilator_coverage not found" >&2; exit 2; }

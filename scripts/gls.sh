@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # make gls: gate-level simulation. The OSU 0.18 um netlist written by
-# scripts/synth.sh runs in the same Verilator harness as the RTL (models of the
+# `make synth` (flow/synth.py) runs in the same Verilator harness as the RTL (models of the
 # cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)
 # on small crops of Teddy, in the raw mode, in the LR mode and with the right view as base and
 # sub-pixel output; every disparity is compared with the reference (the
 # harness's scoreboard) and the disparity map with the RTL's, byte for byte.
 #
 #   scripts/gls.sh            the netlist of `make synth` (DMAX = 64, build/synth)
-#   DMAX=16 scripts/gls.sh    a reduced configuration (build/synth_dmax16)
+#   DMAX=16 scripts/gls.sh    a reduced configuration (build/synth_dmax16; the harness is
+#                             built for the same DMAX, as the netlist's package is)
 #   FRAME=1 scripts/gls.sh    also a whole Middlebury frame (Tsukuba 384x288, D = 16,
 #                             632k cycles: about 4 min at 3 kcycles/s) against the reference
-# The netlist is synthesised first if it is missing.
+# The netlist is synthesised first if it is missing (with BUILD_DIR/bin/gen_rtl_pkg,
+# which make gls builds).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dmax=${DMAX:-64}
@@ -25,7 +27,7 @@ mkdir -p "$out"
 
 if [ ! -f "$netlist" ]; then
   echo "gls: no netlist at $netlist, synthesising it (DMAX=$dmax)"
-  DMAX=$dmax OUT=$synth_dir "$root/scripts/synth.sh"
+  python3 "$root/flow/synth.py" synth --dmax "$dmax" --out "$synth_dir" --build "$build"
 fi
 # The cell models cover the combinational cells and flip-flops only.
 if grep -Eq '^\s*(TBUFX1|TBUFX2|LATCH) ' "$netlist"; then
@@ -36,7 +38,7 @@ fi
 echo "gls: building the gate-level model (Verilator, $gls_build)"
 # -O1: the generated model of a netlist of ~400k cells takes far longer to
 # compile at -O3 than it runs on a small crop.
-cmake -S "$root" -B "$gls_build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+cmake -S "$root" -B "$gls_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$dmax" \
       -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_GLS_NETLIST="$netlist" > /dev/null
 start=$(date +%s)
 cmake --build "$gls_build" --target mcadsw_sim_gls mcadsw_sim > "$out/build.log" 2>&1 || {

@@ -21,6 +21,8 @@ data=$root/data
 
 # One numeric field of a flat JSON object.
 jget() { grep -o "\"$1\": *[-0-9.e+]*" "$2" | head -1 | sed 's/.*: *//'; }
+# One top-level field of the synthesis summary (flow/synth.py), read as JSON; empty when absent.
+sget() { python3 -c 'import json, sys; v = json.load(open(sys.argv[2])).get(sys.argv[1]); print("" if v is None else v)' "$1" "$2"; }
 
 echo "report: Middlebury pairs, reference and OpenCV matchers"
 "$bin/mcadsw_report" "$data" "$out" > "$out/quality.md"
@@ -111,17 +113,17 @@ synth=$build/synth/summary.json
   echo "| external reads per base-image pixel (32-bit words) | $reads_px | 5.17 (Sec. IV, left view only) |"
   echo "| external traffic at 30 CIF frames/s (reads + writes) | $mbs30 MB/s | |"
   if [ -f "$synth" ]; then
-    echo "| gates (NAND2 eq, memories excluded; DMAX $(jget dmax "$synth")) | $(jget nand2_eq "$synth") | 562 642 (Table III, UMC 90 nm) |"
-    eng_kb=$(jget memory_kB_engine "$synth")
+    echo "| gates (NAND2 eq, memories excluded; DMAX $(sget dmax "$synth")) | $(sget nand2_eq "$synth") | 562 642 (Table III, UMC 90 nm) |"
+    eng_kb=$(sget memory_kB_engine "$synth")
     if [ -n "$eng_kb" ]; then
       echo "| on-chip memory of the engine | $eng_kb kB | 21.3 kB |"
-      echo "| LR post stage (beyond the paper): gates, memory | $(jget post_stage_nand2_eq "$synth") NAND2 eq, $(jget post_stage_memory_kB "$synth") kB | |"
+      echo "| LR post stage (beyond the paper): gates, memory | $(sget post_stage_nand2_eq "$synth") NAND2 eq, $(sget post_stage_memory_kB "$synth") kB | |"
     else
-      echo "| on-chip memory | $(jget memory_kB "$synth") kB | 21.3 kB |"
+      echo "| on-chip memory | $(sget memory_kB "$synth") kB | 21.3 kB |"
     fi
-    slack=$(jget worst_slack_ns "$synth"); slack=${slack:-$(jget wns_ns "$synth")}  # older summaries: WNS only
+    slack=$(sget worst_slack_ns "$synth"); slack=${slack:-$(sget wns_ns "$synth")}  # older summaries: WNS only
     echo "| worst slack at 95 MHz (OSU 0.18 um) | $slack ns | |"
-    echo "| achievable clock | $(jget fmax_mhz "$synth") MHz | 95 MHz (90 nm) |"
+    echo "| achievable clock | $(sget fmax_mhz "$synth") MHz | 95 MHz (90 nm) |"
     echo
     echo "Synthesis figures from \`$synth\`, written by \`make synth\` on $(date -u -r "$synth" +%Y-%m-%d) (not rerun by \`make report\`)."
   else

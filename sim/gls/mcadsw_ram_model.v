@@ -1,9 +1,9 @@
-// The on-chip memory macro MCADSW_RAM. Synthesis (scripts/synth.sh) reads this
+// The on-chip memory macro MCADSW_RAM. Synthesis (flow/synth.py) reads this
 // file with `read_verilog -lib`, i.e. as a black box with these ports, and maps
 // every inferred memory onto it (constraints/macro_map.v), so memories stay out
 // of the gate count. Gate-level simulation uses the body, a behavioural model
 // with the semantics of Yosys' $mem_v2 for the features the engine's memories
-// use (scripts/synth.sh checks that no memory uses more): rising-edge write
+// use (flow/synth.py checks that no memory uses more): rising-edge write
 // ports with per-bit enables; read ports either asynchronous or clocked with an
 // enable and an asynchronous reset to RD_ARST_VALUE; a clocked read returns the
 // data from before a write in the same cycle.
