@@ -160,40 +160,42 @@ module mcadsw_engine #(
   // Registered when a pass is set up (at the start, from the configuration ports;
   // when the LR mode's second pass begins, from the registered configuration), so
   // the readers' address and clamp arithmetic starts from flip-flops.
-  localparam int PV = 5 * AW + CW + 2 + 3;
-  function automatic logic [PV-1:0] pass_view(
-      input logic [AW-1:0] ly, input logic [AW-1:0] lu, input logic [AW-1:0] lv,
-      input logic [AW-1:0] ry, input logic [AW-1:0] ru, input logic [AW-1:0] rv,
-      input logic [AW-1:0] out, input logic [AW-1:0] dl, input logic [AW-1:0] dr,
-      input logic [CW-1:0] width, input logic [2:0] mode, input logic second);
-    logic r, lr, sub;
-    logic [CW-1:0] w4;
-    r   = mode[2] || second;
-    lr  = mode[1];
-    sub = mode[0] && !second;
-    w4  = (width + CW'(3)) & ~(CW'(3));
-    pass_view = {r ? ry : ly, r ? ru : lu, r ? rv : lv, r ? ly : ry,
-                 second ? dr : lr ? dl : out,
-                 r ? w4 : width, r ? 2'(CW'(0) - width) : 2'd0,
-                 r, sub, lr && sub};
-  endfunction
+  // The view of the pass being set up: at the start from the configuration ports,
+  // for the LR mode's second pass from the registered configuration.
   logic          to_second;              // the LR mode's second pass begins with the next cycle
+  logic [AW-1:0] v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr;
+  logic [CW-1:0] v_width, v_w4;
+  logic          v_right, v_lr, v_sub, v_second;
+  assign v_second = !accept;
+  assign {v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr, v_width} = accept ?
+      {cfg_base_ly_i, cfg_base_lu_i, cfg_base_lv_i, cfg_base_ry_i, cfg_base_ru_i, cfg_base_rv_i,
+       cfg_base_out_i, cfg_base_dl_i, cfg_base_dr_i, cfg_width_i} :
+      {cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q, cfg_out_q, cfg_dl_q, cfg_dr_q,
+       width_q};
+  assign v_right = accept ? cfg_mode_i[2] : 1'b1;
+  assign v_lr    = accept ? cfg_mode_i[1] : lr_q;
+  assign v_sub   = accept && cfg_mode_i[0];
+  assign v_w4    = (v_width + CW'(3)) & ~(CW'(3));
+
   logic          right, wide, pack;      // right view as base; 16-bit output; LR scratch format
   logic [AW-1:0] base_by, base_bu, base_bv, base_my, base_out;
   logic [CW-1:0] xend;
   logic [1:0]    xlo;
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni)
+    if (!rst_ni) begin
       {base_by, base_bu, base_bv, base_my, base_out, xend, xlo, right, wide, pack} <= '0;
-    else if (accept)
-      {base_by, base_bu, base_bv, base_my, base_out, xend, xlo, right, wide, pack} <=
-        pass_view(cfg_base_ly_i, cfg_base_lu_i, cfg_base_lv_i, cfg_base_ry_i, cfg_base_ru_i,
-                  cfg_base_rv_i, cfg_base_out_i, cfg_base_dl_i, cfg_base_dr_i, cfg_width_i,
-                  cfg_mode_i, 1'b0);
-    else if (to_second)
-      {base_by, base_bu, base_bv, base_my, base_out, xend, xlo, right, wide, pack} <=
-        pass_view(cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q, cfg_out_q,
-                  cfg_dl_q, cfg_dr_q, width_q, {cfg_right_q, lr_q, cfg_sub_q}, 1'b1);
+    end else if (accept || to_second) begin
+      base_by  <= v_right ? v_ry : v_ly;
+      base_bu  <= v_right ? v_ru : v_lu;
+      base_bv  <= v_right ? v_rv : v_lv;
+      base_my  <= v_right ? v_ly : v_ry;
+      base_out <= v_second ? v_dr : v_lr ? v_dl : v_out;
+      xend     <= v_right ? v_w4 : v_width;
+      xlo      <= v_right ? 2'(CW'(0) - v_width) : 2'd0;
+      right    <= v_right;
+      wide     <= v_sub;
+      pack     <= v_lr && v_sub;
+    end
   end
 
   // ---- Block scheduler -----------------------------------------------------------------
