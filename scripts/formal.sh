@@ -57,10 +57,18 @@ for c in "${checks[@]}"; do
   secs=$(( $(date +%s) - t0 ))
   checks_n=$(grep -c "Import proof for assert" "$out/$name.log" || true)
   echo "formal: $name: $res for every trace of $depth cycles from reset ($checks_n assertion checks, assertions x cycles; $secs s; log $out/$name.log)"
-  rows+=("{\"check\": \"$name\", \"result\": \"$res\", \"bmc_depth\": $depth, \"assertion_checks\": $checks_n, \"seconds\": $secs}")
+  rows+=("$name	$res	$depth	$checks_n	$secs")
 done
 if [ "$mode" != --selftest ]; then
-  { echo "["; (IFS=,; printf '%s\n' "${rows[*]}"); echo "]"; } > "$out/summary.json"
+  printf '%s\n' "${rows[@]}" | python3 -c '
+import json, sys
+keys = ("check", "result", "bmc_depth", "assertion_checks", "seconds")
+rows = [dict(zip(keys, line.rstrip("\n").split("\t"))) for line in sys.stdin if line.strip()]
+for r in rows:
+    for k in keys[2:]:
+        r[k] = int(r[k])
+json.dump(rows, sys.stdout, indent=2)
+print()' > "$out/summary.json"
   echo "formal: summary $out/summary.json"
 fi
 exit $status
