@@ -5,6 +5,8 @@
 #include <random>
 #include <vector>
 
+#include "mcadsw/win_geom.hpp"  // floor_div4
+
 namespace mcadsw::sim {
 
 template <typename V>
@@ -51,7 +53,6 @@ StreamResult stream_words(V& t, const std::vector<uint32_t>& words, double stall
 // windows hold are already in the block's input buffer.
 inline int first_strip(int xin, bool cont, int strips, int block = 18) {
   if (!cont) return 0;
-  auto floor_div4 = [](int v) { return v >= 0 ? v / 4 : -((-v + 3) / 4); };
   return strips - (floor_div4(xin) - floor_div4(xin - block));
 }
 
