@@ -519,7 +519,8 @@ def sta_netlist(flat_v, out, cfg_path):
 GROUPS = {"mcadsw_weight_gen": "weight_generator", "mcadsw_cost_agg": "cost_aggregator_wta",
           "mcadsw_mem_ctrl": "memory_controller", "mcadsw_win_reader": "memory_controller",
           "mcadsw_scheduler": "block_scheduler", "mcadsw_depth_fifo": "depth_fifo",
-          "mcadsw_post": "post_stage", "mcadsw_engine": "top_registers_counters",
+          "mcadsw_post": "post_stage", "mcadsw_post_check": "post_stage",
+          "mcadsw_post_fill": "post_stage", "mcadsw_fifo": "post_stage", "mcadsw_engine": "top_registers_counters",
           "mcadsw_cfg_check": "top_registers_counters", "mcadsw_frame_ctrl": "top_registers_counters",
           "mcadsw_win_geom": "top_registers_counters"}
 GROUP_NAMES = {

@@ -29,7 +29,7 @@ module frame_ctrl_props (
   logic [31:0] cycles, rd, wr, stall;
 
   mcadsw_frame_ctrl dut (
-    .clk_i, .rst_ni, .start_i, .cfg_lr_i, .cfg_right_i, .err_i, .accept_o (accept),
+    .clk_i, .rst_ni, .start_i, .cfg_lr_i, .cfg_right_i, .err_i, .ok_i (err_i == 4'd0), .accept_o (accept),
     .sched_start_o (sched_start), .sched_busy_i, .sched_done_i, .to_second_o (to_second),
     .pass_second_o (pass_second),
     .pass_post_o (pass_post), .post_start_o (post_start), .post_done_i, .wr_idle_i,

@@ -11,11 +11,14 @@ mcadsw_cfg_check.sv
 mcadsw_cost_agg.sv
 mcadsw_depth_fifo.sv
 mcadsw_engine.sv
+mcadsw_fifo.sv
 mcadsw_frame_ctrl.sv
 mcadsw_horz_agg.sv
 mcadsw_mem_ctrl.sv
 mcadsw_pingpong.sv
 mcadsw_post.sv
+mcadsw_post_check.sv
+mcadsw_post_fill.sv
 mcadsw_regs.sv
 mcadsw_scheduler.sv
 mcadsw_strip_stage.sv

@@ -14,10 +14,15 @@
 // Line coverage (make coverage) leaves these blocks out: they are not design.
 // The names say what holds; Icarus 11 takes no labels on immediate assertions,
 // so the name travels in the message.
+//
+// MCADSW_CHECKS is defined where the assertions are live (simulation, formal):
+// bookkeeping a check needs (a counter of beats, a copy of last cycle's input)
+// goes inside `ifdef MCADSW_CHECKS, so synthesis never sees it.
 `ifndef MCADSW_ASSERT_SVH
 `define MCADSW_ASSERT_SVH
 
 `ifdef FORMAL
+  `define MCADSW_CHECKS
   `define MCADSW_ASSERT(__name, __prop) \
     always @(posedge clk_i or negedge rst_ni) if (rst_ni) assert (__prop);
   `define MCADSW_ASSUME(__name, __prop) \
@@ -26,6 +31,7 @@
   `define MCADSW_ASSERT(__name, __prop)
   `define MCADSW_ASSUME(__name, __prop)
 `else
+  `define MCADSW_CHECKS
   `define MCADSW_ASSERT(__name, __prop) \
     /* verilator coverage_off */ \
     always @(posedge clk_i or negedge rst_ni) if (rst_ni) assert (__prop) else $error("%m: %s", `"__name`"); \

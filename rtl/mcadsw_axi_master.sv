@@ -21,6 +21,7 @@
 // Responses: RRESP / BRESP SLVERR or DECERR (bit 1 set) pulse rd_err_o /
 // wr_err_o.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_axi_master #(
   parameter int AW    = 32,
@@ -243,8 +244,7 @@ module mcadsw_axi_master #(
   logic unused;
   assign unused = m_rlast_i ^ m_rresp_i[0] ^ m_bresp_i[0];
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
+`ifdef MCADSW_CHECKS
   // verilator coverage_off
   // The lengths of the read bursts in flight, for the RLAST check.
   logic [ROUTS*4-1:0] rlen_q;
@@ -273,21 +273,14 @@ module mcadsw_axi_master #(
       if (m_rvalid_i) rbeat_q <= m_rlast_i ? '0 : rbeat_q + 4'd1;
     end
   end
-  // Invariants, checked in simulation (the AXI memory model of the harness
-  // checks the bus itself).
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(m_rvalid_i && rd_out_q == '0))
-        else $error("axi_master: R beat with no read in flight");
-      assert (!(m_rvalid_i && m_rlast_i != (rbeat_q == rlen_q[3:0])))
-        else $error("axi_master: RLAST not on the last beat of a read burst");
-      assert (!(m_bvalid_i && b_out_q == '0))
-        else $error("axi_master: B response with no write burst in flight");
-      assert (!(wr_take && rd_take)) else $error("axi_master: read and write granted together");
-    end
-  end
   // verilator coverage_on
 `endif
+  // What the slave must keep (the AXI memory model of the harness checks the bus
+  // itself), and the master's own invariant.
+  `MCADSW_ASSUME(ReadBeatInFlight, !(m_rvalid_i && rd_out_q == '0))
+  `MCADSW_ASSUME(RlastOnLastBeat, !(m_rvalid_i && m_rlast_i != (rbeat_q == rlen_q[3:0])))
+  `MCADSW_ASSUME(WriteResponseInFlight, !(m_bvalid_i && b_out_q == '0))
+  `MCADSW_ASSERT(OneGrantReadOrWrite, !(wr_take && rd_take))
 
 endmodule
 

@@ -51,6 +51,7 @@
 // a block by the bank the scheduler gave it (rd_bank_i, two blocks in flight): the
 // ring position of each bank's window is kept.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_census #(
   parameter int COLS   = mcadsw_pkg::BLOCK_COLS,   // census positions per row
@@ -390,19 +391,9 @@ module mcadsw_census #(
     assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
   end
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
-  // verilator coverage_off
   // The kernel never reads a ring strip the stream has overwritten: the
   // strips it needs, lk/4 .. (lk+4)/4, are the last LS written at most.
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(issue && need_luma && 32'(lk[KB-1:2]) + LS < 32'(wcnt_q)))
-        else $error("census: column %0d needs a luma strip the ring no longer holds", ki_q);
-    end
-  end
-  // verilator coverage_on
-`endif
+  `MCADSW_ASSERT(LumaStripStillInRing, !(issue && need_luma && 32'(lk[KB-1:2]) + LS < 32'(wcnt_q)))
 
 endmodule
 

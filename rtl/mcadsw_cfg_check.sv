@@ -41,10 +41,20 @@ module mcadsw_cfg_check #(
   input  logic [CW-1:0]   height_i,
   input  logic [NB-1:0]   disp_i,
   // mcadsw_pkg::ErrNone, or the first failing check's code
-  output logic [mcadsw_pkg::ERR_BITS-1:0] err_o
+  output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
+  output logic            ok_o               // err_o == ErrNone
 );
 
   localparam int SB = AW + CW;         // plane sizes: stride x height (or x columns), exact
+  // The checks in priority order, check c failing gives code CODES[c].
+  localparam int NCHECK = 12;
+  localparam int EB = mcadsw_pkg::ERR_BITS;
+  localparam logic [NCHECK*EB-1:0] CODES = {
+    EB'(mcadsw_pkg::ErrLrColour), EB'(mcadsw_pkg::ErrLrWidth), EB'(mcadsw_pkg::ErrLrTolerance),
+    EB'(mcadsw_pkg::ErrBeyond), EB'(mcadsw_pkg::ErrMode), EB'(mcadsw_pkg::ErrOutStride),
+    EB'(mcadsw_pkg::ErrOverlap), EB'(mcadsw_pkg::ErrAlign), EB'(mcadsw_pkg::ErrStride),
+    EB'(mcadsw_pkg::ErrDisp), EB'(mcadsw_pkg::ErrHeight), EB'(mcadsw_pkg::ErrWidth)};
+  logic [NCHECK-1:0] fail;
 
   function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
@@ -110,29 +120,31 @@ module mcadsw_cfg_check #(
                               overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
                                        wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
     end
-    err_o = mcadsw_pkg::ErrNone;
-    if (width_i == '0 || 32'(width_i) > mcadsw_pkg::MAX_WIDTH) err_o = mcadsw_pkg::ErrWidth;
-    else if (height_i == '0 || 32'(height_i) > mcadsw_pkg::MAX_HEIGHT) err_o = mcadsw_pkg::ErrHeight;
-    else if (disp_i == '0 || 32'(disp_i) > DMAX) err_o = mcadsw_pkg::ErrDisp;
+    // Each check on its own; the code is the first failing one's, the verdict
+    // an OR of all (flat, so the frame controller's branch does not wait for the
+    // priority chain).
+    fail[0]  = width_i == '0 || 32'(width_i) > mcadsw_pkg::MAX_WIDTH;
+    fail[1]  = height_i == '0 || 32'(height_i) > mcadsw_pkg::MAX_HEIGHT;
+    fail[2]  = disp_i == '0 || 32'(disp_i) > DMAX;
     // STRIDE is the input planes' (raster) and, in the LR mode, dR's and the mask's.
-    else if ((!tiled || lr_i) && (stride_i < AW'(width_i) || (stride_i & AW'(3)) != '0))
-      err_o = mcadsw_pkg::ErrStride;
-    else if (tiled && (tile_stride_i < AW'({height_i, 2'b00}) || (tile_stride_i & AW'(3)) != '0))
-      err_o = mcadsw_pkg::ErrStride;
-    else if (misaligned) err_o = mcadsw_pkg::ErrAlign;
-    else if (overlap) err_o = mcadsw_pkg::ErrOverlap;
-    else if (out_stride_i < AW'(out_bytes) || (out_stride_i & AW'(3)) != '0)
-      err_o = mcadsw_pkg::ErrOutStride;
-    else if (lr_i && right_i) err_o = mcadsw_pkg::ErrMode;
-    else if (past) err_o = mcadsw_pkg::ErrBeyond;
-    else if (lr_i && 32'(lr_t_i) > mcadsw_pkg::LR_T_MAX) err_o = mcadsw_pkg::ErrLrTolerance;
-    else if (lr_i && 32'(width_i) > mcadsw_pkg::POST_MAX_WIDTH) err_o = mcadsw_pkg::ErrLrWidth;
+    fail[3]  = ((!tiled || lr_i) && (stride_i < AW'(width_i) || (stride_i & AW'(3)) != '0)) ||
+               (tiled && (tile_stride_i < AW'({height_i, 2'b00}) || (tile_stride_i & AW'(3)) != '0));
+    fail[4]  = misaligned;
+    fail[5]  = overlap;
+    fail[6]  = out_stride_i < AW'(out_bytes) || (out_stride_i & AW'(3)) != '0;
+    fail[7]  = lr_i && right_i;
+    fail[8]  = past;
+    fail[9]  = lr_i && 32'(lr_t_i) > mcadsw_pkg::LR_T_MAX;
+    fail[10] = lr_i && 32'(width_i) > mcadsw_pkg::POST_MAX_WIDTH;
     // Right U and V not configured: the same base as each other or as another
     // input plane (registers left at their reset value, or copied).
-    else if (lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
-                      base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
-                      base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my))
-      err_o = mcadsw_pkg::ErrLrColour;
+    fail[11] = lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
+                        base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
+                        base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
+    ok_o  = fail == '0;
+    err_o = mcadsw_pkg::ErrNone;
+    for (int c = NCHECK - 1; c >= 0; c--)
+      if (fail[c]) err_o = CODES[c*mcadsw_pkg::ERR_BITS +: mcadsw_pkg::ERR_BITS];
   end
 
 endmodule

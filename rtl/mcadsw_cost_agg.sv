@@ -25,6 +25,7 @@
 // aggregator, the ping-pong buffer and the horizontal aggregators are P copies
 // (the weights are shared); lanes with d + p >= D travel masked to the WTA.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_cost_agg #(
   parameter int DMAX   = mcadsw_pkg::DMAX,
@@ -349,24 +350,13 @@ module mcadsw_cost_agg #(
   assign sub_busy_o = busy_o || sub_d1_q || sub_valid_o;
 
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
-  // verilator coverage_off
-  // Ping-pong ownership (docs/architecture.md section 9), checked in simulation:
-  // the vertical side never writes a bank the horizontal side has still to read
-  // (h0 issues the reads of the following cycles; the read in h1 in the same
-  // cycle as a write returns the word from before it), and a bank is handed over
-  // only when the horizontal side has finished the previous one.
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
-        else $error("cost_agg: ping-pong bank %0d overwritten before it was read", wbank_q);
-      assert (!(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
-        else $error("cost_agg: ping-pong bank handed over before the previous one was read");
-    end
-  end
-  // verilator coverage_on
-`endif
+  // Ping-pong ownership (docs/architecture.md section 9): the vertical side never
+  // writes a bank the horizontal side has still to read (h0 issues the reads of
+  // the following cycles; the read in h1 in the same cycle as a write returns the
+  // word from before it), and a bank is handed over only when the horizontal side
+  // has finished the previous one.
+  `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
+  `MCADSW_ASSERT(BankHandedOverWhenRead, !(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
 
 `ifdef FORMAL
   // Ping-pong ownership, proven by `make formal` (formal/cost_agg_props.sv): a

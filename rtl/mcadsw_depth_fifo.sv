@@ -13,6 +13,7 @@
 // in that order. It starts a job only while space_o is high, so the
 // aggregator, which has no back-pressure, never finds the FIFO full.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_depth_fifo #(
   parameter int BLOCK = mcadsw_pkg::BLOCK,
@@ -163,22 +164,11 @@ module mcadsw_depth_fifo #(
     end
   end
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
-  // verilator coverage_off
-  // Invariants (docs/architecture.md section 9), checked in simulation.
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(desc_push_i && !space_o))
-        else $error("depth_fifo: row descriptor pushed while the queue is full (overflow)");
-      assert (!(disp_valid_i && ready_q == count_q))
-        else $error("depth_fifo: disparities for a row that has no descriptor (underflow)");
-      assert (!(wr_req_o && count_q == '0))
-        else $error("depth_fifo: write request with no row queued (underflow)");
-    end
-  end
-  // verilator coverage_on
-`endif
+  // Invariants (docs/architecture.md section 9): the scheduler pushes a row
+  // descriptor only into space, the WTA sends disparities only for a queued row.
+  `MCADSW_ASSUME(DescriptorPushedIntoSpace, !(desc_push_i && !space_o))
+  `MCADSW_ASSUME(DisparitiesForQueuedRow, !(disp_valid_i && ready_q == count_q))
+  `MCADSW_ASSERT(WriteOnlyWithRowQueued, !(wr_req_o && count_q == '0))
 
 endmodule
 

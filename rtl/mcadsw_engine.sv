@@ -120,6 +120,7 @@ module mcadsw_engine #(
   end
 
   logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err;
+  logic cfg_ok;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB)) u_cfg_check (
     .base_ly_i (cfg_ly_q), .base_lu_i (cfg_lu_q), .base_lv_i (cfg_lv_q),
     .base_ry_i (cfg_ry_q), .base_ru_i (cfg_ru_q), .base_rv_i (cfg_rv_q),
@@ -128,7 +129,7 @@ module mcadsw_engine #(
     .tile_stride_i (tile_q),
     .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .lr_t_i (lr_t_q),
     .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
-    .err_o (cfg_err)
+    .err_o (cfg_err), .ok_o (cfg_ok)
   );
 
   // ---- Frame controller: the passes, busy / done, error code, counters --------------------
@@ -138,7 +139,8 @@ module mcadsw_engine #(
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
     .start_i,
-    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .err_i (cfg_err), .accept_o (accept),
+    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .err_i (cfg_err), .ok_i (cfg_ok),
+    .accept_o (accept),
     .sched_start_o (go), .sched_busy_i (sched_busy), .sched_done_i (sched_done),
     .to_second_o (to_second), .pass_second_o (pass_second), .pass_post_o (pass_post),
     .post_start_o (post_start), .post_done_i (post_done),
@@ -157,11 +159,10 @@ module mcadsw_engine #(
   // columns xlo .. xend - 1; with the right view as base the pass runs mirrored
   // (docs/architecture.md section 12): pass column c is image column W4 - 1 - c,
   // W4 the width rounded up to 4, so the image lies in pass columns W4 - W .. W4 - 1.
-  // Registered when a pass is set up (at the start, from the configuration ports;
-  // when the LR mode's second pass begins, from the registered configuration), so
-  // the readers' address and clamp arithmetic starts from flip-flops.
-  // The view of the pass being set up: at the start from the configuration ports,
-  // for the LR mode's second pass from the registered configuration.
+  // Registered when a pass is set up (v_*: at the start from the configuration
+  // ports; when the LR mode's second pass begins, from the registered
+  // configuration), so the readers' address and clamp arithmetic starts from
+  // flip-flops.
   logic          to_second;              // the LR mode's second pass begins with the next cycle
   logic [AW-1:0] v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr;
   logic [CW-1:0] v_width, v_w4;

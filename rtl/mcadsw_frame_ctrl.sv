@@ -32,6 +32,7 @@ module mcadsw_frame_ctrl (
   input  logic        cfg_lr_i,             // LR mode: left map, right map, post stage
   input  logic        cfg_right_i,          // the right view as base
   input  logic [mcadsw_pkg::ERR_BITS-1:0] err_i,   // valid in StCheck
+  input  logic        ok_i,                 // err_i == ErrNone (the check's flat verdict)
   output logic        accept_o,             // register the configuration now
   // Passes and post stage
   output logic        sched_start_o,        // a pass starts (one cycle)
@@ -97,7 +98,7 @@ module mcadsw_frame_ctrl (
       end
       StCheck: begin
         code_d = err_i;
-        if (err_i != mcadsw_pkg::ErrNone) begin
+        if (!ok_i) begin
           state_d = StIdle;
           done_d  = 1'b1;
           error_d = 1'b1;
@@ -209,6 +210,7 @@ module mcadsw_frame_ctrl (
   // exactly when there is an error.
   `MCADSW_ASSERT(DoneOnlyWhenIdle, !done_o || !busy_o)
   `MCADSW_ASSERT(ErrorOnlyWithDone, !error_o || done_o)
+  `MCADSW_ASSUME(OkIffNoCode, state_q != StCheck || ok_i == (err_i == mcadsw_pkg::ErrNone))
   `MCADSW_ASSERT(CodeIffError, error_o == (error_code_o != mcadsw_pkg::ErrNone))
   // The scheduler starts in the first cycle of a pass; the post stage in its own state.
   `MCADSW_ASSERT(SchedStartInAPass, !sched_start_o || state_q == StLeftPass ||

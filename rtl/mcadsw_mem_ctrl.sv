@@ -16,6 +16,7 @@
 // stalled cycle is held, so neither a write nor another reader's turn can
 // replace it. The requestors keep their own request stable until granted.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_mem_ctrl #(
   parameter int NR   = 3,      // read requestors
@@ -140,30 +141,21 @@ module mcadsw_mem_ctrl #(
     end
   end
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
+`ifdef MCADSW_CHECKS
   // verilator coverage_off
   logic [3:0] hold_len_q;
   always_ff @(posedge clk_i) hold_len_q <= mem_len_o;
-  // Invariants (docs/architecture.md section 9), checked in simulation.
-  logic [NR:0] grants;
-  assign grants = {wr_gnt_o, rd_gnt_o};
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert ((grants & (grants - 1'b1)) == '0)
-        else $error("mem_ctrl: more than one grant in a cycle (%b)", grants);
-      assert ((rd_rvalid_o & (rd_rvalid_o - 1'b1)) == '0)
-        else $error("mem_ctrl: read data routed to more than one reader (%b)", rd_rvalid_o);
-      assert (!(mem_rvalid_i && nids_q == '0))
-        else $error("mem_ctrl: external memory returned read data with no read outstanding");
-      assert (!(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
-        else $error("mem_ctrl: a requestor withdrew a request that was not granted");
-      assert (!(hold_q && !hold_wr_q && mem_len_o != hold_len_q))
-        else $error("mem_ctrl: a reader changed the length of a request that was not granted");
-    end
-  end
   // verilator coverage_on
 `endif
+  // Invariants (docs/architecture.md section 9), and what the requestors and the
+  // external memory must keep.
+  logic [NR:0] grants;
+  assign grants = {wr_gnt_o, rd_gnt_o};
+  `MCADSW_ASSERT(OneGrantPerCycle, (grants & (grants - 1'b1)) == '0)
+  `MCADSW_ASSERT(ReadDataToOneReader, (rd_rvalid_o & (rd_rvalid_o - 1'b1)) == '0)
+  `MCADSW_ASSUME(ReadDataOnlyWhenOutstanding, !(mem_rvalid_i && nids_q == '0))
+  `MCADSW_ASSUME(RequestHeldUntilGranted, !(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
+  `MCADSW_ASSUME(LengthHeldUntilGranted, !(hold_q && !hold_wr_q && mem_len_o != hold_len_q))
 
 endmodule
 

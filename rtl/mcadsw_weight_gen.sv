@@ -49,6 +49,7 @@
 // from the reference's table by weight_thresholds(), so both sides use the
 // same values.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_weight_gen #(
   parameter int COLS   = mcadsw_pkg::BLOCK_COLS,
@@ -449,22 +450,11 @@ module mcadsw_weight_gen #(
     if (hrd_en_i) wh_o <= hbuf_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
   end
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
-  // verilator coverage_off
-  // Invariants, checked in simulation.
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(row_take_i && !row_ready_o))
-        else $error("weight_gen: a row was taken before it was ready");
-      assert (!(vrd_en_i && !occ_q[vrd_slot_i]) && !(hrd_en_i && !occ_q[hrd_slot_i]))
-        else $error("weight_gen: read of a free row slot");
-      assert (!(cfg_valid_i && !cfg_ready_o))
-        else $error("weight_gen: a window was configured while the previous one waits");
-    end
-  end
-  // verilator coverage_on
-`endif
+  // What the cost aggregator keeps: a row taken once ready, reads of occupied
+  // slots, a window configured once the previous one is taken.
+  `MCADSW_ASSUME(RowTakenWhenReady, !(row_take_i && !row_ready_o))
+  `MCADSW_ASSUME(ReadOfOccupiedSlot, !(vrd_en_i && !occ_q[vrd_slot_i]) && !(hrd_en_i && !occ_q[hrd_slot_i]))
+  `MCADSW_ASSUME(ConfiguredWhenReady, !(cfg_valid_i && !cfg_ready_o))
 
 endmodule
 

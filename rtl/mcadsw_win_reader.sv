@@ -31,6 +31,7 @@
 // boundary. A burst is requested only when the response FIFO (OUTS words)
 // has room for all of it; responses come in order.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_win_reader #(
   parameter int ROWS   = 52,             // rows of a strip
@@ -349,24 +350,12 @@ module mcadsw_win_reader #(
 
   assign busy_o = busy_q;
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
-  // verilator coverage_off
-  // Invariants (docs/architecture.md section 9), checked in simulation.
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(rvalid_i && !pop_word && fcount_q == OB'(OUTS)))
-        else $error("win_reader: response FIFO overflow");
-      assert (!(rvalid_i && inflight_q == '0))
-        else $error("win_reader: read data with no request of this reader in flight");
-      assert (!(start_i && !busy_q && x0_i[1:0] != 2'b00))
-        else $error("win_reader: window origin %0d is not word-aligned", x0_i);
-      assert (!(busy_q && !rs_done && rq_done && inflight_q == '0))
-        else $error("win_reader: every word requested and delivered, rows still to go");
-    end
-  end
-  // verilator coverage_on
-`endif
+  // Invariants (docs/architecture.md section 9), and what the scheduler and
+  // the memory controller must keep.
+  `MCADSW_ASSERT(ResponseFifoFits, !(rvalid_i && !pop_word && fcount_q == OB'(OUTS)))
+  `MCADSW_ASSUME(ReadDataOnlyWhenInFlight, !(rvalid_i && inflight_q == '0))
+  `MCADSW_ASSUME(WindowOriginWordAligned, !(start_i && !busy_q && x0_i[1:0] != 2'b00))
+  `MCADSW_ASSERT(NoRowsLeftWhenAllDelivered, !(busy_q && !rs_done && rq_done && inflight_q == '0))
 
 endmodule
 

@@ -17,6 +17,7 @@
 // lanes at or above D. The lanes are taken one after the other, as P single
 // steps, so ties still keep the smallest d; P = 1 is the paper's WTA.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_wta #(
   parameter int BLOCK = mcadsw_pkg::BLOCK,
@@ -172,8 +173,7 @@ module mcadsw_wta #(
     end
   end
 
-`ifndef SYNTHESIS
-  // Simulation-only checks: not design, left out of `make coverage`.
+`ifdef MCADSW_CHECKS
   // verilator coverage_off
   // The ring relies on the groups arriving in order, from group 0 after reset.
   logic [GB-1:0] exp_grp_q;
@@ -181,14 +181,9 @@ module mcadsw_wta #(
     if (!rst_ni) exp_grp_q <= '0;
     else if (valid_i) exp_grp_q <= (exp_grp_q == GB'(GROUPS - 1)) ? '0 : exp_grp_q + GB'(1);
   end
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (rst_ni) begin
-      assert (!(valid_i && grp_i != exp_grp_q))
-        else $error("wta: group %0d arrived, group %0d expected", grp_i, exp_grp_q);
-    end
-  end
   // verilator coverage_on
 `endif
+  `MCADSW_ASSUME(GroupsInOrder, !(valid_i && grp_i != exp_grp_q))
 
 endmodule
 
