@@ -17,17 +17,10 @@
 #include <utility>
 #include <vector>
 
-// The model: mcadsw_top, programmed through its AXI4-Lite registers as a
-// driver would (issue 19), or, for the gate-level netlist of mcadsw_engine
-// (MCADSW_DUT_AXIL 0, scripts/gls.sh), the engine's configuration ports.
-#if MCADSW_DUT_AXIL
-#include "Vmcadsw_top.h"
-#include "axi_memory.hpp"
-#include "axil_driver.hpp"
-#include "mcadsw/regs.hpp"
-#else
-#include "Vmcadsw_engine.h"
-#endif
+// The model (sim/bench_dut.hpp; CMake links the build's implementation) and
+// the driver a user's firmware uses, over the model's register bus.
+#include "bench_dut.hpp"
+#include "mcadsw/driver.hpp"
 #if VM_COVERAGE
 #include <unistd.h>
 #include <verilated_cov.h>
@@ -39,11 +32,6 @@
 namespace mcadsw::sim {
 namespace {
 
-#if MCADSW_DUT_AXIL
-using Dut = Vmcadsw_top;
-#else
-using Dut = Vmcadsw_engine;
-#endif
 
 // Memory layout of a frame (docs/memory_map.md): six input planes (left Y, U,
 // V, right Y, U, V) of stride bytes per row (default: the width rounded up to
@@ -148,70 +136,47 @@ void put_plane(MemoryModel& m, uint32_t base, uint32_t stride, uint32_t tile, co
 
 class Engine {
  public:
-  Engine(MemoryModel& mem, const EngineOptions& opt)
-      : mem_(mem), opt_(opt)
-#if MCADSW_DUT_AXIL
-        , axi_mem_(mem, opt.latency, opt.axi_fault, opt.axi_write_latency, opt.axi_ar_interval)
-#endif
-  {
+  Engine(MemoryModel& mem, const EngineOptions& opt) : mem_(mem) {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
     // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
-#if MCADSW_MUTANT
-    // `make mutate` (scripts/mutate.sh): the model holds every mutant of the
-    // list; the environment variable MCADSW_MUTANT selects one (0 or unset:
-    // none, the design as written), passed on as the plusarg the model reads.
-    const std::string mutant =
-        std::string("+mcadsw_mutant=") + (std::getenv("MCADSW_MUTANT") ? std::getenv("MCADSW_MUTANT") : "0");
+    // `make mutate` (scripts/mutate.sh): a model built with every mutant of the
+    // list reads the plusarg +mcadsw_mutant=K, passed on from the environment
+    // variable MCADSW_MUTANT (0 or unset: none, the design as written); other
+    // models ignore it.
+    const char* k = std::getenv("MCADSW_MUTANT");
+    const std::string mutant = std::string("+mcadsw_mutant=") + (k ? k : "0");
     const char* mutant_arg[] = {mutant.c_str()};
     ctx_->commandArgsAdd(1, mutant_arg);
-#endif
-    top_ = std::make_unique<Dut>(ctx_.get());
-#if MCADSW_DUT_AXIL
-    // READY and VALID of the register bus held back 30 % of the cycles.
-    axi_ = std::make_unique<AxilDriver<Dut>>(
-        *top_, [this](const std::function<void()>& at_sample) { cycle(at_sample); },
-        opt.latency.seed + 77, 0.3);
-#endif
+    dut_ = make_bench_dut(*ctx_, mem, opt,
+                          [this](const std::function<void()>& at_sample) { cycle(at_sample); });
+    driver_ = std::make_unique<driver::Engine>(dut_->registers());
     if (!opt.waves.empty()) {
 #if VM_TRACE_FST
       trace_ = std::make_unique<VerilatedFstC>();
-      top_->trace(trace_.get(), 99);
+      dut_->trace(*trace_);
       trace_->open(opt.waves.c_str());
 #else
       throw std::runtime_error("this model was built without FST tracing: no waves");
 #endif
     }
-    top_->clk_i = 0;
-    top_->rst_ni = 0;
-#if !MCADSW_DUT_AXIL
-    top_->start_i = 0;
-    top_->mem_gnt_i = 0;
-    top_->mem_rvalid_i = 0;
-    top_->mem_wr_idle_i = 1;  // the port completes a write at its grant
-#endif
-    top_->eval();
+    dut_->eval();
     reset();
   }
   // Asynchronous reset for 4 cycles, with the memory system.
   void reset() {
-    top_->rst_ni = 0;
-#if !MCADSW_DUT_AXIL
-    top_->start_i = 0;
-#endif
-    top_->eval();
+    dut_->set_reset(true);
+    dut_->eval();
     mem_.reset();
-#if MCADSW_DUT_AXIL
-    axi_mem_.reset();
-#endif
+    dut_->reset_memory();
     for (int i = 0; i < 4; ++i) cycle();
-    top_->rst_ni = 1;
+    dut_->set_reset(false);
   }
   ~Engine() {
 #if VM_TRACE_FST
     if (trace_) trace_->close();
 #endif
-    top_->final();
+    dut_->final();
 #if VM_COVERAGE
     // `make coverage` (scripts/coverage.sh): one coverage file per engine instance.
     if (const char* dir = std::getenv("MCADSW_COVERAGE_DIR")) {
@@ -223,34 +188,19 @@ class Engine {
 #endif
   }
 
-  Dut& top() { return *top_; }
-#if MCADSW_DUT_AXIL
-  AxilDriver<Dut>& axi() { return *axi_; }
-  const AxiMemory& axi_mem() const { return axi_mem_; }
-#endif
+  BenchDut& dut() { return *dut_; }
+  driver::Engine& driver() { return *driver_; }
 
   // One clock cycle; `at_sample` runs once the cycle's outputs have settled.
   void cycle(const std::function<void()>& at_sample = {}) {
-    auto& t = *top_;
-#if MCADSW_DUT_AXIL
-    axi_mem_.drive(t);
-    t.clk_i = 0;
-    t.eval();
-    axi_mem_.sample(t);
-#else
-    mem_.drive_response(t);
-    t.clk_i = 0;
-    t.eval();
-    mem_.serve(t);
-#endif
+    dut_->clock_low();
     if (at_sample) at_sample();
 #if VM_TRACE_FST
     // Inputs change at the start of the low phase; the rising edge is half a
     // period later.
     if (trace_) trace_->dump(time_ * kClockPeriodPs);
 #endif
-    t.clk_i = 1;
-    t.eval();
+    dut_->clock_high();
 #if VM_TRACE_FST
     if (trace_) trace_->dump(time_ * kClockPeriodPs + kClockPeriodPs / 2);
 #endif
@@ -260,131 +210,66 @@ class Engine {
 
  private:
   MemoryModel& mem_;
-  const EngineOptions& opt_;
-#if MCADSW_DUT_AXIL
-  AxiMemory axi_mem_;
-#endif
   std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
-  std::unique_ptr<Dut> top_;
-#if MCADSW_DUT_AXIL
-  std::unique_ptr<AxilDriver<Dut>> axi_;
-#endif
+  std::unique_ptr<BenchDut> dut_;
+  std::unique_ptr<driver::Engine> driver_;
 #if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> trace_;
 #endif
   uint64_t time_ = 0;
 };
 
-#if MCADSW_DUT_AXIL
-// The configuration as register writes (docs/registers.md); CTRL gets the mode,
-// START is written by start(). Each write must answer OKAY.
+// The configuration through the driver (docs/registers.md), both interrupts on;
+// the frame starts with start().
 void program(Engine& e, const RawConfig& c, const WeightTable& table) {
-  auto& axi = e.axi();
-  const auto wr = [&axi](uint32_t off, uint32_t v) {
-    if (axi.write(off, v) != 0)
-      throw std::runtime_error("register write to offset " + std::to_string(off) + " not OKAY");
-  };
-  wr(regs::kBaseLy, c.base_ly);
-  wr(regs::kBaseLu, c.base_lu);
-  wr(regs::kBaseLv, c.base_lv);
-  wr(regs::kBaseRy, c.base_ry);
-  wr(regs::kBaseRu, c.base_ru);
-  wr(regs::kBaseRv, c.base_rv);
-  wr(regs::kBaseOut, c.base_out);
-  wr(regs::kBaseDl, c.base_dl);
-  wr(regs::kBaseDr, c.base_dr);
-  wr(regs::kBaseMask, c.base_mask);
-  wr(regs::kStride, c.stride);
-  wr(regs::kOutStride, c.out_stride);
-  wr(regs::kTileStride, c.tile_stride);
-  wr(regs::kSize, (uint32_t(c.width) & 0xfff) << regs::kSizeWidthLsb |
-                      (uint32_t(c.height) & 0xfff) << regs::kSizeHeightLsb);
-  wr(regs::kDisp, uint32_t(c.disparities) & 0xff);
-  wr(regs::kLrT, uint32_t(c.lr_t) & 0xff);
+  driver::FrameConfig f;
+  f.base_ly = c.base_ly;
+  f.base_lu = c.base_lu;
+  f.base_lv = c.base_lv;
+  f.base_ry = c.base_ry;
+  f.base_ru = c.base_ru;
+  f.base_rv = c.base_rv;
+  f.base_out = c.base_out;
+  f.base_dl = c.base_dl;
+  f.base_dr = c.base_dr;
+  f.base_mask = c.base_mask;
+  f.stride = c.stride;
+  f.out_stride = c.out_stride;
+  f.tile_stride = c.tile_stride;
+  f.width = c.width;
+  f.height = c.height;
+  f.disparities = c.disparities;
+  f.subpixel = c.mode & 1;
+  f.lr = c.mode >> 1 & 1;
+  f.right = c.mode >> 2 & 1;
+  f.lr_tolerance = c.lr_t;
   const WeightThresholds thr = weight_thresholds(table);
-  for (int i = 0; i < kWeightThresholds; ++i) wr(regs::kThr0 + 4 * uint32_t(i), thr[i]);
-  wr(regs::kCtrl, (uint32_t(c.mode) & 7) << regs::kCtrlModeLsb);
-  wr(regs::kIrqEnable, 1u << regs::kIrqDoneLsb | 1u << regs::kIrqErrorLsb);
+  std::copy(thr.begin(), thr.end(), f.thresholds.begin());
+  e.driver().configure(f);
+  e.driver().enable_interrupts(true, true);
 }
 
-// Writes 1 to a CTRL pulse bit (START, ABORT), the mode kept (read-modify-write;
-// the pulse bits read 0).
-void ctrl_pulse(Engine& e, int lsb) {
-  auto& axi = e.axi();
-  axi.write(regs::kCtrl, axi.read(regs::kCtrl) | 1u << lsb);
+void start(Engine& e) { e.driver().start(); }
+
+void abort_frame(Engine& e) {
+  if (!e.dut().can_abort())
+    throw std::runtime_error("abort: the gate-level model has no register block (no CTRL.ABORT)");
+  e.driver().abort();
 }
-
-// Clears the sticky status bits and writes CTRL.START with the mode programmed.
-void start(Engine& e) {
-  e.axi().write(regs::kStatus, 1u << regs::kStatusDoneLsb | 1u << regs::kStatusErrorLsb);
-  ctrl_pulse(e, regs::kCtrlStartLsb);
-}
-
-bool frame_over(Engine& e) { return e.top().irq_o; }
-
-void abort_frame(Engine& e) { ctrl_pulse(e, regs::kCtrlAbortLsb); }
 
 // Status and counters, read as a driver reads them.
 void read_status(Engine& e, EngineResult& r) {
-  auto& axi = e.axi();
-  const uint32_t st = axi.read(regs::kStatus);
-  r.error = st >> regs::kStatusErrorLsb & 1;
-  r.error_code = int(st >> regs::kStatusCodeLsb & 15);
-  r.cycles = long(axi.read(regs::kCycles));
-  r.words_read = long(axi.read(regs::kWordsRead));
-  r.words_written = long(axi.read(regs::kWordsWritten));
-  r.stall_cycles = long(axi.read(regs::kStalls));
-  r.read_bursts = e.axi_mem().read_bursts();
-  r.write_bursts = e.axi_mem().write_bursts_done();
+  const driver::Status st = e.driver().status();
+  r.error = st.error;
+  r.error_code = st.error_code;
+  const driver::Counters n = e.driver().counters();
+  r.cycles = long(n.cycles);
+  r.words_read = long(n.words_read);
+  r.words_written = long(n.words_written);
+  r.stall_cycles = long(n.stalls);
+  r.read_bursts = e.dut().read_bursts();
+  r.write_bursts = e.dut().write_bursts();
 }
-#else
-void program(Engine& e, const RawConfig& c, const WeightTable& table) {
-  auto& t = e.top();
-  t.cfg_base_ly_i = c.base_ly;
-  t.cfg_base_lu_i = c.base_lu;
-  t.cfg_base_lv_i = c.base_lv;
-  t.cfg_base_ry_i = c.base_ry;
-  t.cfg_base_out_i = c.base_out;
-  t.cfg_stride_i = c.stride;
-  t.cfg_out_stride_i = c.out_stride;
-  t.cfg_tile_stride_i = c.tile_stride;
-  t.cfg_mode_i = uint32_t(c.mode) & 7;
-  t.cfg_base_ru_i = c.base_ru;
-  t.cfg_base_rv_i = c.base_rv;
-  t.cfg_base_dl_i = c.base_dl;
-  t.cfg_base_dr_i = c.base_dr;
-  t.cfg_base_mask_i = c.base_mask;
-  t.cfg_lr_t_i = uint32_t(c.lr_t) & 0xff;
-  t.cfg_width_i = uint32_t(c.width) & 0xfff;
-  t.cfg_height_i = uint32_t(c.height) & 0xfff;
-  t.cfg_disp_i = uint32_t(c.disparities) & ((2u << kDispBits) - 1);  // NB = DISP_BITS + 1 bits
-  const WeightThresholds thr = weight_thresholds(table);
-  for (int i = 0; i < kWeightThresholds; ++i)
-    set_bits(t.cfg_thr_i, i * kColorDistBits, kColorDistBits, thr[i]);
-}
-
-void start(Engine& e) {
-  e.top().start_i = 1;
-  e.cycle();
-  e.top().start_i = 0;
-}
-
-bool frame_over(Engine& e) { return e.top().done_o; }
-
-void abort_frame(Engine&) {
-  throw std::runtime_error("abort: the gate-level model has no register block (no CTRL.ABORT)");
-}
-
-void read_status(Engine& e, EngineResult& r) {
-  auto& t = e.top();
-  r.cycles = long(t.cnt_cycles_o);
-  r.words_read = long(t.cnt_words_read_o);
-  r.words_written = long(t.cnt_words_written_o);
-  r.stall_cycles = long(t.cnt_stall_o);
-  r.error = t.error_o;
-  r.error_code = int(t.error_code_o);
-}
-#endif
 
 // Runs from start until the frame is over (done, or the interrupt) or the cycle
 // limit; `again` > 0 programs `other` and starts again that many cycles after
@@ -399,14 +284,12 @@ struct StartAgain {
 void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const StartAgain& again = {}) {
   if (again.abort && again.at == 0) abort_frame(e);
   EngineResult before;
-#if MCADSW_DUT_AXIL
-  before.read_bursts = e.axi_mem().read_bursts();
-  before.write_bursts = e.axi_mem().write_bursts_done();
-#endif
+  before.read_bursts = e.dut().read_bursts();
+  before.write_bursts = e.dut().write_bursts();
   start(e);
   const auto t0 = std::chrono::steady_clock::now();
   long n = 0;
-  while (!frame_over(e)) {
+  while (!e.dut().frame_over()) {
     if (++n > limit) {
       r.timed_out = true;
       break;
@@ -692,25 +575,16 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 
 MemoryModel::Violations with_registers(const std::function<void(RegisterPort&)>& script,
                                        const EngineOptions& opt) {
-#if MCADSW_DUT_AXIL
   MemoryModel mem(1 << 20, opt.latency);
   mem.set_regions({});
   {
     Engine e(mem, opt);
-    RegisterPort port;
-    port.write = [&e](uint32_t off, uint32_t v) { return e.axi().write(off, v); };
-    port.read = [&e](uint32_t off, int* resp) { return e.axi().read(off, resp); };
-    port.cycles = [&e](long n) {
+    RegisterPort port = e.dut().raw_registers([&e](long n) {
       for (long i = 0; i < n; ++i) e.cycle();
-    };
+    });
     script(port);
   }
   return mem.violations();
-#else
-  (void)script;
-  (void)opt;
-  throw std::runtime_error("with_registers: the gate-level model has no register block");
-#endif
 }
 
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles) {

@@ -108,8 +108,8 @@ class Engine {
     bus_.write(regs::kLrT, put(uint32_t(c.lr_tolerance), 0, regs::kLrTBits));
     for (int i = 0; i < kWeightThresholds; ++i)
       bus_.write(regs::kThr0 + 4 * uint32_t(i), put(c.thresholds[size_t(i)], 0, regs::kThrBits));
-    mode_ = uint32_t(c.subpixel) | uint32_t(c.lr) << 1 | uint32_t(c.right) << 2;
-    bus_.write(regs::kCtrl, mode_ << regs::kCtrlModeLsb);
+    const uint32_t mode = uint32_t(c.subpixel) | uint32_t(c.lr) << 1 | uint32_t(c.right) << 2;
+    bus_.write(regs::kCtrl, mode << regs::kCtrlModeLsb);
   }
 
   // IRQ_ENABLE: the interrupt on STATUS.DONE and / or STATUS.ERROR.
@@ -118,14 +118,15 @@ class Engine {
   }
 
   // Clears the sticky DONE and ERROR (and so the interrupt), then CTRL.START with
-  // the configured mode. Ignored by the engine while it is busy.
+  // the mode CTRL holds (read-modify-write: the pulse bits read 0). Ignored by
+  // the engine while it is busy.
   void start() {
     clear();
-    bus_.write(regs::kCtrl, mode_ << regs::kCtrlModeLsb | 1u << regs::kCtrlStartLsb);
+    pulse(regs::kCtrlStartLsb);
   }
 
   // CTRL.ABORT: a running frame ends (error code kErrAborted) once the bus is quiet.
-  void abort() { bus_.write(regs::kCtrl, mode_ << regs::kCtrlModeLsb | 1u << regs::kCtrlAbortLsb); }
+  void abort() { pulse(regs::kCtrlAbortLsb); }
 
   // Write 1 to clear STATUS.DONE and STATUS.ERROR: acknowledges the interrupt.
   void clear() {
@@ -174,9 +175,9 @@ class Engine {
     return v >> lsb & (width >= 32 ? ~0u : (1u << width) - 1);
   }
   static uint32_t put(uint32_t v, int lsb, int width) { return field(v, 0, width) << lsb; }
+  void pulse(int lsb) { bus_.write(regs::kCtrl, bus_.read(regs::kCtrl) | 1u << lsb); }
 
   RegisterBus& bus_;
-  uint32_t mode_ = 0;
 };
 
 }  // namespace mcadsw::driver

@@ -1,0 +1,150 @@
+// The harness's model of a build without the register block: mcadsw_engine (the
+// gate-level netlist of make gls; sim/bench_dut.hpp). Its 32-bit port faces the
+// memory model directly (a write completes at its grant); the register bus maps
+// the driver's register writes onto the configuration ports (docs/registers.md
+// gives the same fields) and STATUS and the counters onto the status ports.
+#include <verilated.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "Vmcadsw_engine.h"
+#include "bench_dut.hpp"
+#include "mcadsw/regs.hpp"
+#include "vbits.hpp"
+
+namespace mcadsw::sim {
+namespace {
+
+using Model = Vmcadsw_engine;
+
+class PortBus : public driver::RegisterBus {
+ public:
+  PortBus(Model& t, BenchDut::Cycle cycle) : t_(t), cycle_(std::move(cycle)) {}
+
+  uint32_t read(uint32_t offset) override {
+    switch (offset) {
+      case regs::kStatus:
+        return uint32_t(t_.busy_o) << regs::kStatusBusyLsb | uint32_t(t_.done_o) << regs::kStatusDoneLsb |
+               uint32_t(t_.error_o) << regs::kStatusErrorLsb | uint32_t(t_.error_code_o) << regs::kStatusCodeLsb;
+      case regs::kCycles: return t_.cnt_cycles_o;
+      case regs::kWordsRead: return t_.cnt_words_read_o;
+      case regs::kWordsWritten: return t_.cnt_words_written_o;
+      case regs::kStalls: return t_.cnt_stall_o;
+      case regs::kCtrl: return uint32_t(t_.cfg_mode_i) << regs::kCtrlModeLsb;  // the pulse bits read 0
+      default: {
+        const auto it = written_.find(offset);
+        return it == written_.end() ? 0 : it->second;
+      }
+    }
+  }
+
+  void write(uint32_t offset, uint32_t v) override {
+    written_[offset] = v;
+    auto& t = t_;
+    if (offset >= regs::kThr0 && offset < regs::kThr0 + 4 * kWeightThresholds && offset % 4 == 0) {
+      set_bits(t.cfg_thr_i, int(offset - regs::kThr0) / 4 * kColorDistBits, kColorDistBits, v);
+      return;
+    }
+    switch (offset) {
+      case regs::kBaseLy: t.cfg_base_ly_i = v; break;
+      case regs::kBaseLu: t.cfg_base_lu_i = v; break;
+      case regs::kBaseLv: t.cfg_base_lv_i = v; break;
+      case regs::kBaseRy: t.cfg_base_ry_i = v; break;
+      case regs::kBaseRu: t.cfg_base_ru_i = v; break;
+      case regs::kBaseRv: t.cfg_base_rv_i = v; break;
+      case regs::kBaseOut: t.cfg_base_out_i = v; break;
+      case regs::kBaseDl: t.cfg_base_dl_i = v; break;
+      case regs::kBaseDr: t.cfg_base_dr_i = v; break;
+      case regs::kBaseMask: t.cfg_base_mask_i = v; break;
+      case regs::kStride: t.cfg_stride_i = v; break;
+      case regs::kOutStride: t.cfg_out_stride_i = v; break;
+      case regs::kTileStride: t.cfg_tile_stride_i = v; break;
+      case regs::kSize:
+        t.cfg_width_i = v >> regs::kSizeWidthLsb & 0xfff;
+        t.cfg_height_i = v >> regs::kSizeHeightLsb & 0xfff;
+        break;
+      case regs::kDisp: t.cfg_disp_i = v & ((2u << kDispBits) - 1); break;  // NB = DISP_BITS + 1 bits
+      case regs::kLrT: t.cfg_lr_t_i = v & 0xff; break;
+      case regs::kCtrl:
+        t.cfg_mode_i = v >> regs::kCtrlModeLsb & 7;
+        if (v >> regs::kCtrlAbortLsb & 1)
+          throw std::runtime_error("abort: the engine core has no register block (no CTRL.ABORT)");
+        if (v >> regs::kCtrlStartLsb & 1) {  // a start pulse of one cycle
+          t.start_i = 1;
+          cycle_({});
+          t.start_i = 0;
+        }
+        break;
+      case regs::kStatus:     // write 1 to clear: the core's done / error last until its next start
+      case regs::kIrqEnable:  // no interrupt line: the bench watches done
+        break;
+      default:
+        throw std::runtime_error("register offset " + std::to_string(offset) +
+                                 " has no port in the engine core");
+    }
+  }
+
+ private:
+  Model& t_;
+  BenchDut::Cycle cycle_;
+  std::map<uint32_t, uint32_t> written_;
+};
+
+class CoreDut : public BenchDut {
+ public:
+  CoreDut(VerilatedContext& ctx, MemoryModel& mem, Cycle cycle)
+      : mem_(mem), top_(&ctx), bus_(top_, std::move(cycle)) {
+    top_.clk_i = 0;
+    top_.rst_ni = 0;
+    top_.start_i = 0;
+    top_.mem_gnt_i = 0;
+    top_.mem_rvalid_i = 0;
+    top_.mem_wr_idle_i = 1;  // the port completes a write at its grant
+  }
+
+  void set_reset(bool active) override {
+    top_.rst_ni = !active;
+    if (active) top_.start_i = 0;
+  }
+  void reset_memory() override {}
+  void clock_low() override {
+    mem_.drive_response(top_);
+    top_.clk_i = 0;
+    top_.eval();
+    mem_.serve(top_);
+  }
+  void clock_high() override {
+    top_.clk_i = 1;
+    top_.eval();
+  }
+  void eval() override { top_.eval(); }
+  void trace(VerilatedFstC&) override {
+    throw std::runtime_error("this model was built without FST tracing: no waves");
+  }
+  void final() override { top_.final(); }
+
+  driver::RegisterBus& registers() override { return bus_; }
+  bool frame_over() override { return top_.done_o; }
+  long read_bursts() const override { return 0; }   // no AXI4: not counted
+  long write_bursts() const override { return 0; }
+  RegisterPort raw_registers(const std::function<void(long)>&) override {
+    throw std::runtime_error("with_registers: the engine core (gate-level model) has no register block");
+  }
+  bool can_abort() const override { return false; }
+
+ private:
+  MemoryModel& mem_;
+  Model top_;
+  PortBus bus_;
+};
+
+}  // namespace
+
+std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions&,
+                                         BenchDut::Cycle cycle) {
+  return std::make_unique<CoreDut>(ctx, mem, std::move(cycle));
+}
+
+}  // namespace mcadsw::sim
