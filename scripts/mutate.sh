@@ -206,56 +206,12 @@ else
   echo "$elapsed" > "$out/run_seconds"
 fi
 
-# 6. Summary: survivors found in the committed list are equivalent or open.
+# 6. Summary (scripts/mutate_summary.py): survivors found in the committed list are
+# equivalent or open; results.tsv, summary.json; exit 1 on an unlisted survivor.
 cat "$out/results"/* | sort -n > "$out/outcomes.tsv"
-awk -F'\t' -v OFS='\t' -v listfile="$listfile" '
-  BEGIN { while ((getline line < listfile) > 0) { if (line !~ /^mutate /) continue
-            split(line, p, "\t"); kind[p[1]] = p[2] } }
-  FNR == NR { mod[$1] = $2; key[$1] = $3; next }
-  { k = $1; o = $2; kd = (key[k] in kind) ? kind[key[k]] : ""
-    if (o == "survived" && kd != "") o = kd                 # equivalent or open
-    else if (o == "killed" && kd != "") o = "killed_listed"
-    print k, mod[k], o, $3, $4, key[k] }' "$out/mutants.tsv" "$out/outcomes.tsv" > "$out/results.tsv"
-
-# Counts, once: summary.json, the console summary, and the number of unlisted
-# survivors (the exit status). survived = open + unlisted; score = killed /
-# (total - equivalent).
-awk -F'\t' -v n="$n" -v seed="$seed" -v sample="$sample" -v secs="$elapsed" -v jobs="$jobs" \
-         -v json="$out/summary.json" -v unfile="$out/unlisted" -v list="${listfile#$root/}" '
-  function esc(s) { gsub(/\\/, "&&", s); gsub(/"/, "\\\"", s); return s }
-  { tot++; m = $2; mods[m] = 1; pm_t[m]++
-    if ($3 == "killed" || $3 == "killed_listed") { kil++; pm_k[m]++ }
-    else if ($3 == "equivalent") { eq++; pm_e[m]++ }
-    else { sur++; pm_s[m]++; if ($3 == "open") op++; else un++
-           surv[sur] = $1 "\t" m "\t" $3 "\t" $6 }
-    if ($3 == "killed_listed") { stale[++ns] = $1; stale_by[ns] = $4 } }
-  END {
-    score = (tot - eq) > 0 ? 100.0 * kil / (tot - eq) : 100
-    np = 0; for (m in mods) names[++np] = m
-    for (a = 1; a <= np; a++) for (b = a + 1; b <= np; b++) if (names[b] < names[a]) { t = names[a]; names[a] = names[b]; names[b] = t }
-    printf "{\n  \"n\": %d, \"seed\": %d, \"sample\": %d, \"jobs\": %d, \"seconds\": %d,\n", n, seed, sample, jobs, secs > json
-    printf "  \"total\": %d, \"killed\": %d, \"survived\": %d, \"equivalent\": %d, \"open\": %d, \"unlisted\": %d,\n", tot, kil, sur, eq, op, un > json
-    printf "  \"score_percent\": %.1f,\n  \"per_module\": {\n", score > json
-    for (a = 1; a <= np; a++) { m = names[a]
-      printf "    \"%s\": {\"total\": %d, \"killed\": %d, \"survived\": %d, \"equivalent\": %d}%s\n", m, pm_t[m], pm_k[m] + 0, pm_s[m] + 0, pm_e[m] + 0, (a < np ? "," : "") > json }
-    printf "  },\n  \"survivors\": [" > json
-    for (a = 1; a <= sur; a++) { split(surv[a], p, "\t")
-      printf "%s\n    {\"mutant\": %d, \"module\": \"%s\", \"kind\": \"%s\", \"mutation\": \"%s\"}", (a > 1 ? "," : ""), p[1], p[2], p[3], esc(p[4]) > json }
-    printf "%s],\n  \"listed_but_killed\": [", (sur ? "\n  " : "") > json
-    for (a = 1; a <= ns; a++) printf "%s%d", (a > 1 ? ", " : ""), stale[a] > json
-    printf "]\n}\n" > json
-    printf "mutate: %d mutants: %d killed, %d equivalent, %d open (listed), %d unlisted survivors; score %.1f %% (killed / non-equivalent; target >= 95 %%)\n", tot, kil, eq, op, un, score
-    print "mutate: per module (total killed survived equivalent):"
-    for (a = 1; a <= np; a++) { m = names[a]
-      printf "  %-20s %4d %4d %4d %4d\n", m, pm_t[m], pm_k[m], pm_s[m], pm_e[m] }
-    for (a = 1; a <= ns; a++)
-      printf "mutate: warning: mutant %d is listed in %s but was killed (%s): remove it\n", stale[a], list, stale_by[a]
-    print un + 0 > unfile }' "$out/results.tsv"
-un=$(cat "$out/unlisted")
 [ "${REPORT_ONLY:-0}" = 1 ] || echo "mutate: $(( $(date +%s) - start_all )) s in all, $elapsed s running mutants"
+rc=0
+python3 "$root/scripts/mutate_summary.py" --out "$out" --list "$listfile" --list-name "${listfile#$root/}" \
+  --n "$n" --seed "$seed" --sample "$sample" --seconds "$elapsed" --jobs "$jobs" || rc=$?
 echo "mutate: $out/summary.json"
-if [ "$un" -gt 0 ]; then
-  echo "mutate: survivors not in ${listfile#$root/} (kill them with a test, or list them: equivalent or open, with the reason):" >&2
-  awk -F'\t' '$3 == "survived" {printf "  mutant %d (%s): %s\n", $1, $2, $6}' "$out/results.tsv" >&2
-  exit 1
-fi
+exit $rc

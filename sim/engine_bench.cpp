@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -219,9 +220,8 @@ class Engine {
   uint64_t time_ = 0;
 };
 
-// The configuration through the driver (docs/registers.md), both interrupts on;
-// the frame starts with start().
-void program(Engine& e, const RawConfig& c, const WeightTable& table) {
+// The harness's configuration as the driver's (docs/registers.md).
+driver::FrameConfig frame_config(const RawConfig& c, const WeightTable& table) {
   driver::FrameConfig f;
   f.base_ly = c.base_ly;
   f.base_lu = c.base_lu;
@@ -245,7 +245,13 @@ void program(Engine& e, const RawConfig& c, const WeightTable& table) {
   f.lr_tolerance = c.lr_t;
   const WeightThresholds thr = weight_thresholds(table);
   std::copy(thr.begin(), thr.end(), f.thresholds.begin());
-  e.driver().configure(f);
+  return f;
+}
+
+// The configuration through the driver, both interrupts on; the frame starts
+// with start().
+void program(Engine& e, const RawConfig& c, const WeightTable& table) {
+  e.driver().configure(frame_config(c, table));
   e.driver().enable_interrupts(true, true);
 }
 
@@ -451,10 +457,32 @@ void score(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvI
   r.report += rep.str();
 }
 
+// Records the driver's register writes (reads answer the last value written,
+// CTRL without its pulse bits), for the Verilog bench to replay.
+class RecordingBus : public driver::RegisterBus {
+ public:
+  uint32_t read(uint32_t offset) override {
+    const auto it = last_.find(offset);
+    const uint32_t v = it == last_.end() ? 0 : it->second;
+    return offset == regs::kCtrl ? v & ~(1u << regs::kCtrlStartLsb | 1u << regs::kCtrlAbortLsb) : v;
+  }
+  void write(uint32_t offset, uint32_t value) override {
+    last_[offset] = value;
+    writes_.emplace_back(offset, value);
+  }
+  const std::vector<std::pair<uint32_t, uint32_t>>& writes() const { return writes_; }
+
+ private:
+  std::map<uint32_t, uint32_t> last_;
+  std::vector<std::pair<uint32_t, uint32_t>> writes_;
+};
+
 // Files for tests/icarus/run.sh: mem.hex ($readmemh, one 32-bit word a line,
-// byte 0 in bits 7:0), config.txt (plusargs for the Verilog bench), and after
-// the run verilator_out.hex (the disparity plane's words) and
-// verilator_counters.txt.
+// byte 0 in bits 7:0), regs.txt (the register writes the driver makes to
+// configure and start the frame, "offset value" in hex, which the Verilog bench
+// replays onto the engine's configuration ports), config.txt (plusargs: the
+// memory's size), and after the run verilator_out.hex (the disparity plane's
+// words) and verilator_counters.txt.
 void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, const WeightTable& table) {
   // The Verilog bench's memory starts at address 0 (tests/icarus/tb_mcadsw_engine.sv).
   if (mem.lo() != 0) throw std::invalid_argument("--dump needs the frame at origin 0");
@@ -466,19 +494,20 @@ void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, c
     std::snprintf(buf, sizeof buf, "%08x\n", w);
     m << buf;
   }
-  const WeightThresholds thr = weight_thresholds(table);
+  RecordingBus bus;
+  driver::Engine drv(bus);
+  drv.configure(frame_config(c, table));
+  drv.enable_interrupts(true, true);
+  drv.start();
+  std::ofstream r(dir + "/regs.txt");
+  for (const auto& [offset, value] : bus.writes()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%02x %08x\n", offset, value);
+    r << buf;
+  }
   std::ofstream f(dir + "/config.txt");
-  f << "+WORDS=" << mem.hi() / 4 << " +BASE_LY=" << c.base_ly << " +BASE_LU=" << c.base_lu
-    << " +BASE_LV=" << c.base_lv << " +BASE_RY=" << c.base_ry << " +BASE_OUT=" << c.base_out
-    << " +BASE_RU=" << c.base_ru << " +BASE_RV=" << c.base_rv << " +BASE_DL=" << c.base_dl
-    << " +BASE_DR=" << c.base_dr << " +BASE_MASK=" << c.base_mask << " +LR_T=" << c.lr_t
-    << " +STRIDE=" << c.stride << " +OUT_STRIDE=" << c.out_stride << " +MODE=" << c.mode
-    << " +TILE_STRIDE=" << c.tile_stride
-    << " +WIDTH=" << c.width << " +HEIGHT=" << c.height
-    << " +DISP=" << c.disparities;
-  for (int i = 0; i < kWeightThresholds; ++i) f << " +THR" << i << "=" << thr[i];
-  f << "\n";
-  if (!m || !f) throw std::runtime_error("cannot write the dump files in " + dir);
+  f << "+WORDS=" << mem.hi() / 4 << "\n";
+  if (!m || !r || !f) throw std::runtime_error("cannot write the dump files in " + dir);
 }
 
 void dump_after(const std::string& dir, MemoryModel& mem, const Layout& lay, const EngineResult& r) {

@@ -1,6 +1,9 @@
 // Second simulator (Icarus Verilog, 4-state): mcadsw_engine and its AXI4 master
 // (mcadsw_axi_master, as in mcadsw_top) on the memory image the C++
-// harness dumped (mcadsw_sim --dump DIR), with a zero-latency AXI4 memory timed
+// harness dumped (mcadsw_sim --dump DIR), programmed by replaying the register
+// writes the C++ driver made for that frame (DIR/regs.txt, "offset value" in hex;
+// reg_write below maps each register of docs/registers.md onto the engine's
+// configuration ports, CTRL.START onto a start pulse), with a zero-latency AXI4 memory timed
 // as the C++ model's (sim/axi_memory.hpp, latency 0): always ready, an R beat
 // the cycle after its AR, a burst written and answered (B) the cycle after its
 // AW and last W beat are both in. Checks that no output is X or Z after reset,
@@ -15,10 +18,7 @@ module tb_mcadsw_engine;
   logic clk = 1'b0, rst_n = 1'b0;
   always #5 clk = ~clk;
 
-  int words, base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, stride, out_stride, mode, width, height, disp;
-  int tile_stride = 0;
-  int base_dl, base_dr, base_mask, lr_t;
-  int thr0, thr1, thr2, thr3, thr4, thr5, thr6;
+  int words;
   logic [31:0] mem [MAXW];
   string dir;
 
@@ -172,50 +172,65 @@ module tb_mcadsw_engine;
     end
   end
 
+  // A register write of the driver onto the configuration ports (the fields of
+  // mcadsw_regs); CTRL.START: a one-cycle start pulse at the next clock edge.
+  int reg_off, reg_val;
+  logic started = 1'b0;
+  task automatic reg_write(input int off, input logic [31:0] v);
+    case (off)
+      mcadsw_pkg::REG_BASE_LY: cfg_base_ly = v;
+      mcadsw_pkg::REG_BASE_LU: cfg_base_lu = v;
+      mcadsw_pkg::REG_BASE_LV: cfg_base_lv = v;
+      mcadsw_pkg::REG_BASE_RY: cfg_base_ry = v;
+      mcadsw_pkg::REG_BASE_RU: cfg_base_ru = v;
+      mcadsw_pkg::REG_BASE_RV: cfg_base_rv = v;
+      mcadsw_pkg::REG_BASE_OUT: cfg_base_out = v;
+      mcadsw_pkg::REG_BASE_DL: cfg_base_dl = v;
+      mcadsw_pkg::REG_BASE_DR: cfg_base_dr = v;
+      mcadsw_pkg::REG_BASE_MASK: cfg_base_mask = v;
+      mcadsw_pkg::REG_STRIDE: cfg_stride = v;
+      mcadsw_pkg::REG_OUT_STRIDE: cfg_out_stride = v;
+      mcadsw_pkg::REG_TILE_STRIDE: cfg_tile_stride = v;
+      mcadsw_pkg::REG_SIZE: begin
+        cfg_width  = v[mcadsw_pkg::SIZE_WIDTH_LSB +: mcadsw_pkg::SIZE_WIDTH_W];
+        cfg_height = v[mcadsw_pkg::SIZE_HEIGHT_LSB +: mcadsw_pkg::SIZE_HEIGHT_W];
+      end
+      mcadsw_pkg::REG_DISP: cfg_disp = v[mcadsw_pkg::DISP_D_LSB +: $bits(cfg_disp)];
+      mcadsw_pkg::REG_LR_T: cfg_lr_t = v[mcadsw_pkg::LR_T_T_LSB +: mcadsw_pkg::LR_T_T_W];
+      mcadsw_pkg::REG_CTRL: begin
+        cfg_mode = v[mcadsw_pkg::CTRL_MODE_LSB +: mcadsw_pkg::CTRL_MODE_W];
+        if (v[mcadsw_pkg::CTRL_START_LSB]) begin
+          @(posedge clk); #1 start = 1'b1;
+          @(posedge clk); #1 start = 1'b0;
+          started = 1'b1;
+        end
+      end
+      mcadsw_pkg::REG_STATUS, mcadsw_pkg::REG_IRQ_ENABLE: ;  // no register block, no interrupt
+      default:
+        if (off >= mcadsw_pkg::REG_THR0 && off < mcadsw_pkg::REG_THR0 + 4 * NTHR)
+          cfg_thr[(off - mcadsw_pkg::REG_THR0) / 4 * DCB +: DCB] = DCB'(v);
+        else begin
+          $display("FAIL: register offset 'h%0h has no port in the engine", off);
+          $finish;
+        end
+    endcase
+  endtask
+
   initial begin
     int fd;
     longint cycles;
     int ok;
     if (!$value$plusargs("DIR=%s", dir)) begin $display("FAIL: +DIR= missing"); $finish; end
     ok = $value$plusargs("WORDS=%d", words);
-    ok = $value$plusargs("BASE_LY=%d", base_ly);
-    ok = $value$plusargs("BASE_LU=%d", base_lu);
-    ok = $value$plusargs("BASE_LV=%d", base_lv);
-    ok = $value$plusargs("BASE_RY=%d", base_ry);
-    ok = $value$plusargs("BASE_OUT=%d", base_out);
-    ok = $value$plusargs("BASE_RU=%d", base_ru);
-    ok = $value$plusargs("BASE_RV=%d", base_rv);
-    ok = $value$plusargs("BASE_DL=%d", base_dl);
-    ok = $value$plusargs("BASE_DR=%d", base_dr);
-    ok = $value$plusargs("BASE_MASK=%d", base_mask);
-    ok = $value$plusargs("LR_T=%d", lr_t);
-    ok = $value$plusargs("STRIDE=%d", stride);
-    ok = $value$plusargs("OUT_STRIDE=%d", out_stride);
-    ok = $value$plusargs("TILE_STRIDE=%d", tile_stride);
-    ok = $value$plusargs("MODE=%d", mode);
-    ok = $value$plusargs("WIDTH=%d", width);
-    ok = $value$plusargs("HEIGHT=%d", height);
-    ok = $value$plusargs("DISP=%d", disp);
-    ok = $value$plusargs("THR0=%d", thr0);
-    ok = $value$plusargs("THR1=%d", thr1);
-    ok = $value$plusargs("THR2=%d", thr2);
-    ok = $value$plusargs("THR3=%d", thr3);
-    ok = $value$plusargs("THR4=%d", thr4);
-    ok = $value$plusargs("THR5=%d", thr5);
-    ok = $value$plusargs("THR6=%d", thr6);
     if (words <= 0 || words > MAXW) begin $display("FAIL: WORDS %0d", words); $finish; end
     $readmemh({dir, "/mem.hex"}, mem, 0, words - 1);
-    cfg_base_ly = base_ly; cfg_base_lu = base_lu; cfg_base_lv = base_lv; cfg_base_ry = base_ry;
-    cfg_base_out = base_out; cfg_stride = stride; cfg_out_stride = out_stride; cfg_mode = 3'(mode);
-    cfg_tile_stride = tile_stride;
-    cfg_base_ru = base_ru; cfg_base_rv = base_rv;
-    cfg_base_dl = base_dl; cfg_base_dr = base_dr; cfg_base_mask = base_mask; cfg_lr_t = 8'(lr_t);
-    cfg_width = width; cfg_height = height; cfg_disp = disp;
-    cfg_thr = {DCB'(thr6), DCB'(thr5), DCB'(thr4), DCB'(thr3), DCB'(thr2), DCB'(thr1), DCB'(thr0)};
     repeat (4) @(posedge clk);
     #1 rst_n = 1'b1;
-    @(posedge clk); #1 start = 1'b1;
-    @(posedge clk); #1 start = 1'b0;
+    fd = $fopen({dir, "/regs.txt"}, "r");
+    if (fd == 0) begin $display("FAIL: no %s/regs.txt", dir); $finish; end
+    while ($fscanf(fd, "%h %h\n", reg_off, reg_val) == 2) reg_write(reg_off, reg_val);
+    $fclose(fd);
+    if (!started) begin $display("FAIL: regs.txt has no CTRL.START"); $finish; end
     cycles = 0;
     while (!done) begin
       @(posedge clk); #1;
@@ -223,10 +238,12 @@ module tb_mcadsw_engine;
       if (cycles > 10_000_000) begin $display("FAIL: no done after %0d cycles", cycles); $finish; end
     end
     fd = $fopen({dir, "/icarus_out.hex"}, "w");
-    for (int a = base_out / 4; a < (base_out + out_stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
+    for (int a = cfg_base_out / 4; a < (cfg_base_out + cfg_out_stride * cfg_height) / 4; a++)
+      $fwrite(fd, "%08x\n", mem[a]);
     // LR mode: the mask plane too.
-    if (mode & 2)
-      for (int a = base_mask / 4; a < (base_mask + stride * height) / 4; a++) $fwrite(fd, "%08x\n", mem[a]);
+    if (cfg_mode[1])
+      for (int a = cfg_base_mask / 4; a < (cfg_base_mask + cfg_stride * cfg_height) / 4; a++)
+        $fwrite(fd, "%08x\n", mem[a]);
     $fclose(fd);
     fd = $fopen({dir, "/icarus_counters.txt"}, "w");
     $fwrite(fd, "cycles %0d words_read %0d words_written %0d\n", cnt_cycles, cnt_rd, cnt_wr);
