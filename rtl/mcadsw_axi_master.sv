@@ -1,4 +1,4 @@
-// AXI4 master (issue 19, docs/architecture.md section 14): the engine's 32-bit
+// AXI4 master (issue 19, docs/architecture.md section 3.1.3): the engine's 32-bit
 // request/grant memory port (docs/memory_map.md) on an AXI4 bus, one ID (all
 // responses in order), 32-bit data, INCR bursts.
 //

@@ -157,7 +157,7 @@ module mcadsw_engine #(
   // in the LR mode dL (with sub-pixel output in the scratch format: pack); the
   // second writes dR, one byte a pixel. The pass's columns: the image lies in
   // columns xlo .. xend - 1; with the right view as base the pass runs mirrored
-  // (docs/architecture.md section 12): pass column c is image column W4 - 1 - c,
+  // (docs/architecture.md section 3.2.6): pass column c is image column W4 - 1 - c,
   // W4 the width rounded up to 4, so the image lies in pass columns W4 - W .. W4 - 1.
   // Registered when a pass is set up (v_*: at the start from the configuration
   // ports; when the LR mode's second pass begins, from the registered
@@ -452,7 +452,7 @@ module mcadsw_engine #(
   logic [HAGG*VB-1:0]   sub;
   logic [HAGG*DB-1:0]   sub_d;
   // Depth FIFO values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
-  // the scratch format {offset + 8, d} (docs/architecture.md section 12).
+  // the scratch format {offset + 8, d} (docs/architecture.md section 3.2.7).
   localparam int FVB = DB + 5;
   logic                 val_valid;
   logic [2:0]           val_grp;

@@ -1,5 +1,5 @@
 // Post-processing stage of the LR mode (docs/algorithm.md 12.2-12.5,
-// docs/architecture.md section 12): reads the left map dL and the right map dR
+// docs/architecture.md section 3.9): reads the left map dL and the right map dR
 // back from external memory row by row and writes the LR-checked, filled,
 // 3x3-median-filtered map and the validity mask.
 //

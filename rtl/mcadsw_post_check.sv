@@ -1,5 +1,5 @@
 // Post stage, phase RD of a row (docs/algorithm.md 12.2-12.3, docs/architecture.md
-// section 12): reads the row's dR words into the dR row buffer, then its dL words
+// section 3.9): reads the row's dR words into the dR row buffer, then its dL words
 // (at most FD requested and not yet used), and takes one pixel of dL a cycle:
 //   the LR check  valid(x) = x >= d && |d - dR(x - d)| <= T
 //   the forward fill: the pixel's entry of the row buffer vrow holds

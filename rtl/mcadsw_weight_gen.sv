@@ -3,7 +3,7 @@
 // lookups, and the vertical and horizontal weight buffers, which hold two
 // aggregation rows: the kernel makes row r + 1 while the cost aggregator works
 // on row r (paper Sec. V-F: the aggregator starts once a row's weights are
-// ready). docs/architecture.md 5.2 and 7.1.
+// ready). docs/architecture.md 3.6 and 4.3.
 //
 // Loader. Input: the colour of the ROWS x COLS read window (48 x 48) in strips
 // of 4 columns, strip by strip, and Y, U, V of each strip in turn: for strip s

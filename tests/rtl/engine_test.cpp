@@ -565,7 +565,7 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   }
 }
 
-// The RTL's assertions (docs/architecture.md section 9) are compiled in (Verilator
+// The RTL's assertions (docs/architecture.md section 5.3) are compiled in (Verilator
 // --assert) and stop the simulation: an AXI4 R beat with no read outstanding
 // violates the AXI4 master's invariant and, passed on, the memory controller's
 // and a reader's; they fire on the same edge, and which one Verilator reports

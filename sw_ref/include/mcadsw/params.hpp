@@ -109,7 +109,7 @@ inline constexpr int kLrToleranceDefault = 1;
 inline constexpr int kSubpixelScale = 16;      // sub-pixel value = 16 d + offset (OpenCV's scale)
 inline constexpr int kSubpixelOffsetMax = kSubpixelScale / 2;  // |offset| <= 8 (section 12.6)
 // The LR mode's post-processing stage keeps rows of the maps on chip: its buffers
-// are sized for this width (docs/architecture.md section 12); wider frames are a
+// are sized for this width (docs/architecture.md section 3.9); wider frames are a
 // configuration error in the LR mode only.
 inline constexpr int kPostMaxWidth = 1024;
 static_assert(kPostMaxWidth <= kMaxWidth && (kPostMaxWidth & (kPostMaxWidth - 1)) == 0,
