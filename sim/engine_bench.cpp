@@ -28,7 +28,6 @@
 
 #include <atomic>
 #endif
-#include "vbits.hpp"
 
 namespace mcadsw::sim {
 namespace {
