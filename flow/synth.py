@@ -49,6 +49,8 @@ import threading
 import time
 from pathlib import Path
 
+import synth_report
+
 ROOT = Path(__file__).resolve().parent.parent
 FLOW = ROOT / "flow"
 CON = ROOT / "constraints"
@@ -918,7 +920,7 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
     sum_peak_mb = run.peak_sum_mb
     wall_s = int(time.time() - t_start)
 
-    # ---- Report ----
+    # ---- Summary (every figure of the run), then the report rendered from it ----
     cif_cycles = None
     try:
         for case in json.loads((Path(a.build) / "sim" / "summary.json").read_text()):
@@ -928,96 +930,6 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         pass
     ram_cfg = {ln.split()[0]: ln.split()[1] for ln in (CON / "mcadsw_ram_timing.cfg").read_text().splitlines()
                if len(ln.split()) >= 2 and not ln.startswith("#")}
-    r = []
-    r += [f"# Synthesis report (`make synth`, DMAX = {dmax}, PAR = {par}, hierarchical)", "",
-          f"Yosys 0.23 to OSU 0.18 um standard cells (`{Path(lib).name}`), block by block: each block",
-          "(each module parameterisation the top instantiates, sub-modules flattened into it) and the top's own",
-          f"logic (blocks as black boxes) in its own Yosys process, {a.jobs} at a time; ABC with buffering",
-          "(`constraints/abc_osu018.script`, `-constr constraints/abc_osu018.constr`) per block; the block",
-          "netlists assembled into `mcadsw_engine_osu018.v`; OpenSTA on it against `constraints/mcadsw.sdc`.",
-          "On-chip memories are black-box macros (`MCADSW_RAM`, ports from `sim/gls/mcadsw_ram_model.v`),",
-          "counted apart as the paper does. Scripts: `flow/` (driver `flow/synth.py`).", "",
-          f"Run: {wall_s} s wall (blocks {yosys_wall} s incl. elaboration, STA {sta_s} s); {len(ran)} blocks "
-          f"synthesised",
-          f"({yosys_cpu_s} s of Yosys in all), {len(cached)} unchanged and reused. Peak memory: {proc_peak_mb} MB "
-          f"for the largest",
-          f"single process ({proc_peak_what}; " +
-          (f"largest block run {yosys_peak_mb} MB" if ran else "no block run") +
-          f", STA netlist preparation {stanet_mb} MB,",
-          f"OpenSTA {sta_mb} MB), {sum_peak_mb} MB for all processes of the run together (sampled each second).",
-          "", "| figure | this engine | paper (Table III, UMC 90 nm) |", "|---|---|---|",
-          f"| gates (NAND2 equivalents, memories excluded) | {nand2_total} | 563k |",
-          f"| with the SoC wrapper (mcadsw_top: AXI4-Lite registers {soc_nand['mcadsw_regs']}, AXI4 master "
-          f"{soc_nand['mcadsw_axi_master']}; each timed alone, worst slack {soc_slack} ns) | {soc_total} | |",
-          f"| on-chip memory | {mem_bits} bits = {kb(mem_bits)} kB in {len(memories)} macros | 21.3 kB |",
-          f"| of which the engine of the paper (without the LR post stage) | {eng_bits} bits = {kb(eng_bits)} kB "
-          f"| 21.3 kB |",
-          f"| LR post stage (issue 17, beyond the paper): gates, memory | {post_nand2} NAND2 eq, {post_bits} bits = "
-          f"{kb(post_bits)} kB | |",
-          f"| macros with an asynchronous read port | {async_count} (every other read port: address registered, "
-          f"data the next cycle) | |",
-          f"| data registers of 64 bits or more (flip-flops, in the gate count) | {reg_bits} bits in "
-          f"{len(registers)} registers (listed below) | |",
-          f"| flip-flops (in the gate count) | {ff_count} | |",
-          f"| clock target | {clock_mhz} MHz | 95 MHz |",
-          f"| worst slack (WNS) | {slack} ns ({wns} ns) | |",
-          f"| achievable clock (1 / (period - slack)) | {fmax} MHz | 95 MHz |"]
-    if cif_cycles and dmax == 64 and par == 1:
-        r.append(f"| CIF frame at D = 64 (`make sim`) | {cif_cycles} cycles = {fmax * 1e6 / cif_cycles:.1f} fps at "
-                 f"{fmax} MHz, {95e6 / cif_cycles:.1f} fps at 95 MHz | 42 fps at 95 MHz |")
-    r += ["", f"Critical path: from `{crit_start}` to `{crit_end}`, arrival {crit_arrival} ns",
-          "(full path in `sta.log`). Paths into and out of the memory macros are timed with the",
-          "assumed macro timing of `constraints/mcadsw_ram_timing.cfg` (OSU 0.18 um has no memory compiler):",
-          f"clocked read {ram_cfg['clk_to_q']} ns after the clock, asynchronous read {ram_cfg['async_access']} ns, "
-          f"setup {ram_cfg['setup']} ns.", "",
-          f"Nets between blocks (`sta_crossing.txt`: pins in more than one block instance): {len(crossing)}; worst",
-          f"transition at their driver {cross_worst} ns, {cross_slow} above 0.5 ns. The slowest:", "",
-          "| net | driver | cell | pins | transition (ns) |", "|---|---|---|---|---|"]
-    r += [f"| `{c[0]}` | `{c[1]}` | {c[2]} | {c[3]} | {c[4]:.3f} |" for c in crossing[:5]]
-    r.append("")
-    if viol:
-        r += ["Endpoints that miss the clock, per block instance (`sta_endpoints.log`):", "",
-              "| instance | violating endpoints | worst slack (ns) |", "|---|---|---|"]
-        r += [f"| {bl} | {n} | {w} |" for bl, (n, w) in sorted(viol.items(), key=lambda kv: kv[1][1])]
-    else:
-        r.append("Every endpoint meets the clock.")
-    r += ["", "## Blocks", "", "Each line one Yosys run (`blocks/<block>/`); figures per instance.", "",
-          "| block | module | instances | NAND2 eq | share | flip-flops | memory bits | Yosys s | peak MB | this run |",
-          "|---|---|---|---|---|---|---|---|---|---|"]
-    for b in sorted(blocks, key=lambda b: -b["nand2"]):
-        r.append(f"| {b['label']} | {b['module']} | {b['instances']} | {b['nand2']} | "
-                 f"{100 * b['instances'] * b['nand2'] / nand2_total:.1f} % | {b['ff']} | {b['mem']} | {b['seconds']} | "
-                 f"{b['peak_MB']} | {'reused' if b['cached'] else 'synthesised'} |")
-    r += ["", "## Gates per paper block (Fig. 16)", "",
-          "The paper's Fig. 16 gives the gate shares as a chart only; its text says: \"The total gate-count",
-          "was dominated by the cost aggregator and WTA, census left buffer, and census right buffer. This was",
-          "due to the high-computation resource requirement and complex demultiplexing circuits.\"", "",
-          "| paper block | NAND2 eq | share | flip-flops | memory bits | paper (Fig. 16, text) |",
-          "|---|---|---|---|---|---|"]
-    for g, (n, f, m) in groups:
-        r.append(f"| {GROUP_NAMES.get(g, g)} | {n} | {100 * n / nand2_total:.1f} % | {f} | {m} | {paper_share(g)} |")
-    if sorted(g for g, _ in groups[:3]) == ["census_left", "census_right", "cost_aggregator_wta"]:
-        r += ["", "As in the paper, the cost aggregator + WTA and the two census blocks are the three largest."]
-    r += ["", "Memory per module (bits):", "", "| module | bits | kB |", "|---|---|---|"]
-    per_mod = {}
-    for m in memories:
-        per_mod[m[0]] = per_mod.get(m[0], 0) + int(m[4])
-    r += [f"| {k} | {v} | {v / 8192:.1f} |" for k, v in sorted(per_mod.items(), key=lambda kv: -kv[1])]
-    r.append("")
-    if kb(eng_bits) > 21.3:
-        r += ["The memory exceeds the paper's 21.3 kB; where it stands and what would close the gap:",
-              "docs/architecture.md sections 7.1 and 10.", ""]
-    r += ["## Memories (black-box macros)", "",
-          "| module | memory | width | words | bits | read ports | write ports | read |",
-          "|---|---|---|---|---|---|---|---|"]
-    r += ["| " + " | ".join(m[:8]) + " |" for m in memories]
-    r += ["", "## Data registers (flip-flops of 64 bits or more)", "",
-          "Registers that hold image, census, weight or cost words in flip-flops rather than in a macro:",
-          "pipeline registers, staging registers and the buffers kept in flip-flops (docs/architecture.md",
-          "section 7). Their bits are in the gate count, not in the memory figure.", "",
-          "| module | register | bits |", "|---|---|---|"]
-    r += [f"| {x[0]} | {x[1]} | {x[2]} |" for x in sorted(registers, key=lambda x: -int(x[2]))]
-
     summary = {
         "dmax": dmax, "par": par, "flow": "hierarchical", "nand2_eq": nand2_total, "memory_bits": mem_bits,
         "memory_kB": kb(mem_bits), "memory_macros": len(memories),
@@ -1033,8 +945,24 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         "blocks": {b["label"]: {"module": b["module"], "instances": b["instances"], "nand2_eq": b["nand2"],
                                 "flip_flops": b["ff"], "memory_bits": b["mem"], "group": b["group"],
                                 "yosys_seconds": b["seconds"], "peak_MB": b["peak_MB"], "reused": b["cached"]}
-                   for b in blocks}}
-    (out / "report.md.tmp").write_text("\n".join(r) + "\n")
+                   for b in blocks},
+        # For the report (flow/synth_report.py).
+        "liberty": Path(lib).name, "jobs": a.jobs, "cif_cycles": cif_cycles,
+        "run": {"wall_seconds": wall_s, "blocks_wall_seconds": yosys_wall, "sta_seconds": sta_s,
+                "synthesised": len(ran), "reused": len(cached), "yosys_seconds": yosys_cpu_s,
+                "peak_process_MB": proc_peak_mb, "peak_process": proc_peak_what, "largest_block_MB": yosys_peak_mb,
+                "sta_netlist_MB": stanet_mb, "sta_MB": sta_mb, "peak_sum_MB": sum_peak_mb},
+        "critical_path": {"start": crit_start, "end": crit_end, "arrival_ns": crit_arrival},
+        "ram_timing": {k: ram_cfg[k] for k in ("clk_to_q", "async_access", "setup")},
+        "crossing": {"nets": len(crossing), "worst_transition_ns": cross_worst, "above_0_5_ns": cross_slow,
+                     "slowest": [{"net": c[0], "driver": c[1], "cell": c[2], "pins": c[3], "transition_ns": c[4]}
+                                 for c in crossing[:5]]},
+        "violations": [{"instance": bl, "endpoints": n, "worst_slack_ns": w}
+                       for bl, (n, w) in sorted(viol.items(), key=lambda kv: kv[1][1])],
+        "groups": [{"group": g, "name": GROUP_NAMES.get(g, g), "nand2_eq": n, "flip_flops": f, "memory_bits": m,
+                    "paper": paper_share(g)} for g, (n, f, m) in groups],
+        "memories": memories, "data_registers": registers}
+    (out / "report.md.tmp").write_text(synth_report.render(summary))
     (out / "summary.json.tmp").write_text(json.dumps(summary, indent=2) + "\n")
     (out / "report.md.tmp").rename(out / "report.md")
     (out / "summary.json.tmp").rename(out / "summary.json")
