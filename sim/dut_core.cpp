@@ -19,6 +19,9 @@ namespace {
 
 using Model = Vmcadsw_engine;
 
+// Field value of a register word (the widths of sw_ref/include/mcadsw/regs.hpp).
+constexpr uint32_t field(uint32_t v, int lsb, int width) { return v >> lsb & ((1u << width) - 1); }
+
 class PortBus : public driver::RegisterBus {
  public:
   PortBus(Model& t, BenchDut::Cycle cycle) : t_(t), cycle_(std::move(cycle)) {}
@@ -62,13 +65,13 @@ class PortBus : public driver::RegisterBus {
       case regs::kOutStride: t.cfg_out_stride_i = v; break;
       case regs::kTileStride: t.cfg_tile_stride_i = v; break;
       case regs::kSize:
-        t.cfg_width_i = v >> regs::kSizeWidthLsb & 0xfff;
-        t.cfg_height_i = v >> regs::kSizeHeightLsb & 0xfff;
+        t.cfg_width_i = field(v, regs::kSizeWidthLsb, regs::kSizeBits);
+        t.cfg_height_i = field(v, regs::kSizeHeightLsb, regs::kSizeBits);
         break;
       case regs::kDisp: t.cfg_disp_i = v & ((2u << kDispBits) - 1); break;  // NB = DISP_BITS + 1 bits
-      case regs::kLrT: t.cfg_lr_t_i = v & 0xff; break;
+      case regs::kLrT: t.cfg_lr_t_i = field(v, 0, regs::kLrTBits); break;
       case regs::kCtrl:
-        t.cfg_mode_i = v >> regs::kCtrlModeLsb & 7;
+        t.cfg_mode_i = field(v, regs::kCtrlModeLsb, regs::kCtrlModeWidth);
         if (v >> regs::kCtrlAbortLsb & 1)
           throw std::runtime_error("abort: the engine core has no register block (no CTRL.ABORT)");
         if (v >> regs::kCtrlStartLsb & 1) {  // a start pulse of one cycle
