@@ -1,0 +1,207 @@
+"""What every step of the synthesis and FPGA flow shares (flow/synth.py): the
+paths, the error type and messages, stamps for reusing a step's outputs, the
+RTL file list, the package generator and the process runner with its
+memory-aware pool. Python 3 standard library only."""
+import hashlib
+import os
+import re
+import signal
+import subprocess
+import threading
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+FLOW = ROOT / "flow"
+CON = ROOT / "constraints"
+RAM_MODEL = ROOT / "sim" / "gls" / "mcadsw_ram_model.v"
+LIBERTY = "/usr/share/qflow/tech/osu018/osu018_stdcells.lib"
+
+
+def stamp_of(*parts):
+    """sha256 of strings, bytes and files (by content) in order."""
+    h = hashlib.sha256()
+    for p in parts:
+        if isinstance(p, Path):
+            h.update(f"== {p.name}\n".encode() + (p.read_bytes() if p.is_file() else b"(missing)"))
+        else:
+            h.update(p if isinstance(p, bytes) else str(p).encode())
+    return h.hexdigest()
+
+
+def reusable(stamp_file, stamp, outputs):
+    """Whether a stage's outputs are those of a successful run with this stamp;
+    if not, the stamp goes (it is written again after the stage succeeds)."""
+    ok = (stamp_file.is_file() and stamp_file.read_text().strip() == stamp
+          and all(o.is_file() for o in outputs))
+    if not ok:
+        stamp_file.unlink(missing_ok=True)
+    return ok
+
+
+class FlowError(Exception):
+    """A failure with its message (printed as 'synth: <message>') and exit code."""
+
+    def __init__(self, message, code=1):
+        super().__init__(message)
+        self.code = code
+
+
+PREFIX = ["synth"]   # of every message: synth or fpga
+
+
+def log(msg):
+    print(f"{PREFIX[0]}: {msg}", flush=True)
+
+
+def tail(path, n):
+    try:
+        return Path(path).read_text(errors="replace").splitlines()[-n:]
+    except OSError:
+        return []
+
+
+def indent(lines):
+    return "".join(f"  | {line}\n" for line in lines)
+
+
+def rtl_list(no_pkg=False):
+    """The files of rtl/mcadsw.f, relative to the RTL folder."""
+    files = []
+    for line in (ROOT / "rtl" / "mcadsw.f").read_text().splitlines():
+        line = line.split("//")[0].strip()
+        if line and not (no_pkg and line == "mcadsw_pkg.sv"):
+            files.append(line)
+    return files
+
+
+# ---- Processes --------------------------------------------------------------------------
+class Run:
+    """Processes of this run: each in its own process group (stopped as a group),
+    waited with os.wait4 for its peak memory; all of them sampled each second."""
+
+    def __init__(self):
+        self.procs = {}   # pid -> Popen, kept until os.wait4 reaped it (else Popen's own
+                          # clean-up could reap it first and its exit status be lost)
+        self.peak_sum_mb = 0
+        self._stop = threading.Event()
+        threading.Thread(target=self._sample, daemon=True).start()
+
+    def _sample(self):
+        me = os.getpid()
+        while not self._stop.is_set():
+            parent, rss = {}, {}
+            for d in os.listdir("/proc"):
+                if d.isdigit():
+                    try:
+                        f = Path(f"/proc/{d}/stat").read_text().rsplit(")", 1)[1].split()
+                        parent[int(d)], rss[int(d)] = int(f[1]), int(f[21])
+                    except (OSError, IndexError, ValueError):
+                        pass
+            total = 0
+            for pid in parent:
+                q = pid
+                for _ in range(64):
+                    if q == me:
+                        total += rss[pid]
+                        break
+                    q = parent.get(q, 0)
+                    if q <= 1:
+                        break
+            self.peak_sum_mb = max(self.peak_sum_mb, total * os.sysconf("SC_PAGE_SIZE") // 2**20)
+            self._stop.wait(1)
+
+    def start(self, cmd, cwd=None, env=None, stdout=None, stderr=None):
+        p = subprocess.Popen(cmd, cwd=cwd, env={**os.environ, **(env or {})}, stdin=subprocess.DEVNULL,
+                             stdout=stdout or subprocess.DEVNULL, stderr=stderr or subprocess.DEVNULL,
+                             start_new_session=True)
+        self.procs[p.pid] = p
+        return p
+
+    def reap(self, pid=-1):
+        """Waits for one process of this run: (pid, exit code, peak MB)."""
+        pid, status, ru = os.wait4(pid, 0)
+        rc = os.waitstatus_to_exitcode(status)
+        if pid in self.procs:
+            self.procs.pop(pid).returncode = rc
+        return pid, rc, ru.ru_maxrss // 1024
+
+    def run(self, cmd, out_path=None, err_path=None, **kw):
+        """Runs cmd to its end: (exit code, peak MB, seconds)."""
+        t0 = time.time()
+        with open(out_path or os.devnull, "w") as o, open(err_path or os.devnull, "w") as e:
+            p = self.start(cmd, stdout=o, stderr=e, **kw)
+            _, rc, mb = self.reap(p.pid)
+        return rc, mb, int(time.time() - t0)
+
+    def stop(self):
+        for g in list(self.procs):
+            try:
+                os.killpg(g, signal.SIGTERM)
+            except OSError:
+                pass
+        for g in list(self.procs):
+            try:
+                self.reap(g)
+            except ChildProcessError:
+                self.procs.pop(g, None)
+        self._stop.set()
+
+
+    def pool(self, queue, jobs, mem_mb, start, finish):
+        """Runs the jobs of `queue` (each a dict with est_mb, its expected peak; 0:
+        unknown, taken as 3500 MB) at most `jobs` at a time: a job starts when the
+        expected peaks of the running jobs and its own stay within mem_mb and its
+        own (plus 512 MB) is free on the machine now; the first job always starts.
+        start(job) returns its Popen; finish(job, exit code, peak MB, seconds) runs
+        as each one ends (an exception stops the pool's other processes)."""
+        def est_mb(b):
+            return b["est_mb"] if b["est_mb"] > 0 else 3500
+
+        def mem_avail_mb():
+            try:
+                m = re.search(r"^MemAvailable:\s+(\d+)", Path("/proc/meminfo").read_text(), re.M)
+                return int(m.group(1)) // 1024
+            except (OSError, AttributeError):
+                return 10**6
+
+        pending, running = list(queue), {}
+        while pending or running:
+            while pending and len(running) < jobs:
+                used = sum(est_mb(b) for b, _ in running.values())
+                avail = mem_avail_mb()
+                pick = next((b for b in pending if not running or
+                             (used + est_mb(b) <= mem_mb and est_mb(b) + 512 <= avail)), None)
+                if pick is None:
+                    break
+                pending.remove(pick)
+                p = start(pick)
+                running[p.pid] = (pick, time.time())
+            pid, rc, mb = self.reap()
+            if pid not in running:
+                continue
+            b, t0 = running.pop(pid)
+            try:
+                finish(b, rc, mb, int(time.time() - t0))
+            except BaseException:
+                self.stop()
+                raise
+
+
+def gen_package(gen, dmax, par):
+    """The package of the configuration from gen_rtl_pkg, the one check of DMAX
+    and PAR (exit 2 with its message)."""
+    if not (Path(gen).is_file() and os.access(gen, os.X_OK)):
+        raise FlowError(f"gen_rtl_pkg not found at {gen} (make synth builds it; or: "
+                        f"cmake --build build --target gen_rtl_pkg)", 2)
+    r = subprocess.run([gen, "--dmax", dmax, "--par", par], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise FlowError(r.stderr.strip() or f"gen_rtl_pkg failed (exit {r.returncode})", 2)
+    return r.stdout
+
+
+def default_out(build, dmax, par):
+    if par != "1":
+        return Path(build) / f"synth_dmax{dmax}_par{par}"
+    return Path(build) / ("synth" if dmax == "64" else f"synth_dmax{dmax}")
+
