@@ -29,6 +29,11 @@
 #      errors, abort with bursts in flight, 4 KiB;
 #   3. mcadsw_sim_random --cases 40 --seed 2026 --fail-fast: random sizes, D, modes,
 #      strides, latencies, interrupts, each frame against the reference.
+#   4. cycles: the frames' cycle counts the stages print (engine and AXI test lines,
+#      random cases) against those of the design as written (its run, below): a
+#      mutant that changes only timing changed the CYCLES counter a user reads
+#      (the reference has no cycle model, so the design as written is the oracle
+#      for timing, as make sim's cycle comparison is).
 # A mutant is killed when a stage fails, crashes (an RTL assertion, a combinational
 # loop the model cannot settle) or runs out of its time (TIMEOUT seconds a stage,
 # default 300; the harness's own cycle limits end a hung frame long before).
@@ -121,13 +126,17 @@ else
   bin=$out/cmake/bin
 
   # 3. The kill suite on one mutant: prints "outcome<TAB>test".
+  stages_list() {
+    printf '%s\n' \
+      "engine|$bin/rtl_engine_test_mut --gtest_fail_fast --gtest_brief=1 --gtest_filter=-*DeathTest*" \
+      "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1" \
+      "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast"
+  }
   kill_suite() {
     local k=$1 log=$2 rc
     : > "$log"
-    local -a stages=(
-      "engine|$bin/rtl_engine_test_mut --gtest_fail_fast --gtest_brief=1 --gtest_filter=-*DeathTest*"
-      "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1"
-      "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast")
+    local -a stages
+    mapfile -t stages < <(stages_list)
     for s in "${stages[@]}"; do
       local name=${s%%|*} cmd=${s#*|}
       echo "== $name: $cmd" >> "$log"
@@ -146,14 +155,43 @@ else
         return
       fi
     done
+    # 4. Timing: every stage prints each frame's cycle count (the CYCLES counter a
+    # user reads); a mutant whose counts differ from the design as written (the
+    # baseline run's log) changed an output too.
+    if [ "$k" != 0 ]; then
+      local pat='^(case +[0-9]+ |[0-9]+x[0-9]+ D=[0-9]+: |sim-random: )'
+      local diff_line
+      diff_line=$(diff <(grep -E "$pat" "$out/baseline.log") <(grep -E "$pat" "$log") | grep -m1 '^>' || true)
+      if [ -n "$diff_line" ]; then
+        echo "== cycles: differ from the design as written: ${diff_line#> }" >> "$log"
+        local first=${diff_line#> }
+        first=${first%%:*}
+        printf 'killed\tcycles:%s\n' "$(cut -c1-40 <<< "${first// /_}")"
+        return
+      fi
+    fi
     printf 'survived\t-\n'
   }
 
+  # The design as written: the three stages at once (on as many cores; the logs
+  # joined in the suite's order), every one must pass.
   echo "mutate: the design as written (mutsel = 0) through the kill suite"
   t0=$(date +%s)
-  base=$(kill_suite 0 "$out/baseline.log")
-  [ "${base%%$'\t'*}" = survived ] ||
-    die "the unmutated model fails the kill suite (${base#*$'\t'}; log: $out/baseline.log): fix this first"
+  mapfile -t base_stages < <(stages_list)
+  : > "$out/baseline.log"
+  for i in "${!base_stages[@]}"; do
+    s=${base_stages[$i]}
+    { echo "== ${s%%|*}: ${s#*|}"; rc=0; MCADSW_MUTANT=0 timeout -k 10 "$stage_timeout" ${s#*|} 2>&1 || rc=$?
+      echo "== exit $rc"; } > "$out/baseline_$i.log" &
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  done
+  wait
+  for i in "${!base_stages[@]}"; do
+    cat "$out/baseline_$i.log" >> "$out/baseline.log"
+    tail -1 "$out/baseline_$i.log" | grep -qx '== exit 0' ||
+      die "the unmutated model fails the kill suite's ${base_stages[$i]%%|*} stage (log: $out/baseline.log): fix this first"
+  done
+  rm -f "$out"/baseline_[0-9]*.log
   echo "mutate: unmutated model passes the kill suite in $(( $(date +%s) - t0 )) s"
 
   # 4. Which mutants: all, a list, or a seeded sample (a linear congruential
@@ -187,14 +225,14 @@ else
       print k, who, key }' "$out/instances.txt" "$out/list.ys" > "$out/mutants.tsv"
 
   # 5. Run them.
-  echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames"
+  echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames, cycle counts"
   if [ -n "${MUTANTS:-}" ]; then     # re-run these, keep the other results of the last run
     for k in $picks; do rm -f "$out/results/$k" "$out/logs/mutant_$k.log"; done
   else
     rm -rf "$out/logs" "$out/results"
   fi
   mkdir -p "$out/logs" "$out/results"
-  export -f kill_suite
+  export -f kill_suite stages_list
   export bin stage_timeout out
   tstart=$(date +%s)
   for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '

@@ -7,7 +7,8 @@
 //   - a response arrives within a bound (no hang).
 // The master's own side follows the same rules: VALID held with a stable
 // payload until READY, AW and W raised independently after random delays (either
-// may come first), one transaction at a time.
+// may come first), one transaction at a time (write_pipelined: writes back to
+// back, the next AW and W before the previous B).
 //
 // The bench supplies `cycle`: one clock cycle of the model and everything around
 // it (its memory, the waves), which calls `at_sample` once the outputs of the
@@ -21,6 +22,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mcadsw::sim {
 
@@ -79,6 +82,54 @@ class AxilDriver {
         return bresp;
       }
     }
+  }
+
+  // Several writes back to back, as a master with more than one write in flight
+  // would send them: each AW and each W is offered as soon as the previous one on
+  // its channel was accepted (not after its B), and BREADY stays low for the first
+  // `hold_b` cycles, so the slave sees the next AW and W while a B waits (it may
+  // hold them off with AWREADY / WREADY). Returns the BRESPs in order.
+  std::vector<int> write_pipelined(const std::vector<std::pair<uint32_t, uint32_t>>& writes, long hold_b) {
+    size_t aw_next = 0, w_next = 0;
+    std::vector<int> bresp;
+    long aw_wait = delay(), w_wait = delay();
+    for (long n = 0; bresp.size() < writes.size(); ++n) {
+      if (n > kLimit) fail("pipelined writes: " + std::to_string(bresp.size()) + " of " +
+                           std::to_string(writes.size()) + " B responses");
+      if (aw_next < writes.size() && !t_.s_awvalid_i && aw_wait-- <= 0) {
+        t_.s_awvalid_i = 1;
+        t_.s_awaddr_i = writes[aw_next].first;
+      }
+      if (w_next < writes.size() && !t_.s_wvalid_i && w_wait-- <= 0) {
+        t_.s_wvalid_i = 1;
+        t_.s_wdata_i = writes[w_next].second;
+        t_.s_wstrb_i = 0xF;
+      }
+      t_.s_bready_i = n >= hold_b && !coin();
+      bool aw_hs = false, w_hs = false, b_hs = false;
+      int resp = 0;
+      tick([&] {
+        aw_hs = t_.s_awvalid_i && t_.s_awready_o;
+        w_hs = t_.s_wvalid_i && t_.s_wready_o;
+        b_hs = t_.s_bvalid_o && t_.s_bready_i;
+        resp = t_.s_bresp_o;
+        aw_accepted_ += aw_hs;
+        w_accepted_ += w_hs;
+      });
+      if (aw_hs) {
+        t_.s_awvalid_i = 0;
+        ++aw_next;
+        aw_wait = delay();
+      }
+      if (w_hs) {
+        t_.s_wvalid_i = 0;
+        ++w_next;
+        w_wait = delay();
+      }
+      if (b_hs) bresp.push_back(resp);
+    }
+    t_.s_bready_i = 0;
+    return bresp;
   }
 
   // Returns RDATA; *resp gets RRESP.

@@ -75,6 +75,9 @@ class SocDut : public BenchDut {
     RegisterPort port;
     port.write = [this](uint32_t off, uint32_t v) { return axi_.write(off, v); };
     port.read = [this](uint32_t off, int* resp) { return axi_.read(off, resp); };
+    port.write_pipelined = [this](const std::vector<std::pair<uint32_t, uint32_t>>& w, long hold_b) {
+      return axi_.write_pipelined(w, hold_b);
+    };
     port.cycles = cycles;
     return port;
   }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "axi_memory.hpp"
@@ -61,6 +62,10 @@ struct EngineResult {
   bool timed_out = false;
   bool error = false;            // engine rejected the configuration
   int error_code = 0;
+  bool done = false;             // STATUS.DONE after the frame (a rejected start sets it too)
+  // run_raw: of three further STATUS reads (one, none and two idle cycles after
+  // the previous one), how many differed from the first read (a status must hold).
+  int status_changes = 0;
   double sim_seconds = 0;
   std::string report;            // first mismatches, human-readable
   Plane disparity;               // what the engine wrote (sub-pixel mode: value / 16)
@@ -118,7 +123,7 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 
 // Runs one frame with a raw configuration and reports the engine's status,
 // without comparing (fault tests: rejected configurations); any write is
-// counted in bus.bad_writes.
+// counted in bus.bad_writes. STATUS is read again three times (status_changes).
 EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
 
 // The SoC's AXI4-Lite register port (mcadsw_top, engine idle after reset),
@@ -128,6 +133,10 @@ struct RegisterPort {
   std::function<int(uint32_t offset, uint32_t data)> write;
   std::function<uint32_t(uint32_t offset, int* resp)> read;
   std::function<void(long n)> cycles;
+  // Writes back to back, the next AW and W offered before the previous B (BREADY
+  // low for the first `hold_b` cycles); the BRESPs in order.
+  std::function<std::vector<int>(const std::vector<std::pair<uint32_t, uint32_t>>& writes, long hold_b)>
+      write_pipelined;
 };
 // Runs `script` on a fresh SoC whose AXI4 port faces 1 MiB of memory that
 // nothing may touch: the result counts any access (bad_reads, bad_writes).

@@ -178,6 +178,42 @@ TEST(Engine, CostsNearTheAccumulatorsTopBits) {
   }
 }
 
+// Colour distances at weight thresholds above 255 (found by `make mutate`: a
+// threshold compare with bit 1 of a threshold of 256 or more toggled survived; the
+// default table's thresholds lie below 256). The table halves the weight every 4
+// levels from 258 to 282 (every threshold has bits 8 and 1 set) and noise pairs
+// put many of a window's colour distances (sum of three absolute differences,
+// centred near 255) within 2 of a threshold; raw and sub-pixel output.
+TEST(Engine, ColourDistancesAtThresholdsAbove255) {
+  std::mt19937 rng(16);
+  const auto table_from = [](int first) {
+    WeightTable t(kWeightTableSize);
+    for (int dc = 0; dc < kWeightTableSize; ++dc) {
+      const int halvings = dc < first ? 0 : 1 + (dc - first) / 4;
+      t[dc] = halvings > kWeightShiftMax ? 0 : uint8_t(kWeightMax >> halvings);
+    }
+    return t;
+  };
+  Config cfg;
+  cfg.disparities = 11;
+  cfg.table = table_from(258);
+  check_weight_table(cfg.table);
+  const YuvImage l = test::random_yuv(40, 26, rng), r = test::random_yuv(40, 26, rng);
+  // The stimulus reaches the thresholds: every threshold 2 lower changes many pixels.
+  Config lower = cfg;
+  lower.table = table_from(256);
+  const Plane a = disparity_map_blocks(l, r, cfg), b = disparity_map_blocks(l, r, lower);
+  long changed = 0;
+  for (size_t i = 0; i < a.px.size(); ++i) changed += a.px[i] != b.px[i];
+  EXPECT_GT(changed, 20) << "thresholds 2 lower change too few pixels: the test is weak";
+  for (const bool sub : {false, true}) {
+    SCOPED_TRACE(sub ? "sub-pixel" : "raw");
+    EngineOptions opt;
+    opt.subpixel = sub;
+    expect_exact(sim::run_engine(l, r, cfg, opt));
+  }
+}
+
 // The widest frame (kMaxWidth columns): column and address bits above 1023 (found by
 // `make mutate`: the random cases this wide were flat, striped or a real crop
 // replicated beyond its border, so a column read 1024 too far left gave the same
@@ -434,7 +470,9 @@ TEST(Engine, LrModeFaultsAndBackToBackFrames) {
 }
 
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,
-// finishes at once and writes nothing.
+// finishes at once (STATUS.DONE with ERROR, the code steady over reads a cycle
+// apart and two apart: `make mutate` found a code that alternated from cycle to
+// cycle, and DONE left clear, both passing a single read) and writes nothing.
 TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   const sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 60, 40, 16};
   struct Bad {
@@ -559,7 +597,9 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
     }
     EXPECT_FALSE(r.timed_out) << b.what;
     EXPECT_TRUE(r.error) << b.what;
+    EXPECT_TRUE(r.done) << b.what << ": STATUS.DONE not set by the rejected start";
     EXPECT_EQ(r.error_code, b.code) << b.what;
+    EXPECT_EQ(r.status_changes, 0) << b.what << ": STATUS changed between reads";
     EXPECT_EQ(r.bus.bad_writes, 0) << b.what << ": the engine wrote to memory";
     EXPECT_EQ(r.bus.bad_reads, 0) << b.what << ": the engine read memory";
   }
