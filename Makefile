@@ -110,7 +110,7 @@ formal: bootstrap
 	@scripts/formal.sh $(BUILD_DIR) $(if $(SELFTEST),--selftest)
 
 ## mutate: N=200 SEED=1 Yosys mutants of the flattened design against the kill suite; survivors
-##   must be listed in tests/mutate/survivors.txt (SAMPLE=20 a seeded sample, as CI runs)
+##   must be listed in tests/mutate/survivors.txt (SAMPLE=12 a seeded sample, as CI runs)
 mutate: bootstrap
 	@N=$(N) SEED=$(SEED) SAMPLE=$(SAMPLE) MUTANTS="$(MUTANTS)" JOBS=$(JOBS) \
 	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh

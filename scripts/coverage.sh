@@ -24,21 +24,40 @@ cmake --build "$build" --target mcadsw_sim mcadsw_sim_random rtl_engine_test rtl
   tail -30 "$build/coverage_build.log"; echo "coverage: build failed" >&2; exit 1; }
 rm -rf "$out"; mkdir -p "$out/runs"
 export MCADSW_COVERAGE_DIR=$out/runs
-echo "coverage: engine tests (faults, invalid configurations)"
-"$build/bin/rtl_engine_test" > "$out/engine_test.log" 2>&1 || {
-  tail -20 "$out/engine_test.log"; echo "coverage: the engine tests failed" >&2; exit 1; }
-echo "coverage: AXI tests (bursts, response errors, abort, the register window)"
-"$build/bin/rtl_axi_test" > "$out/axi_test.log" 2>&1 || {
-  tail -20 "$out/axi_test.log"; echo "coverage: the AXI tests failed" >&2; exit 1; }
-echo "coverage: $n random cases (seed 2026)"
-"$build/bin/mcadsw_sim_random" --cases "$n" --seed 2026 > "$out/random.log" || {
-  tail -20 "$out/random.log"; echo "coverage: the random regression failed" >&2; exit 1; }
 data=$root/data
-echo "coverage: Tsukuba D=16 with random latency, CIF Teddy crop D=64"
-"$build/bin/mcadsw_sim" "$data/middlebury/tsukuba/left.png" "$data/middlebury/tsukuba/right.png" -d 16 \
-  --random-latency 3 > "$out/pairs.log"
-"$build/bin/mcadsw_sim" "$data/cif/teddy/left.png" "$data/cif/teddy/right.png" -d 64 \
-  --crop 60,40,120,60 >> "$out/pairs.log"
+# The stimulus, longest first, as many at a time as there are cores (each run
+# writes its own .dat file into runs/, merged below).
+names=("engine tests (faults, invalid configurations)"
+       "$n random cases (seed 2026)"
+       "AXI tests (bursts, response errors, abort, the register window)"
+       "Tsukuba D=16 with random latency, CIF Teddy crop D=64")
+logs=(engine_test random axi_test pairs)
+stimulus() {
+  case $1 in
+    0) "$build/bin/rtl_engine_test" ;;
+    1) "$build/bin/mcadsw_sim_random" --cases "$n" --seed 2026 ;;
+    2) "$build/bin/rtl_axi_test" ;;
+    3) "$build/bin/mcadsw_sim" "$data/middlebury/tsukuba/left.png" "$data/middlebury/tsukuba/right.png" -d 16 \
+         --random-latency 3 &&
+       "$build/bin/mcadsw_sim" "$data/cif/teddy/left.png" "$data/cif/teddy/right.png" -d 64 --crop 60,40,120,60 ;;
+  esac
+}
+par=$(nproc)
+for i in 0 1 2 3; do
+  while [ "$(jobs -rp | wc -l)" -ge "$par" ]; do wait -n || true; done
+  echo "coverage: ${names[$i]}"
+  { rc=0; stimulus "$i" > "$out/${logs[$i]}.log" 2>&1 || rc=$?; echo "$rc" > "$out/${logs[$i]}.rc"; } &
+done
+wait
+failed=0
+for i in 0 1 2 3; do
+  if [ "$(cat "$out/${logs[$i]}.rc" 2>/dev/null)" != 0 ]; then
+    tail -20 "$out/${logs[$i]}.log"
+    echo "coverage: ${names[$i]} failed ($out/${logs[$i]}.log)" >&2
+    failed=1
+  fi
+done
+[ "$failed" = 0 ] || exit 1
 
 verilator_coverage --write "$out/merged.dat" "$out"/runs/*.dat > /dev/null
 verilator_coverage --write-info "$out/coverage.info" "$out/merged.dat" > /dev/null

@@ -3,7 +3,7 @@
 #
 #   make mutate N=200 SEED=1            the N mutants Yosys's `mutate -list N -seed SEED`
 #                                       spreads over the design, each run against the kill suite
-#   make mutate N=200 SEED=1 SAMPLE=20  a seeded sample of 20 of those N (CI)
+#   make mutate N=200 SEED=1 SAMPLE=12  a seeded sample of 12 of those N (CI)
 #   JOBS=k                              mutants run in parallel (default: the cores)
 #   MUTANTS="3 17"                      only these mutants of the list, again (after a new
 #                                       test); the other results of the last run are kept
@@ -29,8 +29,8 @@
 #      errors, abort with bursts in flight, 4 KiB;
 #   3. mcadsw_sim_random --cases 40 --seed 2026 --fail-fast: random sizes, D, modes,
 #      strides, latencies, interrupts, each frame against the reference.
-#   4. cycles: the frames' cycle counts the stages print (engine and AXI test lines,
-#      random cases) against those of the design as written (its run, below): a
+#   4. cycles, after each stage: the frames' cycle counts it printed (engine and AXI
+#      test lines, random cases) against those of the design as written (its run, below): a
 #      mutant that changes only timing changed the CYCLES counter a user reads
 #      (the reference has no cycle model, so the design as written is the oracle
 #      for timing, as make sim's cycle comparison is).
@@ -132,6 +132,11 @@ else
       "axi|$bin/rtl_axi_test_mut --gtest_fail_fast --gtest_brief=1" \
       "random|$bin/mcadsw_sim_random_mut --cases 40 --seed 2026 --fail-fast"
   }
+  # The cycle-count lines of one stage's section of a kill-suite log.
+  stage_cycles() {
+    awk -v st="$2" '/^== / { on = ($2 == st ":") ; next }
+                    on && /^(case +[0-9]+ |[0-9]+x[0-9]+ D=[0-9]+: |sim-random: )/' "$1"
+  }
   kill_suite() {
     local k=$1 log=$2 rc
     : > "$log"
@@ -154,22 +159,22 @@ else
         printf 'killed\t%s\n' "${what// /_}"
         return
       fi
-    done
-    # 4. Timing: every stage prints each frame's cycle count (the CYCLES counter a
-    # user reads); a mutant whose counts differ from the design as written (the
-    # baseline run's log) changed an output too.
-    if [ "$k" != 0 ]; then
-      local pat='^(case +[0-9]+ |[0-9]+x[0-9]+ D=[0-9]+: |sim-random: )'
-      local diff_line
-      diff_line=$(diff <(grep -E "$pat" "$out/baseline.log") <(grep -E "$pat" "$log") | grep -m1 '^>' || true)
-      if [ -n "$diff_line" ]; then
-        echo "== cycles: differ from the design as written: ${diff_line#> }" >> "$log"
-        local first=${diff_line#> }
-        first=${first%%:*}
-        printf 'killed\tcycles:%s\n' "$(cut -c1-40 <<< "${first// /_}")"
-        return
+      # 4. Timing: the stage printed each frame's cycle count (the CYCLES counter
+      # a user reads); counts that differ from the design as written (the same
+      # stage in the baseline's log) are a changed output too.
+      if [ "$k" != 0 ]; then
+        local diff_line
+        diff_line=$(diff <(stage_cycles "$out/baseline.log" "$name") <(stage_cycles "$log" "$name") |
+                    grep -m1 '^>' || true)
+        if [ -n "$diff_line" ]; then
+          echo "== cycles: differ from the design as written: ${diff_line#> }" >> "$log"
+          local first=${diff_line#> }
+          first=${first%%:*}
+          printf 'killed\tcycles:%s\n' "$(cut -c1-40 <<< "${first// /_}")"
+          return
+        fi
       fi
-    fi
+    done
     printf 'survived\t-\n'
   }
 
@@ -232,7 +237,7 @@ else
     rm -rf "$out/logs" "$out/results"
   fi
   mkdir -p "$out/logs" "$out/results"
-  export -f kill_suite stages_list
+  export -f kill_suite stages_list stage_cycles
   export bin stage_timeout out
   tstart=$(date +%s)
   for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '

@@ -48,12 +48,22 @@ run_yosys() {
     echo "rtl_check: unary operator before a size cast, -(N)'(x) or ~N'(x), which Yosys 0.23 misreads; write ~(N'(x)) or 0 - N'(x)" >&2
     return 1
   fi
+  # One Yosys process: the files are parsed once, then each module is elaborated
+  # as the top from that parsed design (design -load), each step announced, so a
+  # warning or an error names its module.
+  local script="read_verilog -sv ${files[*]}; design -save parsed"
   for f in "${mods[@]}"; do
     top=${f%.sv}
-    out=$(yosys -q -p "read_verilog -sv ${files[*]}; hierarchy -check -top $top; proc" 2>&1) || {
-      echo "$out"; echo "rtl_check: yosys FAILED for $top" >&2; return 1; }
-    if grep -qi 'warning' <<<"$out"; then echo "$out"; echo "rtl_check: yosys warned for $top" >&2; return 1; fi
+    script+="; design -load parsed; log -stdout rtl_check: elaborating $top; hierarchy -check -top $top; proc"
   done
+  out=$(yosys -q -p "$script" 2>&1) || {
+    echo "$out"; echo "rtl_check: yosys FAILED for $(grep -o 'rtl_check: elaborating [a-z_0-9]*' <<<"$out" | tail -1 | cut -d' ' -f3)" >&2
+    return 1; }
+  if grep -qi 'warning' <<<"$out"; then
+    echo "$out"; echo "rtl_check: yosys warned (the module is the last 'elaborating' line above the warning)" >&2; return 1
+  fi
+  [ "$(grep -c '^rtl_check: elaborating ' <<<"$out")" = "${#mods[@]}" ] || {
+    echo "$out"; echo "rtl_check: yosys did not elaborate every module" >&2; return 1; }
   echo "rtl_check: yosys 0.23 parses and elaborates ${#mods[@]} modules"
 }
 
