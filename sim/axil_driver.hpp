@@ -59,27 +59,18 @@ class AxilDriver {
         t_.s_wstrb_i = strb;
       }
       if (aw_done && w_done) t_.s_bready_i = coin() ? 0 : 1;
-      bool aw_hs = false, w_hs = false, b_hs = false;
-      int bresp = 0;
-      tick([&] {
-        aw_hs = t_.s_awvalid_i && t_.s_awready_o;
-        w_hs = t_.s_wvalid_i && t_.s_wready_o;
-        b_hs = t_.s_bvalid_o && t_.s_bready_i;
-        bresp = t_.s_bresp_o;
-        aw_accepted_ += aw_hs;
-        w_accepted_ += w_hs;
-      });
-      if (aw_hs) {
+      const WriteHandshakes hs = write_cycle();
+      if (hs.aw) {
         aw_done = true;
         t_.s_awvalid_i = 0;
       }
-      if (w_hs) {
+      if (hs.w) {
         w_done = true;
         t_.s_wvalid_i = 0;
       }
-      if (b_hs) {
+      if (hs.b) {
         t_.s_bready_i = 0;
-        return bresp;
+        return hs.bresp;
       }
     }
   }
@@ -106,27 +97,18 @@ class AxilDriver {
         t_.s_wstrb_i = 0xF;
       }
       t_.s_bready_i = n >= hold_b && !coin();
-      bool aw_hs = false, w_hs = false, b_hs = false;
-      int resp = 0;
-      tick([&] {
-        aw_hs = t_.s_awvalid_i && t_.s_awready_o;
-        w_hs = t_.s_wvalid_i && t_.s_wready_o;
-        b_hs = t_.s_bvalid_o && t_.s_bready_i;
-        resp = t_.s_bresp_o;
-        aw_accepted_ += aw_hs;
-        w_accepted_ += w_hs;
-      });
-      if (aw_hs) {
+      const WriteHandshakes hs = write_cycle();
+      if (hs.aw) {
         t_.s_awvalid_i = 0;
         ++aw_next;
         aw_wait = delay();
       }
-      if (w_hs) {
+      if (hs.w) {
         t_.s_wvalid_i = 0;
         ++w_next;
         w_wait = delay();
       }
-      if (b_hs) bresp.push_back(resp);
+      if (hs.b) bresp.push_back(hs.bresp);
     }
     t_.s_bready_i = 0;
     return bresp;
@@ -188,6 +170,25 @@ class AxilDriver {
   }
   [[noreturn]] void fail(const std::string& what) {
     throw std::runtime_error("AXI4-Lite: " + what + " (cycle " + std::to_string(cycles_) + ")");
+  }
+
+  // One cycle of a write: the AW, W and B handshakes at its sample point (the
+  // accepted AWs and Ws counted for the monitor).
+  struct WriteHandshakes {
+    bool aw = false, w = false, b = false;
+    int bresp = 0;
+  };
+  WriteHandshakes write_cycle() {
+    WriteHandshakes hs;
+    tick([&] {
+      hs.aw = t_.s_awvalid_i && t_.s_awready_o;
+      hs.w = t_.s_wvalid_i && t_.s_wready_o;
+      hs.b = t_.s_bvalid_o && t_.s_bready_i;
+      hs.bresp = t_.s_bresp_o;
+      aw_accepted_ += hs.aw;
+      w_accepted_ += hs.w;
+    });
+    return hs;
   }
 
   // One cycle; at its sample point the monitor checks the slave's outputs (before
