@@ -74,6 +74,7 @@ class SocDut : public BenchDut {
   RegisterPort raw_registers(const std::function<void(long)>& cycles) override {
     RegisterPort port;
     port.write = [this](uint32_t off, uint32_t v) { return axi_.write(off, v); };
+    port.write_strobed = [this](uint32_t off, uint32_t v, uint32_t strb) { return axi_.write(off, v, strb); };
     port.read = [this](uint32_t off, int* resp) { return axi_.read(off, resp); };
     port.write_pipelined = [this](const std::vector<std::pair<uint32_t, uint32_t>>& w, long hold_b) {
       return axi_.write_pipelined(w, hold_b);

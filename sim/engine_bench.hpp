@@ -131,6 +131,8 @@ EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles
 // OKAY, 2 SLVERR), cycles runs the clock.
 struct RegisterPort {
   std::function<int(uint32_t offset, uint32_t data)> write;
+  // A write of the bytes whose WSTRB bit is set (bit k: byte k).
+  std::function<int(uint32_t offset, uint32_t data, uint32_t strb)> write_strobed;
   std::function<uint32_t(uint32_t offset, int* resp)> read;
   std::function<void(long n)> cycles;
   // Writes back to back, the next AW and W offered before the previous B (BREADY

@@ -178,6 +178,28 @@ TEST(Engine, CostsNearTheAccumulatorsTopBits) {
   }
 }
 
+// The right edge under the largest weights: window columns right of the image
+// must take the edge column's cost (the ping-pong buffer's edge rule), and with
+// every weight 64 and a faint texture (Y = 126 .. 130, where census bits flip on
+// differences of 1) in both views, a wrong cost there moves disparities of the
+// last 15 columns. Four widths, so that the last in-image column of the last two
+// blocks takes every value mod 4. (Written while analysing a `make mutate`
+// survivor in the census transformer's right bound, which this edge rule makes
+// equivalent: tests/mutate/survivors.txt.)
+TEST(Engine, FaintTextureAtTheRightEdge) {
+  std::mt19937 rng(17);
+  Config cfg;
+  cfg.disparities = 6;
+  for (auto& v : cfg.table) v = uint8_t(weight_from_code(7));
+  for (const int w : {40, 41, 42, 43}) {
+    SCOPED_TRACE("width " + std::to_string(w));
+    YuvImage l = test::flat_yuv(w, 8, 128), r = test::flat_yuv(w, 8, 128);
+    for (Plane* p : {&l.y, &r.y})
+      for (auto& v : p->px) v = uint8_t(126 + int(rng() % 5));
+    expect_exact(sim::run_engine(l, r, cfg, {}));
+  }
+}
+
 // Colour distances at weight thresholds above 255 (found by `make mutate`: a
 // threshold compare with bit 1 of a threshold of 256 or more toggled survived; the
 // default table's thresholds lie below 256). The table halves the weight every 4
