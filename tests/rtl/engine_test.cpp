@@ -549,6 +549,26 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   lr("LR mode with the right view as base", 8, [](auto& c) { c.mode = 6; });
   lr("LR mode, misaligned dL", 5, [](auto& c) { c.base_dl = 0x8001; });
   lr("LR mode, misaligned mask", 5, [](auto& c) { c.base_mask = 0xa002; });
+  // Every plane the mode reads or writes, one byte and two bytes off a word (a
+  // mutant forcing bit 1 of one write base to 0 in the check survived a sample
+  // of an earlier design, when only some planes had a misaligned case).
+  for (const uint32_t off : {1u, 2u}) {
+    const auto moved = [off](uint32_t sim::RawConfig::*base) {
+      return [off, base](auto& c) { c.*base += off; };
+    };
+    using R = sim::RawConfig;
+    with("misaligned left Y", 5, moved(&R::base_ly));
+    with("misaligned left U", 5, moved(&R::base_lu));
+    with("misaligned left V", 5, moved(&R::base_lv));
+    with("misaligned right Y", 5, moved(&R::base_ry));
+    with("misaligned output", 5, moved(&R::base_out));
+    lr("LR mode, misaligned right U", 5, moved(&R::base_ru));
+    lr("LR mode, misaligned right V", 5, moved(&R::base_rv));
+    lr("LR mode, misaligned output", 5, moved(&R::base_out));
+    lr("LR mode, misaligned dL", 5, moved(&R::base_dl));
+    lr("LR mode, misaligned dR", 5, moved(&R::base_dr));
+    lr("LR mode, misaligned mask", 5, moved(&R::base_mask));
+  }
   lr("LR mode, dL overlaps the output", 6, [](auto& c) { c.base_dl = 0x5000 + 64; });
   lr("LR mode, dR overlaps the mask", 6, [](auto& c) { c.base_dr = 0xa000 - 64; });
   lr("LR mode, mask overlaps the right U", 6, [](auto& c) { c.base_mask = 0x6000 + 128; });
