@@ -5,7 +5,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all help bootstrap configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls fpga formal mutate lint rtl-pkg bench report sweep clean
+.PHONY: all help bootstrap configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls power fpga formal mutate lint rtl-pkg bench report sweep clean
 
 all: build
 
@@ -88,6 +88,13 @@ synth: gen-rtl-pkg
 ## synth-check: make synth, then gates, slack and memory against constraints/budget.json (CI)
 synth-check: gen-rtl-pkg
 	@python3 flow/synth.py check $(SYNTH_ARGS)
+
+## power: mW at 95 MHz from the activity of real frames (raw, LR) on the netlist of make synth, by
+##   block, energy per CIF frame (build/power/report.md; make synth first; DMAX= PAR= as make synth)
+power: gen-rtl-pkg
+	@cmake --build $(BUILD_DIR) --target mcadsw_sim_core mcadsw_activity > /dev/null
+	@python3 flow/power.py $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --build $(abspath $(BUILD_DIR)) \
+	  --gen-rtl-pkg $(GEN_RTL_PKG)
 
 ## fpga: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_top, fit against XC7Z020
 ##   and XC7A100T (build/fpga/summary.json; TOP=mcadsw_regs a quick check, in build/fpga_<module>)

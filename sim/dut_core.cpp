@@ -5,6 +5,8 @@
 // gives the same fields) and STATUS and the counters onto the status ports.
 #include <verilated.h>
 
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -95,10 +97,102 @@ class PortBus : public driver::RegisterBus {
   std::map<uint32_t, uint32_t> written_;
 };
 
+// The ports of one clock cycle as a text line (--record-ports, `make power`):
+// each port in hex, as the rising edge finds it; the header names them. The
+// activity simulator (sim/activity/netlist_activity.cpp) replays the inputs on
+// the netlist and compares the outputs.
+class PortRecorder {
+ public:
+  explicit PortRecorder(const std::string& path) : f_(path) {
+    if (!f_) throw std::runtime_error("--record-ports: cannot write " + path);
+  }
+  template <typename T>
+  void scalar(const char* name, int width, bool input, T v) {
+    if (header_) {
+      names_ += std::string(" ") + name + ":" + std::to_string(width) + (input ? ":in" : ":out");
+      return;
+    }
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%llx ", static_cast<unsigned long long>(v));
+    line_ += buf;
+  }
+  template <std::size_t N>
+  void wide(const char* name, int width, bool input, const VlWide<N>& v) {
+    if (header_) {
+      names_ += std::string(" ") + name + ":" + std::to_string(width) + (input ? ":in" : ":out");
+      return;
+    }
+    for (int w = (width + 31) / 32 - 1; w >= 0; --w) {
+      char buf[12];
+      std::snprintf(buf, sizeof buf, "%08x", static_cast<unsigned>(v[w]));
+      line_ += buf;
+    }
+    line_ += ' ';
+  }
+  template <typename Model>
+  void record(const Model& t) {
+    scalar("rst_ni", 1, true, t.rst_ni);
+    scalar("start_i", 1, true, t.start_i);
+    scalar("cfg_base_ly_i", 32, true, t.cfg_base_ly_i);
+    scalar("cfg_base_lu_i", 32, true, t.cfg_base_lu_i);
+    scalar("cfg_base_lv_i", 32, true, t.cfg_base_lv_i);
+    scalar("cfg_base_ry_i", 32, true, t.cfg_base_ry_i);
+    scalar("cfg_base_ru_i", 32, true, t.cfg_base_ru_i);
+    scalar("cfg_base_rv_i", 32, true, t.cfg_base_rv_i);
+    scalar("cfg_base_out_i", 32, true, t.cfg_base_out_i);
+    scalar("cfg_base_dl_i", 32, true, t.cfg_base_dl_i);
+    scalar("cfg_base_dr_i", 32, true, t.cfg_base_dr_i);
+    scalar("cfg_base_mask_i", 32, true, t.cfg_base_mask_i);
+    scalar("cfg_stride_i", 32, true, t.cfg_stride_i);
+    scalar("cfg_out_stride_i", 32, true, t.cfg_out_stride_i);
+    scalar("cfg_tile_stride_i", 32, true, t.cfg_tile_stride_i);
+    scalar("cfg_mode_i", 3, true, t.cfg_mode_i);
+    scalar("cfg_lr_t_i", regs::kLrTBits, true, t.cfg_lr_t_i);
+    scalar("cfg_width_i", regs::kSizeBits, true, t.cfg_width_i);
+    scalar("cfg_height_i", regs::kSizeBits, true, t.cfg_height_i);
+    scalar("cfg_disp_i", kDispBits + 1, true, t.cfg_disp_i);
+    wide("cfg_thr_i", kWeightThresholds * kColorDistBits, true, t.cfg_thr_i);
+    scalar("mem_gnt_i", 1, true, t.mem_gnt_i);
+    scalar("mem_rvalid_i", 1, true, t.mem_rvalid_i);
+    scalar("mem_rdata_i", 32, true, t.mem_rdata_i);
+    scalar("mem_wr_idle_i", 1, true, t.mem_wr_idle_i);
+    scalar("busy_o", 1, false, t.busy_o);
+    scalar("done_o", 1, false, t.done_o);
+    scalar("error_o", 1, false, t.error_o);
+    scalar("error_code_o", 4, false, t.error_code_o);
+    scalar("cnt_cycles_o", 32, false, t.cnt_cycles_o);
+    scalar("cnt_words_read_o", 32, false, t.cnt_words_read_o);
+    scalar("cnt_words_written_o", 32, false, t.cnt_words_written_o);
+    scalar("cnt_stall_o", 32, false, t.cnt_stall_o);
+    scalar("mem_req_o", 1, false, t.mem_req_o);
+    scalar("mem_we_o", 1, false, t.mem_we_o);
+    scalar("mem_be_o", 4, false, t.mem_be_o);
+    scalar("mem_addr_o", 32, false, t.mem_addr_o);
+    scalar("mem_len_o", 4, false, t.mem_len_o);
+    scalar("mem_wdata_o", 32, false, t.mem_wdata_o);
+    if (header_) {
+      f_ << "ports" << names_ << "\n";
+      header_ = false;
+      record(t);
+      return;
+    }
+    line_.back() = '\n';
+    f_ << line_;
+    line_.clear();
+    if (!f_) throw std::runtime_error("--record-ports: write failed");
+  }
+
+ private:
+  std::ofstream f_;
+  bool header_ = true;
+  std::string names_, line_;
+};
+
 class CoreDut : public BenchDut {
  public:
-  CoreDut(VerilatedContext& ctx, MemoryModel& mem, Cycle cycle)
+  CoreDut(VerilatedContext& ctx, MemoryModel& mem, Cycle cycle, const std::string& record_ports)
       : mem_(mem), top_(&ctx), bus_(top_, std::move(cycle)) {
+    if (!record_ports.empty()) recorder_ = std::make_unique<PortRecorder>(record_ports);
     top_.clk_i = 0;
     top_.rst_ni = 0;
     top_.start_i = 0;
@@ -119,6 +213,10 @@ class CoreDut : public BenchDut {
     mem_.serve(top_);
   }
   void clock_high() override {
+    if (recorder_) {
+      top_.eval();  // the inputs the memory set after the fall, settled
+      recorder_->record(top_);
+    }
     top_.clk_i = 1;
     top_.eval();
   }
@@ -141,13 +239,14 @@ class CoreDut : public BenchDut {
   MemoryModel& mem_;
   Model top_;
   PortBus bus_;
+  std::unique_ptr<PortRecorder> recorder_;
 };
 
 }  // namespace
 
-std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions&,
+std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions& opt,
                                          BenchDut::Cycle cycle) {
-  return std::make_unique<CoreDut>(ctx, mem, std::move(cycle));
+  return std::make_unique<CoreDut>(ctx, mem, std::move(cycle), opt.record_ports);
 }
 
 }  // namespace mcadsw::sim

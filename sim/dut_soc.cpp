@@ -95,6 +95,8 @@ class SocDut : public BenchDut {
 
 std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions& opt,
                                          BenchDut::Cycle cycle) {
+  if (!opt.record_ports.empty())
+    throw std::runtime_error("--record-ports: the SoC build has no engine-core ports; use mcadsw_sim_core");
   return std::make_unique<SocDut>(ctx, mem, opt, std::move(cycle));
 }
 

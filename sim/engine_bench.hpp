@@ -46,6 +46,9 @@ struct EngineOptions {
   long max_cycles = 0;           // 0: derived from the frame size
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
+  // The engine core's ports, every cycle, to this file (the CORE build only:
+  // `make power`'s activity, sim/activity/netlist_activity.cpp); empty: none.
+  std::string record_ports;
   int max_reported = 10;         // mismatches printed
   // Directory for the second simulator (tests/icarus): the memory image and
   // configuration before the run, the disparity plane and counters after it.

@@ -4,7 +4,7 @@
 //              [--name NAME] [--gt GT --scale S --masks DIR] [--out OUT.png]
 //              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]
 //              [--subpixel] [--right] [--out-stride N] [--tiled] [--tile-stride N]
-//              [--origin ADDR] [--packed]
+//              [--origin ADDR] [--packed] [--record-ports FILE]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -26,7 +26,7 @@ const char* kUsage =
     "                  [--name NAME] [--gt GT.png --scale S --masks DIR] [--out OUT.png]\n"
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
     "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N] [--ar-interval N]\n"
-    "                  [--tiled] [--tile-stride N] [--origin ADDR] [--packed]\n"
+    "                  [--tiled] [--tile-stride N] [--origin ADDR] [--packed] [--record-ports FILE]\n"
     "  --latency N     AXI4 memory: N wait states before each burst's first R beat and each B\n"
     "  --random-latency SEED  AXI4 memory: 0..8 more wait states a burst, READY 70 % of the time\n"
     "  --ar-interval N AXI4 memory: an AR accepted at most once in N clocks (default 1)\n"
@@ -51,7 +51,9 @@ const char* kUsage =
     "  -T T            LR tolerance of the check, 0..63 (default 1)\n"
     "  --out-stride N  bytes per row of the output plane: a multiple of 4, at least the width\n"
     "                  (2 x the width with --subpixel); default: that rounded up to 4\n"
-    "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n";
+    "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n"
+    "  --record-ports FILE  the engine core's ports every cycle (mcadsw_sim_core only; make\n"
+    "                  power replays them on the netlist: sim/activity/netlist_activity.cpp)\n";
 
 // The clock of the waves and of constraints/mcadsw.sdc: the paper's 95 MHz (Table III).
 constexpr double kClockMHz = 1e6 / double(mcadsw::sim::kClockPeriodPs);
@@ -99,6 +101,7 @@ int main(int argc, char** argv) {
       else if (a == "--json") json = val();
       else if (a == "--waves") waves = val();
       else if (a == "--dump") opt.dump_dir = val();
+      else if (a == "--record-ports") opt.record_ports = val();
       else if (a == "--stride") opt.stride = stride(val(), "stride");
       else if (a == "--tiled") opt.tiled = true;
       else if (a == "--origin") opt.origin = mcadsw::parse_u32(val(), "origin");

@@ -1,0 +1,425 @@
+#!/usr/bin/env python3
+"""make power: the engine's power at 95 MHz from the activity of real frames.
+
+Method (docs/results.md, "Power"): the RTL engine core runs a CIF crop of Teddy at
+D = 64 in the raw mode and in the LR mode and records its ports every cycle
+(mcadsw_sim_core --record-ports); mcadsw_activity replays those inputs on the
+netlist OpenSTA times (BUILD/synth/mcadsw_engine_sta.v of `make synth`), checks its
+outputs against the RTL's in every cycle and counts every net's transitions and
+high cycles; OpenSTA (flow/power.tcl) sets that activity on every pin and reports
+the power from the OSU 0.18 um liberty's internal-power tables, by block. The
+memory macros have no liberty power: a first-order SRAM model (below) times the
+access counts of the same simulation. The clock net, driven by a port, is not in
+OpenSTA's figure: its C V^2 f from the liberty's clock-pin capacitances is added.
+
+Outputs: BUILD/power/summary.json and report.md (the previous ones are removed
+first, so a failed run leaves none). Python 3 standard library only."""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from flowlib import FLOW, LIBERTY, PREFIX, ROOT, FlowError, Run, default_out, gen_package, indent, log, tail  # noqa: E402
+
+FREQ_MHZ = 95.0                  # the paper's clock (Table III), constraints/mcadsw.sdc
+CIF = (352, 288)
+D = 64
+CROP = "140,117,72,54"           # 4 x 3 blocks of 18 x 18 inside Teddy's CIF frame
+IDLE_CYCLES = 2000
+LEFT = ROOT / "data" / "cif" / "teddy" / "left.png"
+RIGHT = ROOT / "data" / "cif" / "teddy" / "right.png"
+MODES = {"raw": [], "lr": ["--lr"]}
+
+# Instance prefix of the flat netlist -> the groups `make synth` reports.
+GROUP_OF = {"u_census_l": "census_left", "u_census_r": "census_right", "u_weight_gen": "weight_generator",
+            "u_cost_agg": "cost_aggregator_wta", "u_mem_ctrl": "memory_controller",
+            "u_rd_census_l": "memory_controller", "u_rd_census_r": "memory_controller",
+            "u_rd_weight": "memory_controller", "u_scheduler": "block_scheduler",
+            "u_depth_fifo": "depth_fifo", "u_post": "post_stage", "top": "top_registers_counters",
+            "u_cfg_check": "top_registers_counters", "u_frame_ctrl": "top_registers_counters",
+            "u_win_geom": "top_registers_counters"}
+
+# ---- Memory macros: a first-order SRAM energy model -----------------------------------------
+# After CACTI's decomposition (S. Wilton, N. Jouppi, "CACTI: an enhanced cache access and
+# cycle time model", IEEE JSSC 31(5), 1996): a word line across the W cells of the row, one
+# bit-line pair per bit spanning the S rows, a sense amplifier per bit, the row decoder.
+# Assumed 0.18 um parameters (an estimate, not a memory compiler's datasheet): gate oxide
+# 4 nm (8.6 fF/um^2), access transistor 0.3 um / 0.18 um (0.46 fF of gate), 0.5 fF of drain
+# junction, 0.2 fF/um of wire, a bit cell of 600 lambda^2 (2.2 um pitch, lambda = 0.09 um),
+# a read swing of 0.2 V on the bit line, 50 fJ a sense amplifier (15 fF switched), 20 fF of
+# decoder per address bit; the cell's leakage that of two INVX1 of the liberty.
+C_WL_CELL = 2 * 0.46e-15 + 2.2 * 0.2e-15     # two access gates + wire
+C_BL_CELL = 0.5e-15 + 2.2 * 0.2e-15          # one access drain + wire
+DV_READ = 0.2
+E_SA = 50e-15
+C_DEC_BIT = 20e-15
+MEM_MODEL = ("first-order SRAM model after CACTI (Wilton and Jouppi, IEEE JSSC 31(5) 1996): "
+             "word line W x 1.4 fF x V^2, bit lines W x S x 0.94 fF x V x 0.2 V (read) or x V^2 "
+             "(write), 50 fJ a sense amplifier a bit (read), 20 fF x V^2 an address bit; leakage "
+             "a bit = two INVX1 of the OSU liberty; assumed 0.18 um parameters, an estimate")
+
+
+def macro_energy(words, bits, vdd):
+    """(read J, write J) of one access to a words x bits macro."""
+    dec = math.ceil(math.log2(max(words, 2))) * C_DEC_BIT * vdd * vdd
+    wl = bits * C_WL_CELL * vdd * vdd
+    read = wl + bits * (words * C_BL_CELL * vdd * DV_READ + E_SA) + dec
+    write = wl + bits * words * C_BL_CELL * vdd * vdd + dec
+    return read, write
+
+
+# ---- The liberty: supply, clock-pin capacitances, leakage ------------------------------------
+def liberty_facts(path):
+    text = Path(path).read_text()
+    m = re.search(r"nom_voltage\s*:\s*([0-9.]+)", text)
+    if not m:
+        raise FlowError(f"no nom_voltage in {path}")
+    cells = {}
+    for cm in re.finditer(r"cell\s*\(\s*(\w+)\s*\)", text):
+        cells[cm.group(1)] = cm.start()
+    starts = sorted(cells.values()) + [len(text)]
+
+    def body(cell):
+        s = cells[cell]
+        return text[s:starts[starts.index(s) + 1]]
+
+    def pin_cap(cell, pin):
+        b = body(cell)
+        pm = re.search(r"pin\s*\(\s*" + pin + r"\s*\)\s*\{[^}]*?capacitance\s*:\s*([0-9.eE+-]+)", b)
+        if not pm:
+            raise FlowError(f"no capacitance of {cell}/{pin} in {path}")
+        return float(pm.group(1)) * 1e-12   # capacitive_load_unit (1,pf)
+
+    def leak(cell):
+        lm = re.search(r"cell_leakage_power\s*:\s*([0-9.eE+-]+)", body(cell))
+        return float(lm.group(1)) * 1e-9    # leakage_power_unit 1nW
+    return {"vdd": float(m.group(1)), "clk_cap": {c: pin_cap(c, "CLK") for c in ("DFFPOSX1", "DFFSR")},
+            "inv_leak": leak("INVX1")}
+
+
+# ---- Steps ----------------------------------------------------------------------------------
+def harness(args, out):
+    """(mcadsw_sim_core, mcadsw_activity) for the configuration: the build tree's for
+    DMAX = 64, PAR = 1; otherwise a tree of its own (as make gls does)."""
+    build = Path(args.build)
+    if args.dmax == "64" and args.par == "1":
+        tree = build
+    else:
+        tree = build / f"power_harness_dmax{args.dmax}_par{args.par}"
+        log(f"building the harness for DMAX = {args.dmax}, PAR = {args.par} ({tree})")
+        r = subprocess.run(["cmake", "-S", str(ROOT), "-B", str(tree), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+                            f"-DMCADSW_DMAX={args.dmax}", f"-DMCADSW_PAR={args.par}"],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            raise FlowError("cmake configure of the harness failed:\n" + indent(r.stdout.splitlines()[-20:]))
+        r = subprocess.run(["cmake", "--build", str(tree), "--target", "mcadsw_sim_core", "mcadsw_activity"],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            raise FlowError("building the harness failed:\n" + indent(r.stdout.splitlines()[-20:]))
+    sim, act = tree / "bin" / "mcadsw_sim_core", tree / "bin" / "mcadsw_activity"
+    for p in (sim, act):
+        if not p.is_file():
+            raise FlowError(f"{p} not found (make power builds it; or: cmake --build {tree} "
+                            f"--target mcadsw_sim_core mcadsw_activity)")
+    return sim, act
+
+
+def run_jobs(jobs, out):
+    """Runs the (name, cmd, log) jobs two at a time; each must exit 0."""
+    run = Run()
+    try:
+        queue = [{"name": n, "cmd": c, "log": lg, "est_mb": 600} for n, c, lg in jobs]
+
+        def start(j):
+            j["t0"] = time.time()
+            log(f"  {j['name']} started")
+            return run.start(j["cmd"], stdout=open(j["log"], "w"), stderr=subprocess.STDOUT)
+
+        def finish(j, rc, mb, secs):
+            if rc != 0:
+                raise FlowError(f"{j['name']} failed (exit {rc}; log {j['log']}):\n" + indent(tail(j["log"], 12)))
+            log(f"  {j['name']} done in {secs} s, peak {mb} MB")
+        run.pool(queue, 2, 8000, start, finish)
+    finally:
+        run.stop()
+
+
+def cycles_of(logfile):
+    m = re.search(r"\s(\d+) cycles\s", Path(logfile).read_text())
+    if not m:
+        raise FlowError(f"no cycle count in {logfile}")
+    return int(m.group(1))
+
+
+def read_results(path):
+    """flow/power.tcl's lines -> {run: {...}}."""
+    runs = {}
+    nets = None
+    for line in Path(path).read_text().splitlines():
+        f = line.split()
+        if not f:
+            continue
+        if f[0] == "netlist":
+            nets = (int(f[2]), int(f[4]))
+        elif f[0] == "run":
+            runs[f[1]] = {"period_ns": float(f[3]), "annotated_nets": int(f[5]), "annotated_pins": int(f[7]),
+                          "blocks": {}}
+        elif f[0] == "design":
+            v = [float(x) for x in f[2:]]
+            runs[f[1]]["total"] = v[0:4]
+            runs[f[1]]["sequential"] = v[4:8]
+            runs[f[1]]["combinational"] = v[8:12]
+        elif f[0] == "block":
+            runs[f[1]]["blocks"][(f[2], f[3])] = [float(x) for x in f[4:8]]
+    if nets is None:
+        raise FlowError(f"OpenSTA wrote no results ({path})")
+    return nets, runs
+
+
+def read_macros(path):
+    macros, cycles = [], None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("cycles "):
+                cycles = int(line.split()[1])
+            elif line.startswith("macro "):
+                _, name, cell, words, bits, reads, writes = line.split()
+                macros.append({"name": name, "cell": cell, "words": int(words), "bits": int(bits),
+                               "reads": int(reads), "writes": int(writes)})
+    if cycles is None:
+        raise FlowError(f"{path} is not an activity file (no 'cycles' line)")
+    return cycles, macros
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--dmax", default="64")
+    ap.add_argument("--par", default="1")
+    ap.add_argument("--build", default=str(ROOT / "build"))
+    ap.add_argument("--synth", help="the make synth output folder (default BUILD/synth[_dmax<N>][_par<P>])")
+    ap.add_argument("--out", help="output folder (default BUILD/power[_dmax<N>][_par<P>])")
+    ap.add_argument("--activity", help="reuse this folder's activity files (raw.frame.txt, raw.idle.txt, "
+                                       "lr.frame.txt, *.cycles) instead of simulating")
+    ap.add_argument("--gen-rtl-pkg", help="the package generator, the one check of DMAX and PAR "
+                                          "(default BUILD/bin/gen_rtl_pkg)")
+    ap.add_argument("--sta", default="sta")
+    ap.add_argument("--liberty", default=LIBERTY)
+    args = ap.parse_args()
+    PREFIX[0] = "power"
+    t_start = time.time()
+    suffix = "" if (args.dmax, args.par) == ("64", "1") else f"_dmax{args.dmax}" + (
+        f"_par{args.par}" if args.par != "1" else "")
+    out = Path(args.out or Path(args.build) / f"power{suffix}")
+    for stale in ("summary.json", "report.md"):
+        (out / stale).unlink(missing_ok=True)
+    gen_package(args.gen_rtl_pkg or Path(args.build) / "bin" / "gen_rtl_pkg", args.dmax, args.par)
+    out.mkdir(parents=True, exist_ok=True)
+    synth = Path(args.synth or default_out(args.build, args.dmax, args.par))
+    netlist, ram_lib = synth / "mcadsw_engine_sta.v", synth / "mcadsw_ram.lib"
+    for p in (netlist, ram_lib):
+        if not p.is_file():
+            raise FlowError(f"no {p.name} in {synth}: run make synth"
+                            f"{'' if not suffix else f' DMAX={args.dmax} PAR={args.par}'} first")
+    if shutil.which(args.sta) is None:
+        raise FlowError(f"OpenSTA ({args.sta}) not found (make bootstrap installs it)")
+    lib = liberty_facts(args.liberty)
+
+    # 1-2. Ports recorded by the RTL, activity of the netlist, the whole CIF frame's cycles.
+    act_dir = Path(args.activity) if args.activity else out
+    files = {m: act_dir / f"{m}.frame.txt" for m in MODES}
+    files["idle"] = act_dir / "raw.idle.txt"
+    if args.activity:
+        for p in list(files.values()) + [act_dir / f"{m}.cycles" for m in MODES]:
+            if not p.is_file():
+                raise FlowError(f"no activity file {p} (run make power without --activity first)")
+    else:
+        sim, act = harness(args, out)
+        log(f"recording the RTL core's ports: Teddy CIF crop {CROP}, D = {D}, raw and LR")
+        jobs = []
+        for m, flags in MODES.items():
+            jobs.append((f"RTL {m} crop", [str(sim), str(LEFT), str(RIGHT), "-d", str(D), "--crop", CROP, *flags,
+                                           "--record-ports", str(out / f"{m}.ports.txt")], out / f"{m}.rtl.log"))
+        run_jobs(jobs, out)
+        log("netlist activity (mcadsw_activity: every output compared with the RTL's every cycle), "
+            "and the whole CIF frame's cycles on the RTL")
+        jobs = []
+        for m in MODES:
+            hold = ["--hold", str(IDLE_CYCLES)] if m == "raw" else []
+            jobs.append((f"activity {m}", [str(act), str(netlist), str(out / f"{m}.ports.txt"), str(out / m), *hold],
+                         out / f"{m}.activity.log"))
+        for m, flags in MODES.items():
+            jobs.append((f"RTL {m} CIF frame", [str(sim), str(LEFT), str(RIGHT), "-d", str(D), *flags],
+                         out / f"{m}.cif.log"))
+        run_jobs(jobs, out)
+        for m in MODES:
+            (out / f"{m}.cycles").write_text(f"{cycles_of(out / f'{m}.cif.log')}\n")
+            (out / f"{m}.ports.txt").unlink()   # large; the activity files keep what counts
+    for p in files.values():
+        if not p.is_file():
+            raise FlowError(f"no activity file {p}")
+
+    # 3. OpenSTA.
+    period = 1000.0 / FREQ_MHZ
+    runs = [("raw", files["raw"], 1), ("raw_half_clock", files["raw"], 2), ("lr", files["lr"], 1),
+            ("idle", files["idle"], 1)]
+    res = out / "power_sta.txt"
+    log("OpenSTA: every pin's activity from the simulation, report_power by block")
+    env = {"LIBERTY": args.liberty, "RAM_LIB": str(ram_lib), "NETLIST": str(netlist), "PERIOD_NS": f"{period:.6f}",
+           "RUNS": " ".join("{%s %s %d}" % (n, f, k) for n, f, k in runs), "OUT": str(res)}
+    t0 = time.time()
+    r = subprocess.run([args.sta, "-no_splash", "-exit", str(FLOW / "power.tcl")], env={**os.environ, **env},
+                       capture_output=True, text=True)
+    (out / "sta.log").write_text(r.stdout + r.stderr)
+    if r.returncode != 0 or "Error" in r.stdout + r.stderr:
+        raise FlowError(f"OpenSTA failed (log {out}/sta.log):\n" + indent(tail(out / "sta.log", 15)))
+    log(f"  OpenSTA done in {int(time.time() - t0)} s")
+    (nets, cells), sta = read_results(res)
+
+    # 4. Figures.
+    vdd, f_hz = lib["vdd"], FREQ_MHZ * 1e6
+    flops = {c: 0 for c in lib["clk_cap"]}
+    for line in netlist.open():
+        m = re.match(r"\s*(DFFPOSX1|DFFSR)\s", line)
+        if m:
+            flops[m.group(1)] += 1
+    clk_net_w = sum(n * lib["clk_cap"][c] for c, n in flops.items()) * vdd * vdd * f_hz
+    summary = {"clock_mhz": FREQ_MHZ, "vdd": vdd, "liberty": args.liberty, "netlist": str(netlist),
+               "crop": CROP, "disparities": D, "netlist_nets": nets, "netlist_cells": cells,
+               "flip_flops": flops, "memory_model": MEM_MODEL, "runs": {}}
+    groups_all = sorted(set(GROUP_OF.values()))
+    for name, run in sta.items():
+        mode = "raw" if name.startswith("raw") else name
+        cycles, macros = read_macros(files[mode])
+        mem_w = 0.0
+        mem_leak = 0.0
+        mem_by_group = {}
+        for mc in macros:
+            er, ew = macro_energy(mc["words"], mc["bits"], vdd)
+            w = (mc["reads"] * er + mc["writes"] * ew) / cycles * f_hz / run["period_ns"] * period
+            leak = mc["words"] * mc["bits"] * 2 * lib["inv_leak"]
+            mem_w += w
+            mem_leak += leak
+            g = GROUP_OF.get(mc["name"].split(".")[0], "other")
+            mem_by_group[g] = mem_by_group.get(g, 0.0) + w + leak
+        internal, switching, leakage, _ = run["total"]
+        clk = clk_net_w * period / run["period_ns"]
+        by_group = {g: {"logic_w": 0.0, "memory_w": mem_by_group.get(g, 0.0)} for g in groups_all}
+        for (blk, kind), v in run["blocks"].items():
+            g = GROUP_OF.get(blk)
+            if g is None:
+                raise FlowError(f"instance prefix {blk} has no group (flow/power.py GROUP_OF)")
+            by_group[g]["logic_w"] += v[3]
+        total = internal + switching + leakage + clk + mem_w + mem_leak
+        summary["runs"][name] = {
+            "period_ns": run["period_ns"], "cycles_simulated": cycles,
+            "annotated_nets": run["annotated_nets"], "annotated_pins": run["annotated_pins"],
+            "annotated_fraction": run["annotated_nets"] / nets,
+            "logic_internal_w": internal, "logic_switching_w": switching, "logic_leakage_w": leakage,
+            "sequential_w": run["sequential"][3], "combinational_w": run["combinational"][3],
+            "clock_net_w": clk, "memory_dynamic_w": mem_w, "memory_leakage_w": mem_leak,
+            "memory_accesses": {mc["name"]: [mc["reads"], mc["writes"]] for mc in macros},
+            "total_w": total, "dynamic_w": total - leakage - mem_leak, "by_group": by_group}
+
+    # Checks: a frame costs more than idling; twice the period, half the dynamic power.
+    raw, half, idle = summary["runs"]["raw"], summary["runs"]["raw_half_clock"], summary["runs"]["idle"]
+    if not raw["total_w"] > idle["total_w"]:
+        raise FlowError(f"check failed: the busy engine ({raw['total_w']:.4f} W) does not exceed the idle one "
+                        f"({idle['total_w']:.4f} W)")
+    ratio = half["dynamic_w"] / raw["dynamic_w"]
+    if abs(ratio - 0.5) > 0.005:
+        raise FlowError(f"check failed: at half the clock the dynamic power is {ratio:.4f} of it, not 0.5")
+    if raw["annotated_fraction"] < 0.999:
+        raise FlowError(f"only {raw['annotated_fraction']:.1%} of the nets were annotated from the simulation")
+    summary["checks"] = {"busy_over_idle": raw["total_w"] / idle["total_w"], "half_clock_dynamic_ratio": ratio}
+    # The clock, told apart: the flip-flops' clock pins (their internal power when no
+    # data moves: the idle run's sequential internal power) and the clock net.
+    summary["clock"] = {"flip_flop_clock_pins_w": sta["idle"]["sequential"][0], "clock_net_w": idle["clock_net_w"],
+                        "total_w": sta["idle"]["sequential"][0] + idle["clock_net_w"],
+                        "share_of_raw_frame": (sta["idle"]["sequential"][0] + idle["clock_net_w"]) / raw["total_w"]}
+
+    # Energy per CIF frame, pixel and disparity evaluation (the crop's mean power over the
+    # whole frame's cycles, measured on the RTL); scaled to 90 nm / 1.0 V.
+    scale = (0.09 / 0.18) * (1.0 / vdd) ** 2
+    summary["scaling_rule"] = ("dynamic energy C V^2 with C proportional to the feature size: x (90/180) x "
+                               f"(1.0/{vdd})^2 = {scale:.3f}; leakage not scaled (an estimate)")
+    summary["frames"] = {}
+    for mode in MODES:
+        cycles = int((act_dir / f"{mode}.cycles").read_text())
+        run = summary["runs"][mode]
+        t = cycles / f_hz
+        e = run["total_w"] * t
+        e_dyn = run["dynamic_w"] * t
+        passes = 2 if mode == "lr" else 1
+        px = CIF[0] * CIF[1]
+        summary["frames"][mode] = {
+            "cif_cycles": cycles, "fps": f_hz / cycles, "energy_j": e, "energy_per_pixel_j": e / px,
+            "energy_per_disparity_evaluation_j": e / (px * D * passes), "disparity_passes": passes,
+            "energy_90nm_estimate_j": e_dyn * scale, "energy_per_pixel_90nm_estimate_j": e_dyn * scale / px,
+            "power_90nm_estimate_w": run["dynamic_w"] * scale}
+    summary["seconds"] = int(time.time() - t_start)
+    (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
+    write_report(out, summary)
+    log(f"summary {out}/summary.json, report {out}/report.md ({summary['seconds']} s)")
+    for mode in MODES:
+        fr, rn = summary["frames"][mode], summary["runs"][mode]
+        log(f"  {mode}: {rn['total_w'] * 1e3:.1f} mW at {FREQ_MHZ:g} MHz, {fr['energy_j'] * 1e3:.2f} mJ a CIF frame "
+            f"at D = {D}, {fr['energy_per_pixel_j'] * 1e9:.1f} nJ a pixel")
+    log(f"  idle (configured, not started): {idle['total_w'] * 1e3:.1f} mW")
+
+
+def write_report(out, s):
+    mw = lambda w: f"{w * 1e3:.1f}" if w >= 1e-3 or w == 0 else f"{w * 1e3:.3f}"  # noqa: E731
+    r = s["runs"]
+    lines = [
+        "# Power of the engine (`make power`)", "",
+        f"OSU 0.18 um, {s['vdd']} V, {s['clock_mhz']:g} MHz; activity of a Teddy CIF crop ({s['crop']}) at "
+        f"D = {s['disparities']} simulated on the netlist ({r['raw']['annotated_nets']} of {s['netlist_nets']} nets, "
+        f"{r['raw']['annotated_fraction']:.1%}, annotated from the simulation; every output equal to the RTL's in "
+        "every cycle). Zero-delay activity: glitches are not counted.", "",
+        "| mW | raw frame | LR frame | idle (configured, not started) |", "|---|---|---|---|"]
+    rows = [("logic, internal (OpenSTA)", "logic_internal_w"), ("logic, switching (OpenSTA)", "logic_switching_w"),
+            ("logic, leakage (OpenSTA)", "logic_leakage_w"), ("  of it sequential (flip-flops)", "sequential_w"),
+            ("  of it combinational", "combinational_w"), ("clock net (C V^2 f of the clock pins)", "clock_net_w"),
+            ("memories, dynamic (model)", "memory_dynamic_w"), ("memories, leakage (model)", "memory_leakage_w"),
+            ("**total**", "total_w")]
+    for label, key in rows:
+        lines.append(f"| {label} | {mw(r['raw'][key])} | {mw(r['lr'][key])} | {mw(r['idle'][key])} |")
+    lines += ["", "By block (logic from OpenSTA, memories from the model), mW:", "",
+              "| block | raw logic | raw memories | LR logic | LR memories | idle |", "|---|---|---|---|---|---|"]
+    for g in sorted(r["raw"]["by_group"]):
+        a, b, c = r["raw"]["by_group"][g], r["lr"]["by_group"][g], r["idle"]["by_group"][g]
+        lines.append(f"| {g} | {mw(a['logic_w'])} | {mw(a['memory_w'])} | {mw(b['logic_w'])} | {mw(b['memory_w'])} "
+                     f"| {mw(c['logic_w'] + c['memory_w'])} |")
+    lines += ["", "Energy of a CIF frame (352 x 288) at D = 64: the crop's mean power over the frame's cycles "
+              "(measured on the RTL core):", "",
+              "| mode | cycles | fps | mJ a frame | nJ a pixel | pJ a disparity evaluation | 90 nm / 1.0 V estimate, nJ a pixel |",
+              "|---|---|---|---|---|---|---|"]
+    for mode, f in s["frames"].items():
+        lines.append(f"| {mode} | {f['cif_cycles']} | {f['fps']:.1f} | {f['energy_j'] * 1e3:.2f} | "
+                     f"{f['energy_per_pixel_j'] * 1e9:.1f} | {f['energy_per_disparity_evaluation_j'] * 1e12:.1f} | "
+                     f"{f['energy_per_pixel_90nm_estimate_j'] * 1e9:.2f} |")
+    c = s["clock"]
+    lines += ["", f"The clock: {mw(c['flip_flop_clock_pins_w'])} mW in the flip-flops' clock pins (the idle run's "
+              f"sequential internal power) and {mw(c['clock_net_w'])} mW in the clock net, "
+              f"{c['share_of_raw_frame']:.0%} of the raw frame's power; no flip-flop is clock-gated."]
+    lines += ["", f"Checks: the raw frame's power is {s['checks']['busy_over_idle']:.2f} x the idle power; at half "
+              f"the clock the dynamic power is {s['checks']['half_clock_dynamic_ratio']:.4f} of it.", "",
+              f"Memory model: {s['memory_model']}.", "", f"Scaling: {s['scaling_rule']}.", ""]
+    (out / "report.md").write_text("\n".join(lines))
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except FlowError as e:
+        print(f"power: {e}", file=sys.stderr)
+        sys.exit(e.code)
+    except KeyboardInterrupt:
+        sys.exit(130)

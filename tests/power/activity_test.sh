@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# mcadsw_activity (sim/activity/netlist_activity.cpp) on a netlist small enough to
+# follow by hand: an inverter, a flip-flop with asynchronous reset, an XOR and a
+# 2 x 1 memory macro, over five recorded cycles. The transitions, high cycles and
+# macro accesses below are worked out from the circuit (see the comments), not
+# taken from a run. Then a recording whose output disagrees must stop the run.
+#   tests/power/activity_test.sh [MCADSW_ACTIVITY]
+set -uo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+act=${1:-$root/build/bin/mcadsw_activity}
+[ -x "$act" ] || { echo "activity_test: no mcadsw_activity at $act"; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cat > "$work/n.v" <<'V'
+module mcadsw_engine(clk_i, rst_ni, a_i, y_o, q_o, m_o);
+  input clk_i;
+  input rst_ni;
+  input a_i;
+  output y_o;
+  output q_o;
+  output m_o;
+  wire n1;
+  INVX1 g1 (.A(a_i), .Y(n1));
+  DFFSR r1 (.CLK(clk_i), .D(n1), .Q(q_o), .R(rst_ni), .S(1'b1));
+  XOR2X1 g2 (.A(q_o), .B(a_i), .Y(y_o));
+  MCADSW_RAM_S2_W1_A1_SYNC_WE m (.RD_ADDR(a_i), .RD_ARST(1'b0), .RD_CLK(clk_i), .RD_DATA(m_o), .RD_EN(1'b1),
+    .WR_ADDR(q_o), .WR_CLK(clk_i), .WR_DATA(n1), .WR_WE(rst_ni));
+endmodule
+V
+# Cycle by cycle (values before the rising edge; n1 = ~a, y = q ^ a, q <= n1 unless
+# reset, m <= mem[a] then mem[q] <= n1 while rst_ni):
+#   c0: rst 0 a 0 -> n1 1 q 0 y 0 m 0; edge: read mem[0] = 0, no write
+#   c1: rst 1 a 1 -> n1 0 q 0 y 1 m 0; edge: q 0, read mem[1] = 0, mem[0] <= 0
+#   c2: rst 1 a 0 -> n1 1 q 0 y 0 m 0; edge: q 1, read mem[0] = 0, mem[0] <= 1
+#   c3: rst 1 a 0 -> n1 1 q 1 y 1 m 0; edge: q 1, read mem[0] = 1, mem[1] <= 1
+#   c4: rst 1 a 1 -> n1 0 q 1 y 0 m 1; edge: q 0, read mem[1] = 1, mem[1] <= 0
+#   after: q 0 a 1 -> y 1
+{ echo "ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out m_o:1:out"
+  printf '%s\n' "0 0 0 0 0" "1 1 1 0 0" "1 0 0 0 0" "1 0 1 1 0" "1 1 0 1 1"; } > "$work/p.txt"
+fails=0
+if ! "$act" "$work/n.v" "$work/p.txt" "$work/a" > "$work/log" 2>&1; then
+  echo "FAIL: mcadsw_activity failed on a consistent recording"; cat "$work/log"; exit 1
+fi
+# Transitions and high cycles over the 5 cycles (from the all-zero, reset state):
+#   a: up at c1, down c2, up c4 = 3, high c1 and c4 = 2;  rst: 1, high c1..c4 = 4
+#   n1: down c1, up c2, down c4 = 3, high c0, c2, c3 = 3;  q: up after c2, down after c4 = 2, high c3, c4 = 2
+#   y: up c1, down c2, up c3, down c4, up after = 5, high c1, c3 = 2;  m: up after c3 = 1, high c4 = 1
+# Macro: 5 reads (RD_EN always), 4 writes (rst_ni high at c1..c4).
+expect() {
+  if grep -qx "$1" "$work/a.frame.txt"; then echo "ok   $1"; else echo "FAIL $1 (got: $(grep "^${1% * * *} " "$work/a.frame.txt"))"; fails=$((fails + 1)); fi
+}
+expect "cycles 5"
+expect "net a_i 3 2"
+expect "net rst_ni 1 4"
+expect "net n1 3 3"
+expect "net q_o 2 2"
+expect "net y_o 5 2"
+expect "net m_o 1 1"
+expect "macro m MCADSW_RAM_S2_W1_A1_SYNC_WE 2 1 5 4"
+# An output that disagrees with the recording (y at c3) stops the run.
+sed '5s/^1 0 1 1 0$/1 0 0 1 0/' "$work/p.txt" > "$work/bad.txt"
+if "$act" "$work/n.v" "$work/bad.txt" "$work/b" > "$work/blog" 2>&1; then
+  echo "FAIL: a recording whose output y_o differs at cycle 3 was accepted"; fails=$((fails + 1))
+elif grep -q "cycle 3: output y_o bit 0: netlist 1, RTL 0" "$work/blog"; then
+  echo "ok   a wrong output stops the run: $(grep 'cycle 3' "$work/blog")"
+else
+  echo "FAIL: the mismatch message is missing"; cat "$work/blog"; fails=$((fails + 1))
+fi
+[ "$fails" = 0 ] && echo "activity_test: all checks passed" || { echo "activity_test: $fails failed"; exit 1; }
