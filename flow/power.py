@@ -37,15 +37,6 @@ LEFT = ROOT / "data" / "cif" / "teddy" / "left.png"
 RIGHT = ROOT / "data" / "cif" / "teddy" / "right.png"
 MODES = {"raw": [], "lr": ["--lr"]}
 
-# Instance prefix of the flat netlist -> the groups `make synth` reports.
-GROUP_OF = {"u_census_l": "census_left", "u_census_r": "census_right", "u_weight_gen": "weight_generator",
-            "u_cost_agg": "cost_aggregator_wta", "u_mem_ctrl": "memory_controller",
-            "u_rd_census_l": "memory_controller", "u_rd_census_r": "memory_controller",
-            "u_rd_weight": "memory_controller", "u_scheduler": "block_scheduler",
-            "u_depth_fifo": "depth_fifo", "u_post": "post_stage", "top": "top_registers_counters",
-            "u_cfg_check": "top_registers_counters", "u_frame_ctrl": "top_registers_counters",
-            "u_win_geom": "top_registers_counters"}
-
 # ---- Memory macros: a first-order SRAM energy model -----------------------------------------
 # After CACTI's decomposition (S. Wilton, N. Jouppi, "CACTI: an enhanced cache access and
 # cycle time model", IEEE JSSC 31(5), 1996): a word line across the W cells of the row, one
@@ -223,13 +214,17 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     synth = Path(args.synth or default_out(args.build, args.dmax, args.par))
     netlist, ram_lib = synth / "mcadsw_engine_sta.v", synth / "mcadsw_ram.lib"
-    for p in (netlist, ram_lib):
+    for p in (netlist, ram_lib, synth / "summary.json"):
         if not p.is_file():
             raise FlowError(f"no {p.name} in {synth}: run make synth"
                             f"{'' if not suffix else f' DMAX={args.dmax} PAR={args.par}'} first")
     if shutil.which(args.sta) is None:
         raise FlowError(f"OpenSTA ({args.sta}) not found (make bootstrap installs it)")
     lib = liberty_facts(args.liberty)
+    # Instance prefix of the flat netlist (u_<block>, the engine's own cells: top) -> the
+    # groups `make synth` reports.
+    group_of = {("top" if label == "top" else "u_" + label): b["group"]
+                for label, b in json.loads((synth / "summary.json").read_text())["blocks"].items()}
 
     # 1-2. Ports recorded by the RTL, activity of the netlist, the whole CIF frame's cycles.
     act_dir = Path(args.activity) if args.activity else out
@@ -293,7 +288,7 @@ def main():
     summary = {"clock_mhz": FREQ_MHZ, "vdd": vdd, "liberty": args.liberty, "netlist": str(netlist),
                "crop": CROP, "disparities": D, "netlist_nets": nets, "netlist_cells": cells,
                "flip_flops": flops, "memory_model": MEM_MODEL, "runs": {}}
-    groups_all = sorted(set(GROUP_OF.values()))
+    groups_all = sorted(set(group_of.values()))
     for name, run in sta.items():
         mode = "raw" if name.startswith("raw") else name
         cycles, macros = read_macros(files[mode])
@@ -306,15 +301,15 @@ def main():
             leak = mc["words"] * mc["bits"] * 2 * lib["inv_leak"]
             mem_w += w
             mem_leak += leak
-            g = GROUP_OF.get(mc["name"].split(".")[0], "other")
+            g = group_of.get(mc["name"].split(".")[0], "other")
             mem_by_group[g] = mem_by_group.get(g, 0.0) + w + leak
         internal, switching, leakage, _ = run["total"]
         clk = clk_net_w * period / run["period_ns"]
         by_group = {g: {"logic_w": 0.0, "memory_w": mem_by_group.get(g, 0.0)} for g in groups_all}
         for (blk, kind), v in run["blocks"].items():
-            g = GROUP_OF.get(blk)
+            g = group_of.get(blk)
             if g is None:
-                raise FlowError(f"instance prefix {blk} has no group (flow/power.py GROUP_OF)")
+                raise FlowError(f"instance prefix {blk} is no block of {synth}/summary.json")
             by_group[g]["logic_w"] += v[3]
         total = internal + switching + leakage + clk + mem_w + mem_leak
         summary["runs"][name] = {

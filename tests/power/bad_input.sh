@@ -35,5 +35,6 @@ expect no_netlist 1 "no mcadsw_engine_sta.v in .*: run make synth first" -- --bu
 mkdir -p "$work/synth" "$work/act"
 echo "module mcadsw_engine(); endmodule" > "$work/synth/mcadsw_engine_sta.v"
 echo "library (x) { }" > "$work/synth/mcadsw_ram.lib"
+echo '{"blocks": {}}' > "$work/synth/summary.json"
 expect no_activity 1 "no activity file .*raw.frame.txt" -- --build "$work/build" --synth "$work/synth" --activity "$work/act"
 [ "$fails" = 0 ] && echo "bad_input: all cases passed" || { echo "bad_input: $fails case(s) failed"; exit 1; }
