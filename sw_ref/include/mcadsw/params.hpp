@@ -115,4 +115,12 @@ inline constexpr int kPostMaxWidth = 1024;
 static_assert(kPostMaxWidth <= kMaxWidth && (kPostMaxWidth & (kPostMaxWidth - 1)) == 0,
               "the post stage's row buffers: a power of two, at most the largest width");
 
+// ---- Rectification (docs/algorithm.md section 13, issue 32) -------------------
+inline constexpr int kMeshFracBits = 5;          // node and sample positions in 1/32 pixel
+inline constexpr int kMeshStepLog2Min = 3;       // S = 8 ..
+inline constexpr int kMeshStepLog2Max = 5;       // .. 32
+inline constexpr int kMeshCoordLimit = 4096 << kMeshFracBits;  // nodes in [-limit, limit)
+inline constexpr int kRectInvalidY = 0;          // an invalid rectified pixel: black
+inline constexpr int kRectInvalidUV = 128;
+
 }  // namespace mcadsw

@@ -1,0 +1,53 @@
+// Rectification of raw camera frames (docs/algorithm.md section 13, issue 32): a
+// mesh of source positions every S output pixels, interpolated per pixel, and a
+// bilinear sample with 5-bit weights. Integer arithmetic, bit-exact with the RTL.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "mcadsw/ref.hpp"
+
+namespace mcadsw {
+
+// Source positions in the raw view, in 1/32 pixel, at the output positions
+// (i S, j S), S = 2^step_log2; node (i, j) at index j nx + i (section 13.1).
+struct Mesh {
+  int step_log2 = 4;
+  int out_width = 0, out_height = 0;  // the rectified frame, W x H
+  int nx = 0, ny = 0;                 // floor((W - 1) / S) + 2, likewise for H
+  std::vector<int32_t> u, v;
+
+  int step() const { return 1 << step_log2; }
+};
+
+// A mesh of W x H at step 2^step_log2 with every node at (0, 0); throws
+// std::invalid_argument for a size or step out of range.
+Mesh make_mesh(int out_width, int out_height, int step_log2);
+
+// Throws std::invalid_argument (naming the node) unless the mesh is well formed:
+// step 8, 16 or 32, node counts that match its size, every node in
+// [-kMeshCoordLimit, kMeshCoordLimit).
+void check_mesh(const Mesh& mesh);
+
+// Source position of output pixel (x, y), in 1/32 pixel (section 13.2).
+std::pair<int32_t, int32_t> mesh_position(const Mesh& mesh, int x, int y);
+
+// The rectified view (section 13.3): every plane of `raw` sampled at the mesh's
+// positions; valid (1) where the position lies inside the raw view, else 0 and
+// the pixel black (Y 0, U and V 128).
+struct Rectified {
+  YuvImage image;
+  Plane valid;
+};
+Rectified rectify(const YuvImage& raw, const Mesh& mesh);
+
+// The mesh of OpenCV float maps (CV_32FC1, at least (nx - 1) S + 1 by (ny - 1) S + 1
+// pixels, section 13.5): node (i, j) = cvRound(32 map(i S, j S)).
+Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, int out_height,
+                    int step_log2);
+
+}  // namespace mcadsw

@@ -1,0 +1,182 @@
+// mcadsw::rectify and the mesh (docs/algorithm.md section 13): the integer rules
+// against cases worked out by hand, against OpenCV's remap, and a mesh from an
+// OpenCV rectification against its float map.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "mcadsw/params.hpp"
+#include "mcadsw/rectify.hpp"
+#include "test_util.hpp"
+
+namespace mcadsw {
+namespace {
+
+// A mesh whose nodes follow u = f(x, y), v = g(x, y) (in 1/32 pixel) exactly.
+template <typename F, typename G>
+Mesh mesh_of(int w, int h, int s, F f, G g) {
+  Mesh m = make_mesh(w, h, s);
+  for (int j = 0; j < m.ny; ++j)
+    for (int i = 0; i < m.nx; ++i) {
+      m.u[size_t(j * m.nx + i)] = f(i * m.step(), j * m.step());
+      m.v[size_t(j * m.nx + i)] = g(i * m.step(), j * m.step());
+    }
+  return m;
+}
+
+TEST(Rectify, MeshShapeAndChecks) {
+  const Mesh m = make_mesh(352, 288, 4);
+  EXPECT_EQ(m.nx, 23);  // floor(351 / 16) + 2
+  EXPECT_EQ(m.ny, 19);  // floor(287 / 16) + 2
+  EXPECT_EQ(make_mesh(33, 1, 5).nx, 3);
+  EXPECT_THROW(make_mesh(352, 288, 2), std::invalid_argument);
+  EXPECT_THROW(make_mesh(352, 288, 6), std::invalid_argument);
+  EXPECT_THROW(make_mesh(kMaxWidth + 1, 8, 4), std::invalid_argument);
+  Mesh bad = make_mesh(40, 20, 3);
+  bad.u[7] = kMeshCoordLimit;
+  EXPECT_THROW(check_mesh(bad), std::invalid_argument);
+  bad.u[7] = -kMeshCoordLimit;
+  EXPECT_NO_THROW(check_mesh(bad));
+  bad.v.pop_back();
+  EXPECT_THROW(check_mesh(bad), std::invalid_argument);
+}
+
+// Bilinear interpolation reproduces an affine map exactly: nodes at 32 (x + y / 2),
+// 32 (y - x / 4) + 5 give those values at every pixel.
+TEST(Rectify, InterpolationIsExactOnAffineMaps) {
+  for (const int s : {3, 4, 5}) {
+    const Mesh m = mesh_of(
+        70, 45, s, [](int x, int y) { return 32 * x + 16 * y; }, [](int x, int y) { return 32 * y - 8 * x + 5; });
+    for (int y = 0; y < 45; ++y)
+      for (int x = 0; x < 70; ++x) {
+        const auto [pu, pv] = mesh_position(m, x, y);
+        ASSERT_EQ(pu, 32 * x + 16 * y) << "S = " << m.step() << " at " << x << "," << y;
+        ASSERT_EQ(pv, 32 * y - 8 * x + 5) << "S = " << m.step() << " at " << x << "," << y;
+      }
+  }
+}
+
+// Round half up: a node difference of 1/32 over a cell of 8 gives sums ox / 8 (in
+// 1/32), i.e. 0 for ox < 4 and 1 from ox = 4 on.
+TEST(Rectify, InterpolationRoundsHalfUp) {
+  Mesh m = make_mesh(16, 1, 3);
+  m.u[1] = 1;                       // node (1, 0)
+  m.u[size_t(m.nx) + 1] = 1;        // node (1, 1)
+  for (int x = 0; x < 8; ++x) EXPECT_EQ(mesh_position(m, x, 0).first, x >= 4 ? 1 : 0) << x;
+  m.u[1] = m.u[size_t(m.nx) + 1] = -1;
+  for (int x = 0; x < 8; ++x) EXPECT_EQ(mesh_position(m, x, 0).first, x > 4 ? -1 : 0) << x;  // -0.5 -> 0
+}
+
+TEST(Rectify, IdentityAndIntegerShift) {
+  std::mt19937 rng(1);
+  const YuvImage raw = test::random_yuv(50, 30, rng);
+  const Rectified id = rectify(raw, mesh_of(
+                                        50, 30, 4, [](int x, int) { return 32 * x; }, [](int, int y) { return 32 * y; }));
+  EXPECT_EQ(id.image.y.px, raw.y.px);
+  EXPECT_EQ(id.image.u.px, raw.u.px);
+  EXPECT_EQ(id.image.v.px, raw.v.px);
+  EXPECT_TRUE(std::all_of(id.valid.px.begin(), id.valid.px.end(), [](uint8_t b) { return b == 1; }));
+  // (x, y) <- raw (x + 3, y - 2): valid where that lies inside.
+  const Rectified sh = rectify(raw, mesh_of(
+                                        50, 30, 3, [](int x, int) { return 32 * (x + 3); },
+                                        [](int, int y) { return 32 * (y - 2); }));
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 50; ++x) {
+      const bool inside = x + 3 <= 49 && y - 2 >= 0;
+      ASSERT_EQ(sh.valid.at(x, y), inside ? 1 : 0) << x << "," << y;
+      ASSERT_EQ(sh.image.y.at(x, y), inside ? raw.y.at(x + 3, y - 2) : kRectInvalidY);
+      ASSERT_EQ(sh.image.u.at(x, y), inside ? raw.u.at(x + 3, y - 2) : kRectInvalidUV);
+    }
+}
+
+// Half a pixel to the right: fu = 16, so (16 32 a + 16 32 b + 512) >> 10 = (a + b + 1) >> 1;
+// the last column's point, Wr - 1 + 1/2, is outside.
+TEST(Rectify, HalfPixelIsTheRoundedMean) {
+  std::mt19937 rng(2);
+  const YuvImage raw = test::random_yuv(20, 6, rng);
+  const Rectified r = rectify(raw, mesh_of(
+                                       20, 6, 3, [](int x, int) { return 32 * x + 16; }, [](int, int y) { return 32 * y; }));
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 20; ++x) {
+      ASSERT_EQ(r.valid.at(x, y), x < 19 ? 1 : 0);
+      if (x < 19) {
+        ASSERT_EQ(r.image.y.at(x, y), (raw.y.at(x, y) + raw.y.at(x + 1, y) + 1) >> 1) << x << "," << y;
+      }
+    }
+}
+
+// Against cv::remap (INTER_LINEAR, 8-bit) at the same positions: at most one grey level
+// apart where valid (OpenCV rounds 15-bit coefficients).
+TEST(Rectify, WithinOneGreyLevelOfOpenCvRemap) {
+  std::mt19937 rng(3);
+  const YuvImage raw = test::random_yuv(64, 48, rng);
+  const double a = 0.03;  // a small rotation and scale, nodes off the pixel grid
+  const Mesh m = mesh_of(
+      60, 44, 4, [&](int x, int y) { return int(std::lround(32 * (2.3 + 0.98 * x + a * y))); },
+      [&](int x, int y) { return int(std::lround(32 * (1.7 - a * x + 0.99 * y))); });
+  const Rectified r = rectify(raw, m);
+  cv::Mat mx(44, 60, CV_32FC1), my(44, 60, CV_32FC1);
+  for (int y = 0; y < 44; ++y)
+    for (int x = 0; x < 60; ++x) {
+      const auto [pu, pv] = mesh_position(m, x, y);
+      mx.at<float>(y, x) = float(pu) / 32.0f;
+      my.at<float>(y, x) = float(pv) / 32.0f;
+    }
+  const cv::Mat src(raw.y.height, raw.y.width, CV_8UC1, const_cast<uint8_t*>(raw.y.px.data()));
+  cv::Mat out;
+  cv::remap(src, out, mx, my, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  int valid = 0, worst = 0;
+  for (int y = 0; y < 44; ++y)
+    for (int x = 0; x < 60; ++x)
+      if (r.valid.at(x, y)) {
+        ++valid;
+        worst = std::max(worst, std::abs(int(r.image.y.at(x, y)) - int(out.at<uint8_t>(y, x))));
+      }
+  std::printf("against cv::remap: %d valid pixels, at most %d grey level(s) apart\n", valid, worst);
+  EXPECT_GT(valid, 60 * 44 / 2);
+  EXPECT_LE(worst, 1);
+}
+
+// A mesh from an OpenCV rectification (radial and tangential distortion, a rotation of
+// about 1.5 degrees) against the float map at every pixel of a CIF frame: within 0.1
+// pixel at S = 8 and 16 (the goal); S = 32 is printed, not bounded.
+TEST(Rectify, MeshFromOpenCvMapsWithinATenthOfAPixel) {
+  const int w = 352, h = 288;
+  const cv::Matx33d k(300, 0, 170, 0, 305, 140, 0, 0, 1);
+  const cv::Matx<double, 1, 5> dist(-0.12, 0.03, 0.001, -0.0008, 0);
+  cv::Matx33d rot;
+  cv::Rodrigues(cv::Vec3d(0.01, -0.02, 0.015), rot);
+  const cv::Matx34d p(290, 0, 176, 0, 0, 290, 144, 0, 0, 0, 1, 0);
+  cv::Mat mx, my;
+  for (const int s : {3, 4, 5}) {
+    const Mesh shape = make_mesh(w, h, s);
+    cv::initUndistortRectifyMap(k, dist, rot, p, cv::Size((shape.nx - 1) * shape.step() + 1,
+                                                          (shape.ny - 1) * shape.step() + 1),
+                                CV_32FC1, mx, my);
+    const Mesh m = mesh_from_maps(mx, my, w, h, s);
+    double worst = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const auto [pu, pv] = mesh_position(m, x, y);
+        worst = std::max({worst, std::abs(pu / 32.0 - mx.at<float>(y, x)), std::abs(pv / 32.0 - my.at<float>(y, x))});
+      }
+    std::printf("mesh S = %d: largest deviation from OpenCV's float map %.4f pixel\n", m.step(), worst);
+    EXPECT_GT(worst, 0.0);
+    if (s <= 4) {
+      EXPECT_LE(worst, 0.1) << "S = " << m.step();
+    }
+  }
+  cv::Mat small(10, 10, CV_32FC1, cv::Scalar(0));
+  EXPECT_THROW(mesh_from_maps(small, small, w, h, 4), std::invalid_argument);
+  mx.at<float>(0, 0) = NAN;
+  EXPECT_THROW(mesh_from_maps(mx, my, w, h, 5), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mcadsw
