@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -176,6 +177,84 @@ TEST(Rectify, MeshFromOpenCvMapsWithinATenthOfAPixel) {
   EXPECT_THROW(mesh_from_maps(small, small, w, h, 4), std::invalid_argument);
   mx.at<float>(0, 0) = NAN;
   EXPECT_THROW(mesh_from_maps(mx, my, w, h, 5), std::invalid_argument);
+}
+
+// Calibration files (docs/algorithm.md 13.5): both forms give the meshes of the
+// rectification they describe; each defect is named in the message.
+class CalibrationFile : public ::testing::Test {
+ protected:
+  std::string path(const std::string& name) { return ::testing::TempDir() + "mcadsw_calib_" + name; }
+  // A camera pair: distorted, rotated, 6 cm apart.
+  cv::Matx33d k1{300, 0, 170, 0, 305, 140, 0, 0, 1}, k2{310, 0, 180, 0, 312, 146, 0, 0, 1};
+  cv::Mat d1 = (cv::Mat_<double>(1, 5) << -0.12, 0.03, 0.001, -0.0008, 0);
+  cv::Mat d2 = (cv::Mat_<double>(1, 5) << -0.08, 0.01, -0.0005, 0.0007, 0);
+  cv::Matx33d rot() const {
+    cv::Matx33d r;
+    cv::Rodrigues(cv::Vec3d(0.004, -0.012, 0.01), r);
+    return r;
+  }
+  cv::Vec3d t{-60, 0.5, 0.3};
+  void write_stereo(const std::string& p, bool drop_t = false, bool bad_k = false, bool nan_d = false) {
+    cv::FileStorage fs(p, cv::FileStorage::WRITE);
+    fs << "image_width" << 352 << "image_height" << 288;
+    fs << "K1" << (bad_k ? cv::Mat::eye(2, 3, CV_64F) : cv::Mat(k1)) << "D1" << d1 << "K2" << cv::Mat(k2);
+    cv::Mat d = d2.clone();
+    if (nan_d) d.at<double>(0, 1) = NAN;
+    fs << "D2" << d << "R" << cv::Mat(rot());
+    if (!drop_t) fs << "T" << cv::Mat(t);
+  }
+};
+
+TEST_F(CalibrationFile, StereoFormAndRectificationFormGiveTheSameMeshes) {
+  write_stereo(path("stereo.yml"));
+  const StereoRectification a = read_calibration(path("stereo.yml"));
+  // The same rectification written out as R1 P1 R2 P2 (XML this time).
+  {
+    cv::FileStorage fs(path("rect.xml"), cv::FileStorage::WRITE);
+    fs << "image_width" << 352 << "image_height" << 288 << "K1" << cv::Mat(a.k1) << "D1" << a.d1 << "R1"
+       << cv::Mat(a.r1) << "P1" << cv::Mat(a.p1) << "K2" << cv::Mat(a.k2) << "D2" << a.d2 << "R2" << cv::Mat(a.r2)
+       << "P2" << cv::Mat(a.p2);
+  }
+  const StereoRectification b = read_calibration(path("rect.xml"));
+  const auto [la, ra] = meshes_from_rectification(a, 352, 288, 4);
+  const auto [lb, rb] = meshes_from_rectification(b, 352, 288, 4);
+  EXPECT_EQ(la.u, lb.u);
+  EXPECT_EQ(ra.v, rb.v);
+  // The rectification of cv::stereoRectify directly, for the left view's mesh.
+  cv::Mat r1, r2, p1, p2, q;
+  cv::stereoRectify(cv::Mat(k1), d1, cv::Mat(k2), d2, cv::Size(352, 288), cv::Mat(rot()), cv::Mat(t), r1, r2, p1, p2,
+                    q, cv::CALIB_ZERO_DISPARITY, 0.0);
+  cv::Mat mx, my;
+  cv::initUndistortRectifyMap(cv::Mat(k1), d1, r1, p1, cv::Size(22 * 16 + 1, 18 * 16 + 1), CV_32FC1, mx, my);
+  EXPECT_EQ(mesh_from_maps(mx, my, 352, 288, 4).u, la.u);
+  // The rows of the two rectified views are epipolar lines: equal row scale and offset.
+  EXPECT_NEAR(a.p1(1, 1), a.p2(1, 1), 1e-9);
+  EXPECT_NEAR(a.p1(1, 2), a.p2(1, 2), 1e-9);
+  // The memory image round-trips and has the size the frame needs.
+  write_meshes(path("mesh.bin"), la, ra);
+  const auto [lc, rc] = read_meshes(path("mesh.bin"), 352, 288, 4);
+  EXPECT_EQ(lc.u, la.u);
+  EXPECT_EQ(rc.v, ra.v);
+  EXPECT_THROW(read_meshes(path("mesh.bin"), 352, 288, 3), std::invalid_argument);
+}
+
+TEST_F(CalibrationFile, DefectsAreNamed) {
+  const auto message = [&](const std::string& p) {
+    try {
+      read_calibration(p);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  write_stereo(path("no_t.yml"), true);
+  EXPECT_NE(message(path("no_t.yml")).find("no key T"), std::string::npos) << message(path("no_t.yml"));
+  write_stereo(path("bad_k.yml"), false, true);
+  EXPECT_NE(message(path("bad_k.yml")).find("K1 is 2x3, not 3x3"), std::string::npos) << message(path("bad_k.yml"));
+  write_stereo(path("nan_d.yml"), false, false, true);
+  EXPECT_NE(message(path("nan_d.yml")).find("D2 has a value that is not finite"), std::string::npos)
+      << message(path("nan_d.yml"));
+  EXPECT_NE(message(path("missing.yml")).find("cannot open"), std::string::npos) << message(path("missing.yml"));
 }
 
 }  // namespace

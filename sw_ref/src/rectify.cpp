@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include <opencv2/calib3d.hpp>
 
 #include "mcadsw/params.hpp"
 
@@ -107,6 +110,127 @@ Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, i
       m.v[size_t(j) * size_t(m.nx) + size_t(i)] = cvRound(double(fy) * (1 << kMeshFracBits));
     }
   return m;
+}
+
+// ---- Calibration files and mesh images ------------------------------------------------------
+namespace {
+
+[[noreturn]] void calib_fail(const std::string& path, const std::string& what) {
+  throw std::invalid_argument("calibration " + path + ": " + what);
+}
+
+cv::Mat read_key(const cv::FileStorage& fs, const std::string& path, const char* key, int rows, int cols) {
+  const cv::FileNode n = fs[key];
+  if (n.empty()) calib_fail(path, std::string("no key ") + key);
+  cv::Mat m;
+  n >> m;
+  if (m.empty()) calib_fail(path, std::string(key) + " is not a matrix");
+  m.convertTo(m, CV_64F);
+  if (rows > 0 && (m.rows != rows || m.cols != cols))
+    calib_fail(path, std::string(key) + " is " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ", not " +
+                         std::to_string(rows) + "x" + std::to_string(cols));
+  if (!cv::checkRange(m)) calib_fail(path, std::string(key) + " has a value that is not finite");
+  return m;
+}
+
+cv::Mat read_dist(const cv::FileStorage& fs, const std::string& path, const char* key) {
+  cv::Mat d = read_key(fs, path, key, 0, 0);
+  const int n = int(d.total());
+  if (!(d.rows == 1 || d.cols == 1) || !(n == 4 || n == 5 || n == 8 || n == 12 || n == 14))
+    calib_fail(path, std::string(key) + " must hold 4, 5, 8, 12 or 14 distortion coefficients");
+  return d.reshape(1, 1);
+}
+
+int read_int(const cv::FileStorage& fs, const std::string& path, const char* key) {
+  const cv::FileNode n = fs[key];
+  if (n.empty()) calib_fail(path, std::string("no key ") + key);
+  if (!n.isInt()) calib_fail(path, std::string(key) + " is not an integer");
+  return int(n);
+}
+
+}  // namespace
+
+StereoRectification read_calibration(const std::string& path) {
+  cv::FileStorage fs;
+  try {
+    fs.open(path, cv::FileStorage::READ);
+  } catch (const cv::Exception& e) {
+    calib_fail(path, std::string("not a YAML or XML file (") + e.what() + ")");
+  }
+  if (!fs.isOpened()) calib_fail(path, "cannot open it");
+  StereoRectification r;
+  r.size = cv::Size(read_int(fs, path, "image_width"), read_int(fs, path, "image_height"));
+  if (r.size.width < 1 || r.size.width > kMaxWidth || r.size.height < 1 || r.size.height > kMaxHeight)
+    calib_fail(path, "image size " + std::to_string(r.size.width) + "x" + std::to_string(r.size.height) +
+                         " outside 1.." + std::to_string(kMaxWidth));
+  r.k1 = cv::Matx33d(read_key(fs, path, "K1", 3, 3));
+  r.k2 = cv::Matx33d(read_key(fs, path, "K2", 3, 3));
+  r.d1 = read_dist(fs, path, "D1");
+  r.d2 = read_dist(fs, path, "D2");
+  if (!fs["R1"].empty() || !fs["P1"].empty()) {  // the rectification itself
+    r.r1 = cv::Matx33d(read_key(fs, path, "R1", 3, 3));
+    r.r2 = cv::Matx33d(read_key(fs, path, "R2", 3, 3));
+    r.p1 = cv::Matx34d(read_key(fs, path, "P1", 3, 4));
+    r.p2 = cv::Matx34d(read_key(fs, path, "P2", 3, 4));
+    return r;
+  }
+  const cv::Mat rot = read_key(fs, path, "R", 3, 3), t = read_key(fs, path, "T", 3, 1);
+  cv::Mat r1, r2, p1, p2, q;
+  cv::stereoRectify(cv::Mat(r.k1), r.d1, cv::Mat(r.k2), r.d2, r.size, rot, t, r1, r2, p1, p2, q,
+                    cv::CALIB_ZERO_DISPARITY, 0.0);
+  r.r1 = cv::Matx33d(r1);
+  r.r2 = cv::Matx33d(r2);
+  r.p1 = cv::Matx34d(p1);
+  r.p2 = cv::Matx34d(p2);
+  return r;
+}
+
+std::pair<Mesh, Mesh> meshes_from_rectification(const StereoRectification& r, int out_width, int out_height,
+                                                int step_log2) {
+  const Mesh shape = make_mesh(out_width, out_height, step_log2);
+  const cv::Size cover((shape.nx - 1) * shape.step() + 1, (shape.ny - 1) * shape.step() + 1);
+  cv::Mat mx, my;
+  cv::initUndistortRectifyMap(cv::Mat(r.k1), r.d1, cv::Mat(r.r1), cv::Mat(r.p1), cover, CV_32FC1, mx, my);
+  Mesh left = mesh_from_maps(mx, my, out_width, out_height, step_log2);
+  cv::initUndistortRectifyMap(cv::Mat(r.k2), r.d2, cv::Mat(r.r2), cv::Mat(r.p2), cover, CV_32FC1, mx, my);
+  return {std::move(left), mesh_from_maps(mx, my, out_width, out_height, step_log2)};
+}
+
+void write_meshes(const std::string& path, const Mesh& left, const Mesh& right) {
+  check_mesh(left);
+  check_mesh(right);
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  for (const Mesh* m : {&left, &right})
+    for (size_t k = 0; k < m->u.size(); ++k)
+      for (const int32_t c : {m->u[k], m->v[k]}) {
+        const uint32_t w = uint32_t(c);
+        const char b[4] = {char(w & 0xff), char(w >> 8 & 0xff), char(w >> 16 & 0xff), char(w >> 24 & 0xff)};
+        f.write(b, 4);
+      }
+  if (!f) throw std::runtime_error("write failed: " + path);
+}
+
+std::pair<Mesh, Mesh> read_meshes(const std::string& path, int out_width, int out_height, int step_log2) {
+  Mesh left = make_mesh(out_width, out_height, step_log2), right = left;
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) throw std::invalid_argument("mesh " + path + ": cannot open it");
+  const long long want = 2LL * 2 * 4 * (long long)left.u.size(), got = (long long)f.tellg();
+  if (got != want)
+    throw std::invalid_argument("mesh " + path + ": " + std::to_string(got) + " bytes; a " +
+                                std::to_string(out_width) + "x" + std::to_string(out_height) + " frame at step " +
+                                std::to_string(left.step()) + " needs " + std::to_string(want));
+  f.seekg(0);
+  for (Mesh* m : {&left, &right})
+    for (size_t k = 0; k < m->u.size(); ++k)
+      for (int32_t* c : {&m->u[k], &m->v[k]}) {
+        unsigned char b[4];
+        f.read(reinterpret_cast<char*>(b), 4);
+        *c = int32_t(uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24);
+      }
+  check_mesh(left);
+  check_mesh(right);
+  return {std::move(left), std::move(right)};
 }
 
 }  // namespace mcadsw

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -49,5 +50,34 @@ Rectified rectify(const YuvImage& raw, const Mesh& mesh);
 // pixels, section 13.5): node (i, j) = cvRound(32 map(i S, j S)).
 Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, int out_height,
                     int step_log2);
+
+}  // namespace mcadsw
+
+namespace mcadsw {
+
+// A stereo rectification as OpenCV describes it (docs/algorithm.md 13.5): per view
+// the camera matrix K, the distortion D (OpenCV's order: k1 k2 p1 p2 [k3 ...]), the
+// rectifying rotation R and the new projection P; `size` is the image size.
+struct StereoRectification {
+  cv::Matx33d k1, k2, r1, r2;
+  cv::Mat d1, d2;
+  cv::Matx34d p1, p2;
+  cv::Size size;
+};
+
+// Reads a cv::FileStorage file (YAML or XML) with either K1 D1 K2 D2 R T and the image
+// size (image_width, image_height), rectified by cv::stereoRectify (alpha 0, zero
+// disparity), or the rectification K1 D1 R1 P1 K2 D2 R2 P2 with the size. Throws
+// std::invalid_argument naming the file and the key: missing, wrong size, not finite.
+StereoRectification read_calibration(const std::string& path);
+
+// The two views' meshes of a rectification for a W x H rectified frame.
+std::pair<Mesh, Mesh> meshes_from_rectification(const StereoRectification& rect, int out_width, int out_height,
+                                                int step_log2);
+
+// The mesh memory image (13.1): the left view's nodes, then the right's, row by row,
+// each u then v as 32-bit little-endian words. read_meshes checks the file's size.
+void write_meshes(const std::string& path, const Mesh& left, const Mesh& right);
+std::pair<Mesh, Mesh> read_meshes(const std::string& path, int out_width, int out_height, int step_log2);
 
 }  // namespace mcadsw
