@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
@@ -157,3 +158,55 @@ TEST_F(Cli, EvalSizeMismatchAndMissingMasks) {
 }
 
 }  // namespace
+
+// mcadsw mesh / rectify (docs/algorithm.md 13): an OpenCV calibration file in, the
+// mesh memory image of the size the frame needs and the rectified pair out; a bad
+// calibration or step is one message and no output.
+class CliRectify : public Cli {
+ protected:
+  std::string calib(bool drop_k2 = false) const {
+    const std::string p = (dir_ / (drop_k2 ? "bad.yml" : "calib.yml")).string();
+    cv::FileStorage f(p, cv::FileStorage::WRITE);
+    f << "image_width" << 352 << "image_height" << 288;
+    f << "K1" << cv::Mat(cv::Matx33d(300, 0, 170, 0, 305, 140, 0, 0, 1));
+    f << "D1" << cv::Mat(cv::Matx<double, 1, 5>(-0.12, 0.03, 0.001, -0.0008, 0));
+    if (!drop_k2) f << "K2" << cv::Mat(cv::Matx33d(310, 0, 180, 0, 312, 146, 0, 0, 1));
+    f << "D2" << cv::Mat(cv::Matx<double, 1, 5>(-0.08, 0.01, -0.0005, 0.0007, 0));
+    f << "R" << cv::Mat(cv::Matx33d::eye()) << "T" << cv::Mat(cv::Vec3d(-60, 0, 0));
+    return p;
+  }
+  std::string cif_pair() const {
+    const auto d = kData / "cif" / "teddy";
+    return (d / "left.png").string() + " " + (d / "right.png").string();
+  }
+};
+
+TEST_F(CliRectify, MeshAndRectifiedPair) {
+  const std::string mesh = (dir_ / "mesh.bin").string();
+  const CliRun m = run("mesh " + calib() + " --step 16 -o " + mesh);
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_EQ(fs::file_size(mesh), 2u * 23 * 19 * 8) << "two views of 23 x 19 nodes, 8 bytes a node";
+  const CliRun r = run("rectify " + calib() + " " + cif_pair() + " --step 8 -o " + (dir_ / "rect").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* f : {"left.png", "right.png", "left_valid.png", "right_valid.png"}) {
+    const cv::Mat img = cv::imread((dir_ / "rect" / f).string(), cv::IMREAD_UNCHANGED);
+    ASSERT_FALSE(img.empty()) << f;
+    EXPECT_EQ(img.cols, 352) << f;
+  }
+  const cv::Mat valid = cv::imread((dir_ / "rect" / "left_valid.png").string(), cv::IMREAD_UNCHANGED);
+  EXPECT_GT(cv::countNonZero(valid), 352 * 288 / 2);
+}
+
+TEST_F(CliRectify, BadCalibrationAndStep) {
+  const CliRun k = run("mesh " + calib(true) + " -o " + (dir_ / "m.bin").string());
+  EXPECT_EQ(k.status, 1);
+  EXPECT_NE(k.output.find("no key K2"), std::string::npos) << k.output;
+  EXPECT_FALSE(fs::exists(dir_ / "m.bin"));
+  const CliRun s = run("mesh " + calib() + " --step 12 -o " + (dir_ / "m.bin").string());
+  EXPECT_EQ(s.status, 2);
+  EXPECT_NE(s.output.find("--step must be 8, 16 or 32"), std::string::npos) << s.output;
+  const CliRun w = run("rectify " + calib() + " " + pair() + " -o " + (dir_ / "r").string());
+  EXPECT_EQ(w.status, 1);
+  EXPECT_NE(w.output.find("the calibration's images 352x288"), std::string::npos) << w.output;
+  EXPECT_FALSE(fs::exists(dir_ / "r"));
+}

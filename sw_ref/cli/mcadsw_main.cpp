@@ -2,6 +2,8 @@
 //   mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]
 //                [--gamma G] [--threads N] -o OUT.png
 //   mcadsw eval DISP.png GT.png --scale S --masks DIR [--disp-scale S] [--threshold T]
+//   mcadsw mesh CALIB.yml [--step S] -o MESH.bin
+//   mcadsw rectify CALIB.yml LEFT RIGHT [--step S] -o OUTDIR
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -14,7 +16,10 @@
 #include "mcadsw/eval.hpp"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/parse.hpp"
+#include "mcadsw/rectify.hpp"
 #include "mcadsw/ref.hpp"
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace {
 
@@ -32,6 +37,14 @@ const std::string kUsage =
     "      Middlebury v2 error rates (% of pixels with |d/disp-scale - gt/S| > T,\n"
     "      T = 1 by default) over DIR/nonocc.png, DIR/all.png and DIR/disc.png.\n"
     "      --disp-scale 16 for the 16-bit maps of --subpixel.\n"
+    "  mcadsw mesh CALIB.yml [--step S] -o MESH.bin\n"
+    "      The rectification mesh of an OpenCV calibration (YAML or XML: image_width,\n"
+    "      image_height and K1 D1 K2 D2 R T, or K1 D1 R1 P1 K2 D2 R2 P2), both views,\n"
+    "      as the engine reads it (docs/algorithm.md section 13). S: 8, 16 (default) or 32.\n"
+    "  mcadsw rectify CALIB.yml LEFT RIGHT [--step S] -o OUTDIR\n"
+    "      The raw pair rectified through the mesh (bit-exact with the RTL): OUTDIR/left.png,\n"
+    "      right.png (YUV converted back to BGR for viewing) and left_valid.png,\n"
+    "      right_valid.png (255 where the source lies inside the raw view).\n"
     "  mcadsw --help\n";
 
 struct UsageError : std::runtime_error {
@@ -177,6 +190,59 @@ int cmd_eval(const Args& a) {
   return 0;
 }
 
+int step_log2_of(const Args& a) {
+  const std::string* st = a.get({"--step"});
+  const long step = st ? to_int(*st, "step") : 16;
+  if (step != 8 && step != 16 && step != 32) throw UsageError("--step must be 8, 16 or 32");
+  return step == 8 ? 3 : step == 16 ? 4 : 5;
+}
+
+int cmd_mesh(const Args& a) {
+  a.only({"--step", "-o", "--output"});
+  if (a.pos.size() != 1) throw UsageError("mesh needs CALIB.yml");
+  const std::string* out = a.get({"-o", "--output"});
+  if (!out) throw UsageError("mesh needs -o MESH.bin");
+  const mcadsw::StereoRectification r = mcadsw::read_calibration(a.pos[0]);
+  const auto [l, rt] = mcadsw::meshes_from_rectification(r, r.size.width, r.size.height, step_log2_of(a));
+  mcadsw::write_meshes(*out, l, rt);
+  std::printf("%s: %dx%d frame, step %d, %dx%d nodes a view\n", out->c_str(), r.size.width, r.size.height, l.step(),
+              l.nx, l.ny);
+  return 0;
+}
+
+int cmd_rectify(const Args& a) {
+  a.only({"--step", "-o", "--output"});
+  if (a.pos.size() != 3) throw UsageError("rectify needs CALIB.yml LEFT RIGHT");
+  const std::string* out = a.get({"-o", "--output"});
+  if (!out) throw UsageError("rectify needs -o OUTDIR");
+  const mcadsw::StereoRectification r = mcadsw::read_calibration(a.pos[0]);
+  const auto meshes = mcadsw::meshes_from_rectification(r, r.size.width, r.size.height, step_log2_of(a));
+  const mcadsw::YuvImage raws[2] = {mcadsw::load_yuv(a.pos[1]), mcadsw::load_yuv(a.pos[2])};
+  for (const int view : {0, 1})
+    if (raws[view].width() != r.size.width || raws[view].height() != r.size.height)
+      throw std::runtime_error(a.pos[size_t(1 + view)] + " is " + std::to_string(raws[view].width()) + "x" +
+                               std::to_string(raws[view].height()) + ", the calibration's images " +
+                               std::to_string(r.size.width) + "x" + std::to_string(r.size.height));
+  std::filesystem::create_directories(*out);
+  for (const int view : {0, 1}) {
+    const mcadsw::YuvImage& raw = raws[view];
+    const mcadsw::Rectified rect = mcadsw::rectify(raw, view == 0 ? meshes.first : meshes.second);
+    cv::Mat yuv, bgr;
+    cv::merge(std::vector<cv::Mat>{mcadsw::to_mat(rect.image.y), mcadsw::to_mat(rect.image.u),
+                                   mcadsw::to_mat(rect.image.v)},
+              yuv);
+    cv::cvtColor(yuv, bgr, cv::COLOR_YUV2BGR);
+    const std::string name = view == 0 ? "left" : "right";
+    if (!cv::imwrite(*out + "/" + name + ".png", bgr)) throw std::runtime_error("cannot write " + *out + "/" + name + ".png");
+    mcadsw::Plane mask = rect.valid;
+    for (auto& v : mask.px) v = v ? 255 : 0;
+    mcadsw::write_mask(mask, *out + "/" + name + "_valid.png");
+  }
+  std::printf("%s: left.png right.png left_valid.png right_valid.png (%dx%d)\n", out->c_str(), r.size.width,
+              r.size.height);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -193,6 +259,8 @@ int main(int argc, char** argv) {
     const Args args(argc, argv, 2);
     if (cmd == "match") return cmd_match(args);
     if (cmd == "eval") return cmd_eval(args);
+    if (cmd == "mesh") return cmd_mesh(args);
+    if (cmd == "rectify") return cmd_rectify(args);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::cerr << "mcadsw: " << e.what() << "\n" << kUsage;
