@@ -2,7 +2,7 @@
 """make power: the engine's power at 95 MHz from the activity of real frames.
 
 Method (docs/results.md, "Power"): the RTL engine core runs a CIF crop of Teddy at
-D = 64 in the raw mode and in the LR mode and records its ports every cycle
+D = 64 (DMAX when smaller) in the raw mode and in the LR mode and records its ports every cycle
 (mcadsw_sim_core --record-ports); mcadsw_activity replays those inputs on the
 netlist OpenSTA times (BUILD/synth/mcadsw_engine_sta.v of `make synth`), checks its
 outputs against the RTL's in every cycle and counts every net's transitions and
@@ -30,7 +30,7 @@ from flowlib import FLOW, LIBERTY, PREFIX, ROOT, FlowError, Run, default_out, ge
 
 FREQ_MHZ = 95.0                  # the paper's clock (Table III), constraints/mcadsw.sdc
 CIF = (352, 288)
-D = 64
+D_PAPER = 64                     # the paper's D; a smaller DMAX runs at D = DMAX
 CROP = "140,117,72,54"           # 4 x 3 blocks of 18 x 18 inside Teddy's CIF frame
 IDLE_CYCLES = 2000
 LEFT = ROOT / "data" / "cif" / "teddy" / "left.png"
@@ -53,7 +53,8 @@ E_SA = 50e-15
 C_DEC_BIT = 20e-15
 MEM_MODEL = ("first-order SRAM model after CACTI (Wilton and Jouppi, IEEE JSSC 31(5) 1996): "
              "word line W x 1.4 fF x V^2, bit lines W x S x 0.94 fF x V x 0.2 V (read) or x V^2 "
-             "(write), 50 fJ a sense amplifier a bit (read), 20 fF x V^2 an address bit; leakage "
+             "(write, charged for the whole word whatever its bit enables), 50 fJ a sense amplifier a bit (read), "
+             "20 fF x V^2 an address bit; leakage "
              "a bit = two INVX1 of the OSU liberty; assumed 0.18 um parameters, an estimate")
 
 
@@ -109,11 +110,11 @@ def harness(args, out):
                             f"-DMCADSW_DMAX={args.dmax}", f"-DMCADSW_PAR={args.par}"],
                            capture_output=True, text=True)
         if r.returncode != 0:
-            raise FlowError("cmake configure of the harness failed:\n" + indent(r.stdout.splitlines()[-20:]))
+            raise FlowError("cmake configure of the harness failed:\n" + indent((r.stdout + r.stderr).splitlines()[-20:]))
         r = subprocess.run(["cmake", "--build", str(tree), "--target", "mcadsw_sim_core", "mcadsw_activity"],
                            capture_output=True, text=True)
         if r.returncode != 0:
-            raise FlowError("building the harness failed:\n" + indent(r.stdout.splitlines()[-20:]))
+            raise FlowError("building the harness failed:\n" + indent((r.stdout + r.stderr).splitlines()[-20:]))
     sim, act = tree / "bin" / "mcadsw_sim_core", tree / "bin" / "mcadsw_activity"
     for p in (sim, act):
         if not p.is_file():
@@ -212,15 +213,13 @@ def main():
         (out / stale).unlink(missing_ok=True)
     gen_package(args.gen_rtl_pkg or Path(args.build) / "bin" / "gen_rtl_pkg", args.dmax, args.par)
     out.mkdir(parents=True, exist_ok=True)
+    d = min(D_PAPER, int(args.dmax))
     synth = Path(args.synth or default_out(args.build, args.dmax, args.par))
     netlist, ram_lib = synth / "mcadsw_engine_sta.v", synth / "mcadsw_ram.lib"
     for p in (netlist, ram_lib, synth / "summary.json"):
         if not p.is_file():
             raise FlowError(f"no {p.name} in {synth}: run make synth"
                             f"{'' if not suffix else f' DMAX={args.dmax} PAR={args.par}'} first")
-    if shutil.which(args.sta) is None:
-        raise FlowError(f"OpenSTA ({args.sta}) not found (make bootstrap installs it)")
-    lib = liberty_facts(args.liberty)
     # Instance prefix of the flat netlist (u_<block>, the engine's own cells: top) -> the
     # groups `make synth` reports.
     group_of = {("top" if label == "top" else "u_" + label): b["group"]
@@ -236,10 +235,10 @@ def main():
                 raise FlowError(f"no activity file {p} (run make power without --activity first)")
     else:
         sim, act = harness(args, out)
-        log(f"recording the RTL core's ports: Teddy CIF crop {CROP}, D = {D}, raw and LR")
+        log(f"recording the RTL core's ports: Teddy CIF crop {CROP}, D = {d}, raw and LR")
         jobs = []
         for m, flags in MODES.items():
-            jobs.append((f"RTL {m} crop", [str(sim), str(LEFT), str(RIGHT), "-d", str(D), "--crop", CROP, *flags,
+            jobs.append((f"RTL {m} crop", [str(sim), str(LEFT), str(RIGHT), "-d", str(d), "--crop", CROP, *flags,
                                            "--record-ports", str(out / f"{m}.ports.txt")], out / f"{m}.rtl.log"))
         run_jobs(jobs, out)
         log("netlist activity (mcadsw_activity: every output compared with the RTL's every cycle), "
@@ -250,7 +249,7 @@ def main():
             jobs.append((f"activity {m}", [str(act), str(netlist), str(out / f"{m}.ports.txt"), str(out / m), *hold],
                          out / f"{m}.activity.log"))
         for m, flags in MODES.items():
-            jobs.append((f"RTL {m} CIF frame", [str(sim), str(LEFT), str(RIGHT), "-d", str(D), *flags],
+            jobs.append((f"RTL {m} CIF frame", [str(sim), str(LEFT), str(RIGHT), "-d", str(d), *flags],
                          out / f"{m}.cif.log"))
         run_jobs(jobs, out)
         for m in MODES:
@@ -259,6 +258,9 @@ def main():
     for p in files.values():
         if not p.is_file():
             raise FlowError(f"no activity file {p}")
+    if shutil.which(args.sta) is None:
+        raise FlowError(f"OpenSTA ({args.sta}) not found (make bootstrap installs it)")
+    lib = liberty_facts(args.liberty)
 
     # 3. OpenSTA.
     period = 1000.0 / FREQ_MHZ
@@ -286,7 +288,7 @@ def main():
             flops[m.group(1)] += 1
     clk_net_w = sum(n * lib["clk_cap"][c] for c, n in flops.items()) * vdd * vdd * f_hz
     summary = {"clock_mhz": FREQ_MHZ, "vdd": vdd, "liberty": args.liberty, "netlist": str(netlist),
-               "crop": CROP, "disparities": D, "netlist_nets": nets, "netlist_cells": cells,
+               "crop": CROP, "disparities": d, "netlist_nets": nets, "netlist_cells": cells,
                "flip_flops": flops, "memory_model": MEM_MODEL, "runs": {}}
     groups_all = sorted(set(group_of.values()))
     for name, run in sta.items():
@@ -301,7 +303,10 @@ def main():
             leak = mc["words"] * mc["bits"] * 2 * lib["inv_leak"]
             mem_w += w
             mem_leak += leak
-            g = group_of.get(mc["name"].split(".")[0], "other")
+            blk = mc["name"].split(".")[0] if "." in mc["name"] else "top"
+            g = group_of.get(blk)
+            if g is None:
+                raise FlowError(f"memory {mc['name']}: instance prefix {blk} is no block of {synth}/summary.json")
             mem_by_group[g] = mem_by_group.get(g, 0.0) + w + leak
         internal, switching, leakage, _ = run["total"]
         clk = clk_net_w * period / run["period_ns"]
@@ -330,8 +335,9 @@ def main():
     ratio = half["dynamic_w"] / raw["dynamic_w"]
     if abs(ratio - 0.5) > 0.005:
         raise FlowError(f"check failed: at half the clock the dynamic power is {ratio:.4f} of it, not 0.5")
-    if raw["annotated_fraction"] < 0.999:
-        raise FlowError(f"only {raw['annotated_fraction']:.1%} of the nets were annotated from the simulation")
+    for name, run in summary["runs"].items():
+        if run["annotated_fraction"] < 0.999:
+            raise FlowError(f"{name}: only {run['annotated_fraction']:.1%} of the nets were annotated from the simulation")
     summary["checks"] = {"busy_over_idle": raw["total_w"] / idle["total_w"], "half_clock_dynamic_ratio": ratio}
     # The clock, told apart: the flip-flops' clock pins (their internal power when no
     # data moves: the idle run's sequential internal power) and the clock net.
@@ -355,7 +361,7 @@ def main():
         px = CIF[0] * CIF[1]
         summary["frames"][mode] = {
             "cif_cycles": cycles, "fps": f_hz / cycles, "energy_j": e, "energy_per_pixel_j": e / px,
-            "energy_per_disparity_evaluation_j": e / (px * D * passes), "disparity_passes": passes,
+            "energy_per_disparity_evaluation_j": e / (px * d * passes), "disparity_passes": passes,
             "energy_90nm_estimate_j": e_dyn * scale, "energy_per_pixel_90nm_estimate_j": e_dyn * scale / px,
             "power_90nm_estimate_w": run["dynamic_w"] * scale}
     summary["seconds"] = int(time.time() - t_start)
@@ -365,7 +371,7 @@ def main():
     for mode in MODES:
         fr, rn = summary["frames"][mode], summary["runs"][mode]
         log(f"  {mode}: {rn['total_w'] * 1e3:.1f} mW at {FREQ_MHZ:g} MHz, {fr['energy_j'] * 1e3:.2f} mJ a CIF frame "
-            f"at D = {D}, {fr['energy_per_pixel_j'] * 1e9:.1f} nJ a pixel")
+            f"at D = {d}, {fr['energy_per_pixel_j'] * 1e9:.1f} nJ a pixel")
     log(f"  idle (configured, not started): {idle['total_w'] * 1e3:.1f} mW")
 
 
@@ -392,7 +398,7 @@ def write_report(out, s):
         a, b, c = r["raw"]["by_group"][g], r["lr"]["by_group"][g], r["idle"]["by_group"][g]
         lines.append(f"| {g} | {mw(a['logic_w'])} | {mw(a['memory_w'])} | {mw(b['logic_w'])} | {mw(b['memory_w'])} "
                      f"| {mw(c['logic_w'] + c['memory_w'])} |")
-    lines += ["", "Energy of a CIF frame (352 x 288) at D = 64: the crop's mean power over the frame's cycles "
+    lines += ["", f"Energy of a CIF frame (352 x 288) at D = {s['disparities']}: the crop's mean power over the frame's cycles "
               "(measured on the RTL core):", "",
               "| mode | cycles | fps | mJ a frame | nJ a pixel | pJ a disparity evaluation | 90 nm / 1.0 V estimate, nJ a pixel |",
               "|---|---|---|---|---|---|---|"]

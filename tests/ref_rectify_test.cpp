@@ -48,6 +48,18 @@ TEST(Rectify, MeshShapeAndChecks) {
   EXPECT_THROW(check_mesh(bad), std::invalid_argument);
 }
 
+// The range check is on the rounded node: 4096 - 1/128 pixel rounds to 4096 (out),
+// -4096 - 1/128 rounds to -4096 (in).
+TEST(Rectify, MeshFromMapsChecksTheRoundedNode) {
+  cv::Mat mx(9, 9, CV_32FC1, cv::Scalar(1.0f)), my(9, 9, CV_32FC1, cv::Scalar(1.0f));
+  mx.at<float>(8, 8) = 4096.0f - 1.0f / 128;
+  EXPECT_THROW(mesh_from_maps(mx, my, 8, 8, 3), std::invalid_argument);
+  mx.at<float>(8, 8) = -4096.0f - 1.0f / 128;
+  const Mesh m = mesh_from_maps(mx, my, 8, 8, 3);
+  EXPECT_EQ(m.u[3], -kMeshCoordLimit);
+  EXPECT_NO_THROW(check_mesh(m));
+}
+
 // Bilinear interpolation reproduces an affine map exactly: nodes at 32 (x + y / 2),
 // 32 (y - x / 4) + 5 give those values at every pixel.
 TEST(Rectify, InterpolationIsExactOnAffineMaps) {

@@ -281,6 +281,9 @@ Netlist read_netlist(const std::string& path) {
     if (parse_macro_type(type, m)) {
       m.name = name;
       m.type = type;
+      for (const char* clk : {"RD_CLK", "WR_CLK"})
+        if (pin(clk).size() != 1 || nl.net_name[size_t(pin(clk)[0])] != "clk_i")
+          fail("netlist: macro " + name + " is not clocked by clk_i");
       m.rd_addr = pin("RD_ADDR");
       m.rd_data = pin("RD_DATA");
       m.rd_en = pin("RD_EN").at(0);
@@ -603,6 +606,23 @@ int run(int argc, char** argv) {
       fail("recording: port " + name + " has " + std::to_string(width) + " bits, the netlist " +
            std::to_string(p.bits.size()));
     cols.push_back(std::move(p));
+  }
+  // The recording must give every port but the clock, as the netlist declares it.
+  {
+    std::vector<std::string> want, got;
+    for (const auto& v : {nl.inputs, nl.outputs})
+      for (const auto& p : v)
+        if (p != "clk_i") want.push_back(p);
+    for (const P& c : cols) got.push_back(c.name);
+    std::sort(want.begin(), want.end());
+    std::sort(got.begin(), got.end());
+    if (want != got) {
+      std::string miss;
+      for (const auto& p : want)
+        if (!std::binary_search(got.begin(), got.end(), p)) miss += " " + p;
+      fail("recording " + ports + ": its ports are not the netlist's (missing:" + (miss.empty() ? " none" : miss) +
+           "; or extra or repeated ones)");
+    }
   }
   Sim sim(nl);
   sim.settle();

@@ -102,12 +102,15 @@ Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, i
       if (!std::isfinite(fx) || !std::isfinite(fy))
         throw std::invalid_argument("mesh_from_maps: a non-finite map value at node (" + std::to_string(i) + ", " +
                                     std::to_string(j) + ")");
-      const double lim = double(kMeshCoordLimit) / (1 << kMeshFracBits);
-      if (fx < -lim || fx >= lim || fy < -lim || fy >= lim)
+      const double lim = 2.0 * kMeshCoordLimit;  // far outside: no int overflow in the rounding
+      const double su = double(fx) * (1 << kMeshFracBits), sv = double(fy) * (1 << kMeshFracBits);
+      const int32_t u = std::abs(su) < lim ? int32_t(cvRound(su)) : kMeshCoordLimit,
+                    v = std::abs(sv) < lim ? int32_t(cvRound(sv)) : kMeshCoordLimit;
+      if (u < -kMeshCoordLimit || u >= kMeshCoordLimit || v < -kMeshCoordLimit || v >= kMeshCoordLimit)
         throw std::invalid_argument("mesh_from_maps: node (" + std::to_string(i) + ", " + std::to_string(j) +
                                     ") outside -4096 .. 4096 pixels");
-      m.u[size_t(j) * size_t(m.nx) + size_t(i)] = cvRound(double(fx) * (1 << kMeshFracBits));
-      m.v[size_t(j) * size_t(m.nx) + size_t(i)] = cvRound(double(fy) * (1 << kMeshFracBits));
+      m.u[size_t(j) * size_t(m.nx) + size_t(i)] = u;
+      m.v[size_t(j) * size_t(m.nx) + size_t(i)] = v;
     }
   return m;
 }

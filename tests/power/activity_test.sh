@@ -38,7 +38,7 @@ V
 { echo "ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out m_o:1:out"
   printf '%s\n' "0 0 0 0 0" "1 1 1 0 0" "1 0 0 0 0" "1 0 1 1 0" "1 1 0 1 1"; } > "$work/p.txt"
 fails=0
-if ! "$act" "$work/n.v" "$work/p.txt" "$work/a" > "$work/log" 2>&1; then
+if ! "$act" "$work/n.v" "$work/p.txt" "$work/a" --hold 3 > "$work/log" 2>&1; then
   echo "FAIL: mcadsw_activity failed on a consistent recording"; cat "$work/log"; exit 1
 fi
 # Transitions and high cycles over the 5 cycles (from the all-zero, reset state):
@@ -46,17 +46,33 @@ fi
 #   n1: down c1, up c2, down c4 = 3, high c0, c2, c3 = 3;  q: up after c2, down after c4 = 2, high c3, c4 = 2
 #   y: up c1, down c2, up c3, down c4, up after = 5, high c1, c3 = 2;  m: up after c3 = 1, high c4 = 1
 # Macro: 5 reads (RD_EN always), 4 writes (rst_ni high at c1..c4).
+# expect FILE LINE: FILE (frame or idle) has LINE.
 expect() {
-  if grep -qx "$1" "$work/a.frame.txt"; then echo "ok   $1"; else echo "FAIL $1 (got: $(grep "^${1% * * *} " "$work/a.frame.txt"))"; fails=$((fails + 1)); fi
+  local key
+  key=$(cut -d' ' -f1-2 <<< "$2")
+  if grep -qx "$2" "$work/a.$1.txt"; then echo "ok   $1: $2"
+  else echo "FAIL $1: $2 (got: $(grep "^$key " "$work/a.$1.txt"))"; fails=$((fails + 1)); fi
 }
-expect "cycles 5"
-expect "net a_i 3 2"
-expect "net rst_ni 1 4"
-expect "net n1 3 3"
-expect "net q_o 2 2"
-expect "net y_o 5 2"
-expect "net m_o 1 1"
-expect "macro m MCADSW_RAM_S2_W1_A1_SYNC_WE 2 1 5 4"
+expect frame "cycles 5"
+expect frame "net a_i 3 2"
+expect frame "net rst_ni 1 4"
+expect frame "net n1 3 3"
+expect frame "net q_o 2 2"
+expect frame "net y_o 5 2"
+expect frame "net m_o 1 1"
+expect frame "macro m MCADSW_RAM_S2_W1_A1_SYNC_WE 2 1 5 4"
+# --hold 3: the inputs held (a 1, rst 1; this netlist has no start or memory port to
+# quiet), 4 cycles to drain, then 3 counted: q stays 0 (n1 = 0), y = 1; the drains'
+# first edge reads mem[1] = 0 (written at the c4 edge), so m is 0 in the window;
+# every edge reads and (rst high) writes.
+expect idle "cycles 3"
+expect idle "net a_i 0 3"
+expect idle "net rst_ni 0 3"
+expect idle "net y_o 0 3"
+expect idle "net n1 0 0"
+expect idle "net q_o 0 0"
+expect idle "net m_o 0 0"
+expect idle "macro m MCADSW_RAM_S2_W1_A1_SYNC_WE 2 1 3 3"
 # An output that disagrees with the recording (y at c3) stops the run.
 sed '5s/^1 0 1 1 0$/1 0 0 1 0/' "$work/p.txt" > "$work/bad.txt"
 if "$act" "$work/n.v" "$work/bad.txt" "$work/b" > "$work/blog" 2>&1; then
@@ -65,5 +81,14 @@ elif grep -q "cycle 3: output y_o bit 0: netlist 1, RTL 0" "$work/blog"; then
   echo "ok   a wrong output stops the run: $(grep 'cycle 3' "$work/blog")"
 else
   echo "FAIL: the mismatch message is missing"; cat "$work/blog"; fails=$((fails + 1))
+fi
+# A recording without one of the netlist's ports (m_o) is refused by name.
+{ echo "ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out"; printf '%s\n' "0 0 0 0"; } > "$work/short.txt"
+if "$act" "$work/n.v" "$work/short.txt" "$work/c" > "$work/clog" 2>&1; then
+  echo "FAIL: a recording without m_o was accepted"; fails=$((fails + 1))
+elif grep -q "missing: m_o" "$work/clog"; then
+  echo "ok   a recording without a port is refused: $(cat "$work/clog")"
+else
+  echo "FAIL: the missing port is not named"; cat "$work/clog"; fails=$((fails + 1))
 fi
 [ "$fails" = 0 ] && echo "activity_test: all checks passed" || { echo "activity_test: $fails failed"; exit 1; }
