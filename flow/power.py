@@ -26,9 +26,8 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import FLOW, LIBERTY, PREFIX, ROOT, FlowError, Run, default_out, gen_package, indent, log, tail  # noqa: E402
+from flowlib import CON, FLOW, LIBERTY, PREFIX, ROOT, FlowError, Run, default_out, gen_package, indent, log, tail  # noqa: E402
 
-FREQ_MHZ = 95.0                  # the paper's clock (Table III), constraints/mcadsw.sdc
 CIF = (352, 288)
 D_PAPER = 64                     # the paper's D; a smaller DMAX runs at D = DMAX
 CROP = "140,117,72,54"           # 4 x 3 blocks of 18 x 18 inside Teddy's CIF frame
@@ -262,8 +261,9 @@ def main():
         raise FlowError(f"OpenSTA ({args.sta}) not found (make bootstrap installs it)")
     lib = liberty_facts(args.liberty)
 
-    # 3. OpenSTA.
-    period = 1000.0 / FREQ_MHZ
+    # 3. OpenSTA, at the clock of constraints/mcadsw.sdc (the one place it is set).
+    period = float(re.search(r"^set period\s+(\S+)", (CON / "mcadsw.sdc").read_text(), re.M).group(1))
+    freq_mhz = 1000.0 / period
     runs = [("raw", files["raw"], 1), ("raw_half_clock", files["raw"], 2), ("lr", files["lr"], 1),
             ("idle", files["idle"], 1)]
     res = out / "power_sta.txt"
@@ -280,14 +280,14 @@ def main():
     (nets, cells), sta = read_results(res)
 
     # 4. Figures.
-    vdd, f_hz = lib["vdd"], FREQ_MHZ * 1e6
+    vdd, f_hz = lib["vdd"], freq_mhz * 1e6
     flops = {c: 0 for c in lib["clk_cap"]}
     for line in netlist.open():
         m = re.match(r"\s*(DFFPOSX1|DFFSR)\s", line)
         if m:
             flops[m.group(1)] += 1
     clk_net_w = sum(n * lib["clk_cap"][c] for c, n in flops.items()) * vdd * vdd * f_hz
-    summary = {"clock_mhz": FREQ_MHZ, "vdd": vdd, "liberty": args.liberty, "netlist": str(netlist),
+    summary = {"clock_mhz": round(freq_mhz, 3), "vdd": vdd, "liberty": args.liberty, "netlist": str(netlist),
                "crop": CROP, "disparities": d, "netlist_nets": nets, "netlist_cells": cells,
                "flip_flops": flops, "memory_model": MEM_MODEL, "runs": {}}
     groups_all = sorted(set(group_of.values()))
@@ -370,7 +370,7 @@ def main():
     log(f"summary {out}/summary.json, report {out}/report.md ({summary['seconds']} s)")
     for mode in MODES:
         fr, rn = summary["frames"][mode], summary["runs"][mode]
-        log(f"  {mode}: {rn['total_w'] * 1e3:.1f} mW at {FREQ_MHZ:g} MHz, {fr['energy_j'] * 1e3:.2f} mJ a CIF frame "
+        log(f"  {mode}: {rn['total_w'] * 1e3:.1f} mW at {freq_mhz:.1f} MHz, {fr['energy_j'] * 1e3:.2f} mJ a CIF frame "
             f"at D = {d}, {fr['energy_per_pixel_j'] * 1e9:.1f} nJ a pixel")
     log(f"  idle (configured, not started): {idle['total_w'] * 1e3:.1f} mW")
 

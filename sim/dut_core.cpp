@@ -108,20 +108,14 @@ class PortRecorder {
   }
   template <typename T>
   void scalar(const char* name, int width, bool input, T v) {
-    if (header_) {
-      names_ += std::string(" ") + name + ":" + std::to_string(width) + (input ? ":in" : ":out");
-      return;
-    }
+    if (named(name, width, input)) return;
     char buf[24];
     std::snprintf(buf, sizeof buf, "%llx ", static_cast<unsigned long long>(v));
     line_ += buf;
   }
   template <std::size_t N>
   void wide(const char* name, int width, bool input, const VlWide<N>& v) {
-    if (header_) {
-      names_ += std::string(" ") + name + ":" + std::to_string(width) + (input ? ":in" : ":out");
-      return;
-    }
+    if (named(name, width, input)) return;
     for (int w = (width + 31) / 32 - 1; w >= 0; --w) {
       char buf[12];
       std::snprintf(buf, sizeof buf, "%08x", static_cast<unsigned>(v[w]));
@@ -183,6 +177,12 @@ class PortRecorder {
   }
 
  private:
+  // The first record writes the header: the port's name, width and direction.
+  bool named(const char* name, int width, bool input) {
+    if (header_) names_ += std::string(" ") + name + ":" + std::to_string(width) + (input ? ":in" : ":out");
+    return header_;
+  }
+
   std::ofstream f_;
   bool header_ = true;
   std::string names_, line_;

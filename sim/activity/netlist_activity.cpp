@@ -75,7 +75,6 @@ struct Cell {
   std::string type, name;
   Kind kind;
   std::vector<int> in, out;
-  int level = 0;
 };
 struct Macro {
   std::string name, type;
