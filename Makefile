@@ -79,9 +79,11 @@ gen-rtl-pkg: configure
 SYNTH_JOBS   ?= 2
 SYNTH_MEM_MB ?= 7500
 SYNTH_ARGS = $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --jobs $(SYNTH_JOBS) \
+  $(if $(CLOCK_GATE_MIN),--clock-gate-min $(CLOCK_GATE_MIN)) \
   --mem-mb $(SYNTH_MEM_MB) --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
 ## synth: Yosys to OSU 0.18 um gates block by block, memories as macros, OpenSTA timing
-##   (build/synth/report.md; flow/; DMAX= PAR= another configuration, SYNTH_JOBS=2, SYNTH_MEM_MB=7500)
+##   (build/synth/report.md; flow/; DMAX= PAR= another configuration, SYNTH_JOBS=2, SYNTH_MEM_MB=7500,
+##   CLOCK_GATE_MIN=4: clock-gate groups of 4+ flip-flops sharing an enable, 0: none, in build/synth_ungated)
 synth: gen-rtl-pkg
 	@python3 flow/synth.py synth $(SYNTH_ARGS)
 

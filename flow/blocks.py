@@ -175,18 +175,27 @@ def block_outputs(module, d):
             f.write(f"{module} {q} {width}\n")
 
 
+# The OSU 0.18 um liberty gives its LATCH (the clock gates of flow/clock_gate.py)
+# area 0; its LEF gives the cell 5.6 x 10 um, i.e. 56 in the liberty's units
+# (NAND2X1: 24, 2.4 x 10 um). `stat -liberty` counts it 0, so area_figures adds it.
+LATCH_AREA = 56.0
+
+
 def area_figures(area_txt, module, nand2_area):
-    """(NAND2 eq, flip-flops) of module in a `stat -liberty` output."""
-    cur, ff, area = None, 0, 0.0
+    """(NAND2 eq, flip-flops) of module in a `stat -liberty` output (latches added
+    at their LEF area)."""
+    cur, ff, latches, area = None, 0, 0, 0.0
     for line in Path(area_txt).read_text().splitlines():
         w = line.split()
         if line.startswith("=== "):
             cur = w[1].lstrip("\\")
         elif cur == module and len(w) == 2 and w[0].startswith("DFF") and w[1].isdigit():
             ff += int(w[1])
+        elif cur == module and len(w) == 2 and w[0] == "LATCH" and w[1].isdigit():
+            latches += int(w[1])
         elif "Chip area for module" in line and re.sub(r"[^A-Za-z0-9_]", "", w[4]) == module:
             area = float(w[-1])
-    return int(area / nand2_area + 0.5), ff
+    return int((area + latches * LATCH_AREA) / nand2_area + 0.5), ff
 
 
 def read_table(path):
@@ -227,7 +236,7 @@ def paper_share(g):
 
 
 
-def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem_mb, nand2_area):
+def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem_mb, nand2_area, gate_min):
     """Step 2: each block whose stamp changed through flow/synth_block.tcl (the
     top's own logic with the blocks as black boxes), longest first, on run's
     pool; marks each block cached or not. Returns the Yosys version."""
@@ -235,13 +244,14 @@ def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem
     # Stamp: everything a block's netlist depends on. Sources: the files of the
     # block's module and sub-modules (src attributes of the elaborated design) and
     # the package; parameters and module names (for the top also the ports of the
-    # blocks it instantiates); flow: the block script, the files it reads and the
-    # Yosys version.
+    # blocks it instantiates); flow: the block script, the files it reads, the
+    # clock gating's group size and the Yosys version.
     yosys_version = subprocess.run([yosys, "-V"], capture_output=True, text=True).stdout.strip()
-    flow_files = [FLOW / "synth_block.tcl", CON / "macro_map.v", CON / "abc_osu018.constr",
+    flow_files = [FLOW / "synth_block.tcl", FLOW / "clock_gate.py", CON / "macro_map.v", CON / "abc_osu018.constr",
                   CON / "abc_osu018.script", Path(lib), RAM_MODEL]
     for b in blocks:
-        h = hashlib.sha256(f"{STAMP_SALT}; yosys: {yosys_version}; period_ps {period_ps}\n{b['sig']}".encode())
+        h = hashlib.sha256(f"{STAMP_SALT}; yosys: {yosys_version}; period_ps {period_ps}; "
+                           f"clock gate min {gate_min}\n{b['sig']}".encode())
         for f in b["files"]:
             h.update(f"== {f}\n".encode())
             h.update((rtl / f).read_bytes() if (rtl / f).is_file() else b"(missing)")
@@ -252,7 +262,8 @@ def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem
         d = out / "blocks" / b["label"]
         b["cached"] = ((d / "stamp").is_file() and (d / "stamp").read_text().strip() == b["stamp"]
                        and (d / "netlist.v").is_file() and (d / "netlist.v").stat().st_size > 0
-                       and (d / "area.txt").is_file() and (d / "cost.json").is_file())
+                       and (d / "area.txt").is_file() and (d / "cost.json").is_file()
+                       and (gate_min == 0 or (d / "clock_gates.json").is_file()))
         if not b["cached"]:
             (d / "stamp").unlink(missing_ok=True)
             # Estimates for the schedule: the last run's time and peak when known,
@@ -271,14 +282,16 @@ def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem
     def start(b):
         d = out / "blocks" / b["label"]
         d.mkdir(parents=True, exist_ok=True)
-        for f in ("netlist.v", "netlist.v.tmp", "area.txt", "memories.txt", "registers.txt", "cost.json"):
+        for f in ("netlist.v", "netlist.v.tmp", "area.txt", "memories.txt", "registers.txt", "cost.json",
+                  "clock_gates.json"):
             (d / f).unlink(missing_ok=True)
         with open(d / "yosys.err", "w") as err:
             p = run.start([yosys, "-q", "-l", str(d / "yosys.log"), "-c", str(FLOW / "synth_block.tcl")],
                           stderr=err,
                           env={"MODULE": b["module"], "ELAB_IL": str(out / "elab.il"), "OUT_DIR": str(d),
                                "BLACKBOXES": " ".join(block_modules) if b["label"] == "top" else "",
-                               "PERIOD_PS": str(period_ps), "LIBERTY": lib, "CONSTRAINTS": str(CON)})
+                               "PERIOD_PS": str(period_ps), "LIBERTY": lib, "CONSTRAINTS": str(CON),
+                               "CLOCK_GATE_MIN": str(gate_min)})
         log(f"  {b['label']} ({b['module']}) started")
         return p
 

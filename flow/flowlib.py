@@ -200,8 +200,10 @@ def gen_package(gen, dmax, par):
     return r.stdout
 
 
-def default_out(build, dmax, par):
+def default_out(build, dmax, par, clock_gate_min=4):
+    """The synthesis folder of a configuration (without clock gating: _ungated after it)."""
+    ungated = "" if clock_gate_min else "_ungated"
     if par != "1":
-        return Path(build) / f"synth_dmax{dmax}_par{par}"
-    return Path(build) / ("synth" if dmax == "64" else f"synth_dmax{dmax}")
+        return Path(build) / f"synth_dmax{dmax}_par{par}{ungated}"
+    return Path(build) / ("synth" + ungated if dmax == "64" else f"synth_dmax{dmax}{ungated}")
 

@@ -69,7 +69,10 @@ def synth(a):
             (Path(a.out) / f).unlink(missing_ok=True)
     pkg_text = gen_package(a.gen_rtl_pkg, a.dmax, a.par)
     dmax, par = int(a.dmax), int(a.par)
-    out = Path(a.out or default_out(a.build, a.dmax, a.par)).resolve()
+    if not re.fullmatch(r"[0-9]+", a.clock_gate_min):
+        raise FlowError(f"--clock-gate-min '{a.clock_gate_min}' is not a non-negative integer (0: no gating)", 2)
+    gate_min = int(a.clock_gate_min)
+    out = Path(a.out or default_out(a.build, a.dmax, a.par, gate_min)).resolve()
     for f in STALE:
         (out / f).unlink(missing_ok=True)
     rtl = Path(a.rtl).resolve()
@@ -100,13 +103,13 @@ def synth(a):
     run = Run()
     try:
         return synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, sdc, period_ns,
-                         period_ps, clock_mhz, nand2_area)
+                         period_ps, clock_mhz, nand2_area, gate_min)
     finally:
         run.stop()
 
 
 def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, sdc, period_ns, period_ps,
-              clock_mhz, nand2_area):
+              clock_mhz, nand2_area, gate_min):
     # ---- (1) Elaboration ----
     log(f"DMAX={dmax}, PAR={par}, clock {period_ns} ns, liberty {Path(lib).name}; elaborating "
         f"(log: {out}/elab.log)")
@@ -137,7 +140,7 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
 
     # ---- (2) Blocks ----
     yosys_version = blk.synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, a.jobs, a.mem_mb,
-                                   nand2_area)
+                                   nand2_area, gate_min)
     cached = [b["label"] for b in blocks if b["cached"]]
     yosys_wall = int(time.time() - t_start)
 
@@ -187,6 +190,9 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         cost = json.loads((d / "cost.json").read_text())
         b["seconds"], b["peak_MB"] = cost["seconds"], cost["peak_MB"]
         b["nand2"], b["ff"] = blk.area_figures(d / "area.txt", b["module"], nand2_area)
+        cg = json.loads((d / "clock_gates.json").read_text()) if gate_min else {}
+        b["gated"], b["gates"], b["kept_enable"] = (cg.get("gated_flops", 0), cg.get("gates", 0),
+                                                    cg.get("kept_enable_flops", 0))
         mems = blk.read_table(d / "memories.txt")
         b["mem"] = sum(int(m[4]) for m in mems)
         b["group"] = blk.group_of(b)
@@ -254,8 +260,13 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         "per_block": {g: v[0] for g, v in groups},
         "blocks": {b["label"]: {"module": b["module"], "instances": b["instances"], "nand2_eq": b["nand2"],
                                 "flip_flops": b["ff"], "memory_bits": b["mem"], "group": b["group"],
-                                "yosys_seconds": b["seconds"], "peak_MB": b["peak_MB"], "reused": b["cached"]}
+                                "yosys_seconds": b["seconds"], "peak_MB": b["peak_MB"], "reused": b["cached"],
+                                "gated_flip_flops": b["gated"], "clock_gates": b["gates"]}
                    for b in blocks},
+        "clock_gating": {"min_group": gate_min,
+                         "gated_flip_flops": sum(b["instances"] * b["gated"] for b in blocks),
+                         "gates": sum(b["instances"] * b["gates"] for b in blocks),
+                         "enable_flip_flops_kept": sum(b["instances"] * b["kept_enable"] for b in blocks)},
         # For the report (flow/synth_report.py).
         "liberty": Path(lib).name, "jobs": a.jobs, "cif_cycles": cif_cycles,
         "run": {"wall_seconds": wall_s, "blocks_wall_seconds": yosys_wall, "sta_seconds": sta_s,
@@ -308,6 +319,9 @@ def main():
         p.add_argument("--yosys", default="yosys", help="Yosys executable")
         p.add_argument("--liberty", default=LIBERTY)
         p.add_argument("--gen-rtl-pkg", help="the package generator (default BUILD/bin/gen_rtl_pkg)")
+        p.add_argument("--clock-gate-min", default="4",
+                       help="clock-gate each group of at least this many flip-flops sharing an enable "
+                            "(flow/clock_gate.py; default 4; 0: no gating, output BUILD/synth_ungated...)")
         if name == "fpga":
             p.add_argument("--top", default="mcadsw_top", help="another module (mcadsw_regs: a quick check)")
         if name == "check":
@@ -316,6 +330,7 @@ def main():
     a = ap.parse_args()
     # Empty values (make synth DMAX= PAR=) are the defaults.
     a.dmax, a.par = a.dmax or "64", a.par or "1"
+    a.clock_gate_min = a.clock_gate_min or "4"
     a.gen_rtl_pkg = a.gen_rtl_pkg or str(Path(a.build) / "bin" / "gen_rtl_pkg")
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     if a.cmd == "check":

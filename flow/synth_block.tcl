@@ -7,10 +7,14 @@
 # flip-flop outputs modelled as driven by an INVX1, outputs loaded with 0.02 pF,
 # so ABC builds buffer trees on high-fanout nets, including those that enter the
 # block through a port).
+# Clock gating (CLOCK_GATE_MIN > 0): flow/clock_gate.py turns each group of at
+# least CLOCK_GATE_MIN enable flip-flops sharing clock and enable into flip-flops
+# on a clock gated by a latch and an AND gate (OSU 0.18 um has no clock-gate cell).
 # Environment: MODULE (the block module; mcadsw_engine for the top's own logic),
 # BLACKBOXES (for the top: the block modules, of which only the ports are kept),
-# ELAB_IL, OUT_DIR, PERIOD_PS, LIBERTY, CONSTRAINTS (the constraints/ folder).
-# Writes in OUT_DIR: memories_list.txt, memories_dump.txt, registers_dump.txt,
+# ELAB_IL, OUT_DIR, PERIOD_PS, LIBERTY, CONSTRAINTS (the constraints/ folder),
+# CLOCK_GATE_MIN (0: no gating).
+# Writes in OUT_DIR: clock_gates.json (with gating), memories_list.txt, memories_dump.txt, registers_dump.txt,
 # area.txt (stat -liberty) and netlist.v.tmp (the block module alone:
 # write_verilog skips black boxes; flow/synth.py renames it netlist.v).
 set module $::env(MODULE)
@@ -32,6 +36,14 @@ yosys tee -q -o $out/memories_dump.txt dump t:\$mem_v2
 yosys tee -q -o $out/registers_dump.txt dump t:\$*dff* r:WIDTH>=64 %i
 yosys techmap -map $con/macro_map.v t:\$mem_v2
 yosys synth -run fine:
+if {$::env(CLOCK_GATE_MIN) > 0} {
+  yosys write_json $out/ungated.json
+  yosys log [exec python3 [file join [file dirname $con] flow clock_gate.py] $out/ungated.json \
+      $out/gated.json $module $::env(CLOCK_GATE_MIN) $out/clock_gates.json]
+  yosys design -reset
+  yosys read_json $out/gated.json
+  file delete $out/ungated.json $out/gated.json
+}
 yosys dfflibmap -liberty $lib
 yosys abc -D $::env(PERIOD_PS) -constr $con/abc_osu018.constr -liberty $lib -script $con/abc_osu018.script
 yosys setundef -zero

@@ -51,6 +51,11 @@ def render(s):
          f"| data registers of 64 bits or more (flip-flops, in the gate count) | {s['data_register_bits']} bits in "
          f"{len(s['data_registers'])} registers (listed below) | |",
          f"| flip-flops (in the gate count) | {s['flip_flops']} | |",
+         "| clock gating (flow/clock_gate.py, latch + AND a group) | " + (
+             f"{s['clock_gating']['gated_flip_flops']} flip-flops behind {s['clock_gating']['gates']} gates "
+             f"(groups of {s['clock_gating']['min_group']} or more sharing an enable); "
+             f"{s['clock_gating']['enable_flip_flops_kept']} keep their enable multiplexer"
+             if s['clock_gating']['min_group'] else "none (CLOCK_GATE_MIN=0)") + " | none described |",
          f"| clock target | {s['clock_mhz']} MHz | 95 MHz |",
          f"| worst slack (WNS) | {s['worst_slack_ns']} ns ({s['wns_ns']} ns) | |",
          f"| achievable clock (1 / (period - slack)) | {s['fmax_mhz']} MHz | 95 MHz |"]

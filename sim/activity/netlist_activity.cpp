@@ -5,7 +5,9 @@
 // pin does not propagate through the logic after it, so every net needs its own
 // activity from a simulation. A gate-level VCD of the ~365k cells would be huge;
 // instead this program simulates the OpenSTA netlist itself (the flat
-// mcadsw_engine_sta.v of `make synth`, zero-delay, cycle by cycle, event-driven)
+// mcadsw_engine_sta.v of `make synth`, zero-delay, cycle by cycle, event-driven,
+// the clock's two phases simulated so that the clock gates of flow/clock_gate.py
+// work as in silicon: INVX1 -> LATCH -> AND2 on clk_i)
 // on the input ports an RTL run recorded (mcadsw_sim_core --record-ports FILE),
 // and counts every net's transitions and high cycles. The RTL run's output ports
 // are compared every cycle: a mismatch stops the run (the netlist, this
@@ -18,6 +20,7 @@
 // OUT_PREFIX.idle.txt: N further cycles with the last configuration held and
 // start_i, mem_gnt_i and mem_rvalid_i low (the engine configured, not started).
 // Each file: "cycles N", then "net <name> <transitions> <high cycles>" for every
+// net (high cycles in halves: a gated clock is high half a cycle)
 // net, "macro <instance> <cell> <words> <bits> <reads> <writes>" for every memory
 // macro (reads: RD_EN high at a clock edge; writes: any write enable high).
 #include <algorithm>
@@ -62,6 +65,7 @@ const std::map<std::string, CellType>& cell_types() {
     comb("OAI22X1", {"A", "B", "C", "D"}, {"Y"});
     comb("MUX2X1", {"A", "B", "S"}, {"Y"});
     comb("FAX1", {"A", "B", "C"}, {"YC", "YS"});
+    comb("LATCH", {"D", "CLK"}, {"Q"});  // transparent while CLK is high (a level-sensitive gate)
     comb("HAX1", {"A", "B"}, {"YC", "YS"});
     m["DFFPOSX1"] = {Kind::kDff, {"CLK", "D"}, {"Q"}};
     m["DFFSR"] = {Kind::kDffSr, {"CLK", "D", "R", "S"}, {"Q"}};
@@ -93,7 +97,7 @@ struct Netlist {
   std::vector<std::string> inputs, outputs;        // port names
   std::vector<Cell> cells;
   std::vector<Macro> macros;
-  int c0 = -1, c1 = -1;
+  int c0 = -1, c1 = -1, clk = -1;  // constants, the clock port
 
   int net(const std::string& n) {
     auto it = net_id.find(n);
@@ -307,7 +311,63 @@ Netlist read_netlist(const std::string& path) {
     }
     nl.cells.push_back(std::move(c));
   }
+  const auto ck = nl.net_id.find("clk_i");
+  if (ck == nl.net_id.end()) fail("netlist: no clk_i");
+  nl.clk = ck->second;
   return nl;
+}
+
+// Every flip-flop is clocked by clk_i or by a clock gate of flow/clock_gate.py
+// (AND2 of clk_i and a LATCH's Q, the LATCH's CLK an inverter of clk_i; buffers
+// allowed between): the two-phase simulation below is right for these only.
+void check_clocks(const Netlist& nl) {
+  std::vector<int> driver(nl.net_name.size(), -1);
+  for (size_t i = 0; i < nl.cells.size(); ++i)
+    for (int o : nl.cells[i].out)
+      if (o >= 0) driver[size_t(o)] = int(i);
+  const auto is = [](const Cell* c, std::initializer_list<const char*> types) {
+    if (!c) return false;
+    for (const char* t : types)
+      if (c->type == t) return true;
+    return false;
+  };
+  const auto drv = [&](int net) -> const Cell* {  // the driver, through buffers
+    for (int hops = 0; hops < 64; ++hops) {
+      const int d = driver[size_t(net)];
+      if (d < 0) return nullptr;
+      const Cell& c = nl.cells[size_t(d)];
+      if (!is(&c, {"BUFX2", "BUFX4", "CLKBUF1", "CLKBUF2", "CLKBUF3"})) return &c;
+      net = c.in[0];
+    }
+    return nullptr;
+  };
+  const auto is_clk = [&](int net) {
+    while (driver[size_t(net)] >= 0 && is(&nl.cells[size_t(driver[size_t(net)])], {"BUFX2", "BUFX4", "CLKBUF1",
+                                                                                   "CLKBUF2", "CLKBUF3"}))
+      net = nl.cells[size_t(driver[size_t(net)])].in[0];
+    return net == nl.clk;
+  };
+  const auto gated = [&](int net) {
+    const Cell* a = drv(net);
+    if (!is(a, {"AND2X1", "AND2X2"})) return false;
+    for (int k = 0; k < 2; ++k) {
+      const Cell* l = drv(a->in[size_t(1 - k)]);
+      if (!is_clk(a->in[size_t(k)]) || !is(l, {"LATCH"})) continue;
+      const Cell* inv = drv(l->in[1]);
+      if (is(inv, {"INVX1", "INVX2", "INVX4", "INVX8"}) && is_clk(inv->in[0])) return true;
+    }
+    return false;
+  };
+  long gated_flops = 0;
+  for (const Cell& c : nl.cells) {
+    if (c.kind != Kind::kDff && c.kind != Kind::kDffSr) continue;
+    if (is_clk(c.in[0])) continue;
+    if (!gated(c.in[0]))
+      fail("netlist: flip-flop " + c.name + " is clocked by " + nl.net_name[size_t(c.in[0])] +
+           ", neither clk_i nor a clock gate (INVX -> LATCH -> AND2 on clk_i)");
+    ++gated_flops;
+  }
+  std::cerr << "activity: " << gated_flops << " flip-flops on gated clocks\n";
 }
 
 // ---- The recorded ports (sim/dut_core.cpp, --record-ports) ------------------------------
@@ -340,7 +400,7 @@ std::vector<uint8_t> hex_bits(const std::string& h, int width) {
 // cycle in order: a gate's fan-out lies at higher indices). A net's value is
 // final when its one driver has been evaluated, so a transition is counted there.
 enum Op : uint8_t { kAnd2, kNand2, kNand3, kOr2, kNor2, kNor3, kXor2, kXnor2, kBuf, kInv,
-                    kAoi21, kAoi22, kOai21, kOai22, kMux2, kFaC, kFaS, kHaC, kHaS };
+                    kAoi21, kAoi22, kOai21, kOai22, kMux2, kFaC, kFaS, kHaC, kHaS, kLatch };
 
 Op op_of(const std::string& type, int out) {
   static const std::map<std::string, Op> ops = {
@@ -348,7 +408,7 @@ Op op_of(const std::string& type, int out) {
       {"OR2X2", kOr2}, {"NOR2X1", kNor2}, {"NOR3X1", kNor3}, {"XOR2X1", kXor2}, {"XNOR2X1", kXnor2},
       {"BUFX2", kBuf}, {"BUFX4", kBuf}, {"CLKBUF1", kBuf}, {"CLKBUF2", kBuf}, {"CLKBUF3", kBuf},
       {"INVX1", kInv}, {"INVX2", kInv}, {"INVX4", kInv}, {"INVX8", kInv}, {"AOI21X1", kAoi21},
-      {"AOI22X1", kAoi22}, {"OAI21X1", kOai21}, {"OAI22X1", kOai22}, {"MUX2X1", kMux2}};
+      {"AOI22X1", kAoi22}, {"OAI21X1", kOai21}, {"OAI22X1", kOai22}, {"MUX2X1", kMux2}, {"LATCH", kLatch}};
   if (type == "FAX1") return out == 0 ? kFaC : kFaS;
   if (type == "HAX1") return out == 0 ? kHaC : kHaS;
   const auto it = ops.find(type);
@@ -378,7 +438,7 @@ class Sim {
     for (const Cell& c : nl.cells) {
       if (c.kind == Kind::kDff || c.kind == Kind::kDffSr) {
         flops_.push_back({c.in[1], c.out[0], c.kind == Kind::kDffSr ? c.in[2] : nl.c1,
-                          c.kind == Kind::kDffSr ? c.in[3] : nl.c1});
+                          c.kind == Kind::kDffSr ? c.in[3] : nl.c1, c.in[0]});
         continue;
       }
       for (size_t o = 0; o < c.out.size(); ++o) {
@@ -445,8 +505,8 @@ class Sim {
     if (x == v) return;
     x = v;
     ++toggles_[size_t(net)];
-    if (v) high_since_[size_t(net)] = cycle_;
-    else high_[size_t(net)] += cycle_ - high_since_[size_t(net)];
+    if (v) high_since_[size_t(net)] = time_;
+    else high_[size_t(net)] += time_ - high_since_[size_t(net)];
     for (int k = fan_start_[size_t(net)]; k < fan_start_[size_t(net) + 1]; ++k)
       pending_[size_t(fan_[size_t(k)]) >> 6] |= 1ull << (fan_[size_t(k)] & 63);
   }
@@ -485,6 +545,7 @@ class Sim {
         case kMux2: y = !(c ? a : b); break;
         case kFaC: y = (a & b) | (b & c) | (c & a); break;
         case kFaS: y = a ^ b ^ c; break;
+        case kLatch: y = b ? a : v[g.out]; break;  // D, CLK: holds while CLK is low
         case kHaC: y = a & b; break;
         default: y = a ^ b; break;  // kHaS
       }
@@ -492,12 +553,25 @@ class Sim {
       }
   }
 
-  // The rising clock edge: flip-flops take D, macros read and write; then the
-  // next cycle begins.
+  // The rising clock edge, which begins the next cycle: clk_i rises and the clock
+  // network settles (the gates' latches close, a gate whose latched enable is 1
+  // passes the edge), then every flip-flop whose clock rose takes D and the
+  // macros read and write (all with the values before the edge), and the logic
+  // settles in the high phase (the latches hold). The caller then sets the
+  // cycle's inputs, settles, and calls fall().
   void clock() {
+    ++cycle_;
+    time_ = 2 * cycle_;
+    clk_before_.clear();
+    for (const Flop& f : flops_) clk_before_.push_back(val_[size_t(f.c)]);
+    set(nl_.clk, 1);
+    settle();
     next_.clear();
-    for (const Flop& f : flops_)
+    for (size_t i = 0; i < flops_.size(); ++i) {
+      const Flop& f = flops_[i];
+      if (clk_before_[i] || !val_[size_t(f.c)]) continue;
       next_.emplace_back(f.q, !val_[size_t(f.r)] ? 0 : !val_[size_t(f.s)] ? 1 : val_[size_t(f.d)]);
+    }
     for (Macro& m : nl_.macros) {
       const auto addr = [&](const std::vector<int>& a) {
         long x = 0;
@@ -519,8 +593,15 @@ class Sim {
       }
       m.writes += wrote;
     }
-    ++cycle_;
     for (const auto& [net, v] : next_) set(net, v);
+    settle();
+  }
+  // The falling edge, half a cycle after the rising one: the gates' latches
+  // open and take the enables of the settled logic, the gated clocks fall.
+  void fall() {
+    time_ = 2 * cycle_ + 1;
+    set(nl_.clk, 0);
+    settle();
   }
 
   long cycle() const { return cycle_; }
@@ -528,7 +609,7 @@ class Sim {
   void restart() {
     std::fill(toggles_.begin(), toggles_.end(), 0);
     std::fill(high_.begin(), high_.end(), 0);
-    for (size_t n = 0; n < val_.size(); ++n) high_since_[n] = val_[n] ? cycle_ : -1;
+    for (size_t n = 0; n < val_.size(); ++n) high_since_[n] = val_[n] ? time_ : -1;
     for (Macro& m : nl_.macros) m.reads = m.writes = 0;
     start_ = cycle_;
   }
@@ -538,8 +619,8 @@ class Sim {
     o << "cycles " << cycle_ - start_ << "\n";
     for (size_t n = 0; n < val_.size(); ++n) {
       if (int(n) == nl_.c0 || int(n) == nl_.c1) continue;
-      const long high = high_[n] + (val_[n] ? cycle_ - high_since_[n] : 0);
-      o << "net " << nl_.net_name[n] << " " << toggles_[n] << " " << high << "\n";
+      const long high = high_[n] + (val_[n] ? time_ - high_since_[n] : 0);  // half cycles
+      o << "net " << nl_.net_name[n] << " " << toggles_[n] << " " << high / 2 << (high % 2 ? ".5" : "") << "\n";
     }
     for (const Macro& m : nl_.macros)
       o << "macro " << m.name << " " << m.type << " " << m.words << " " << m.bits << " " << m.reads << " "
@@ -549,7 +630,7 @@ class Sim {
 
  private:
   struct Flop {
-    int d, q, r, s;
+    int d, q, r, s, c;
   };
   Netlist& nl_;
   std::vector<uint8_t> val_;
@@ -559,7 +640,8 @@ class Sim {
   std::vector<uint64_t> pending_;
   std::vector<Flop> flops_;
   std::vector<std::pair<int, uint8_t>> next_;
-  long cycle_ = 0, start_ = 0;
+  std::vector<uint8_t> clk_before_;
+  long cycle_ = 0, start_ = 0, time_ = 0;  // time_ in half cycles
 };
 
 int run(int argc, char** argv) {
@@ -575,9 +657,7 @@ int run(int argc, char** argv) {
     else fail("unknown option " + a);
   }
   Netlist nl = read_netlist(netlist);
-  for (const Cell& c : nl.cells)
-    if ((c.kind == Kind::kDff || c.kind == Kind::kDffSr) && nl.net_name[size_t(c.in[0])] != "clk_i")
-      fail("netlist: flip-flop " + c.name + " is not clocked by clk_i");
+  check_clocks(nl);
   std::cerr << "activity: " << nl.cells.size() << " cells, " << nl.macros.size() << " macros, "
             << nl.net_name.size() << " nets\n";
 
@@ -639,6 +719,7 @@ int run(int argc, char** argv) {
         for (size_t j = 0; j < b.size(); ++j) sim.set(cols[k].bits[j], b[j]);
       }
     sim.settle();
+    sim.fall();
     for (size_t k = 0; k < cols.size(); ++k)
       if (!cols[k].input) {
         const auto b = hex_bits(vals[k], int(cols[k].bits.size()));
@@ -665,12 +746,14 @@ int run(int argc, char** argv) {
         for (int b : cols[k].bits) sim.set(b, 0);
     for (int i = 0; i < 4; ++i) {  // let the last responses drain
       sim.settle();
+      sim.fall();
       sim.clock();
     }
     sim.settle();
     sim.restart();
     for (long i = 0; i < hold; ++i) {
       sim.settle();
+      sim.fall();
       sim.clock();
     }
     sim.settle();

@@ -1,8 +1,8 @@
 // Two-state models of the OSU 0.18 um standard cells, for gate-level
 // simulation of the mapped netlist in Verilator (the library's own
 // osu018_stdcells.v uses UDPs, which Verilator does not read). Each function is
-// the liberty's `function` / `ff` group (osu018_stdcells.lib). TBUFX1/2 and
-// LATCH are not modelled: scripts/gls.sh rejects a netlist that uses them.
+// the liberty's `function` / `ff` / `latch` group (osu018_stdcells.lib). TBUFX1/2
+// are not modelled: scripts/gls.sh rejects a netlist that uses them.
 /* verilator lint_off DECLFILENAME */
 module AND2X1 (input A, B, output Y); assign Y = A & B; endmodule
 module AND2X2 (input A, B, output Y); assign Y = A & B; endmodule
@@ -35,6 +35,9 @@ module XNOR2X1 (input A, B, output Y); assign Y = ~(A ^ B); endmodule
 module XOR2X1 (input A, B, output Y); assign Y = A ^ B; endmodule
 module DFFPOSX1 (input CLK, D, output reg Q); always @(posedge CLK) Q <= D; endmodule
 module DFFNEGX1 (input CLK, D, output reg Q); always @(negedge CLK) Q <= D; endmodule
+// Transparent while CLK is high (enable : "CLK"): the clock gates of
+// flow/clock_gate.py, whose CLK is the inverted clock.
+module LATCH (input CLK, D, output reg Q); always_latch if (CLK) Q = D; endmodule
 // clear (!R) and preset (!S), both active: Q = 0 (clear_preset_var1 : L).
 module DFFSR (input CLK, D, R, S, output reg Q);
   always @(posedge CLK or negedge R or negedge S)

@@ -10,7 +10,7 @@ module cells_tb;
   wire y_and2, y_and2x2, y_aoi21, y_aoi22, y_buf2, y_buf4, y_ck1, y_ck2, y_ck3;
   wire yc_fa, ys_fa, yc_ha, ys_ha, y_inv1, y_inv2, y_inv4, y_inv8, y_mux;
   wire y_nand2, y_nand3, y_nor2, y_nor3, y_oai21, y_oai22, y_or2, y_or2x2, y_xnor, y_xor;
-  wire q_pos, q_neg, q_sr;
+  wire q_pos, q_neg, q_sr, q_lat;
 
   AND2X1  u0 (.A(in[0]), .B(in[1]), .Y(y_and2));
   AND2X2  u1 (.A(in[0]), .B(in[1]), .Y(y_and2x2));
@@ -41,6 +41,7 @@ module cells_tb;
   DFFPOSX1 u26 (.CLK(clk), .D(d), .Q(q_pos));
   DFFNEGX1 u27 (.CLK(clk), .D(d), .Q(q_neg));
   DFFSR    u28 (.CLK(clk), .D(d), .R(r), .S(s), .Q(q_sr));
+  LATCH    u29 (.CLK(clk), .D(d), .Q(q_lat));
 
   integer i, seed;
   initial begin
@@ -63,7 +64,10 @@ module cells_tb;
       r = ($random(seed) % 8) != 0;
       s = !r || ($random(seed) % 8) != 0;
       #5 clk = ~clk;
-      #5 $display("t=%0d clk=%b d=%b r=%b s=%b pos=%b neg=%b sr=%b", i, clk, d, r, s, q_pos, q_neg, q_sr);
+      #5 $display("t=%0d clk=%b d=%b r=%b s=%b pos=%b neg=%b sr=%b lat=%b", i, clk, d, r, s, q_pos, q_neg, q_sr, q_lat);
+      // The latch: D changes in mid phase (transparent while CLK is high, held while low).
+      #1 d = $random(seed);
+      #1 $display("t=%0d clk=%b d=%b lat=%b", i, clk, d, q_lat);
     end
     $finish;
   end

@@ -5,9 +5,15 @@ module small_tb;
   logic [31:0] a, c;
   logic [10:0] b;
   logic [32:0] s1, s2, q1, q2;
+  logic [32:0] h1, h2;
+  logic [2:0] n1, n2;
+  logic [1:0] p1, p2;
+  logic [3:0] r1, r2;
   logic o1, o2;
-  gls_small    u_rtl (.clk_i(clk), .rst_ni(rst_n), .a_i(a), .b_i(b), .c_i(c), .size_o(s1), .overlap_o(o1), .size_q(q1));
-  gls_small_gl u_gl  (.clk_i(clk), .rst_ni(rst_n), .a_i(a), .b_i(b), .c_i(c), .size_o(s2), .overlap_o(o2), .size_q(q2));
+  gls_small    u_rtl (.clk_i(clk), .rst_ni(rst_n), .a_i(a), .b_i(b), .c_i(c), .size_o(s1), .overlap_o(o1), .size_q(q1),
+                      .hold_q(h1), .hold_n_q(n1), .pair_q(p1), .hold_r_q(r1));
+  gls_small_gl u_gl  (.clk_i(clk), .rst_ni(rst_n), .a_i(a), .b_i(b), .c_i(c), .size_o(s2), .overlap_o(o2), .size_q(q2),
+                      .hold_q(h2), .hold_n_q(n2), .pair_q(p2), .hold_r_q(r2));
   integer i, bad;
   initial begin
     bad = 0;
@@ -17,10 +23,10 @@ module small_tb;
       a = $urandom; b = 11'($urandom); c = (i % 3 == 0) ? a + a * 32'(b) : $urandom;
       #1 clk = 1;
       #1 clk = 0;
-      if (s1 !== s2 || o1 !== o2 || q1 !== q2) begin
+      if (s1 !== s2 || o1 !== o2 || q1 !== q2 || h1 !== h2 || n1 !== n2 || p1 !== p2 || r1 !== r2) begin
         bad++;
-        if (bad == 1) $display("FAIL at step %0d: a=%h b=%h c=%h size %h/%h overlap %b/%b reg %h/%h",
-                               i, a, b, c, s1, s2, o1, o2, q1, q2);
+        if (bad == 1) $display("FAIL at step %0d: a=%h b=%h c=%h size %h/%h overlap %b/%b reg %h/%h hold %h/%h %h/%h %h/%h %h/%h",
+                               i, a, b, c, s1, s2, o1, o2, q1, q2, h1, h2, n1, n2, p1, p2, r1, r2);
       end
     end
     if (bad == 0) $display("PASS: 20000 random steps, netlist equals RTL");

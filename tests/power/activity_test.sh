@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # mcadsw_activity (sim/activity/netlist_activity.cpp) on a netlist small enough to
 # follow by hand: an inverter, a flip-flop with asynchronous reset, an XOR and a
-# 2 x 1 memory macro, over five recorded cycles. The transitions, high cycles and
-# macro accesses below are worked out from the circuit (see the comments), not
-# taken from a run. Then a recording whose output disagrees must stop the run.
+# 2 x 1 memory macro, over five recorded cycles; then a flip-flop behind a clock
+# gate (flow/clock_gate.py). The transitions, high cycles and macro accesses
+# below are worked out from the circuits (see the comments), not taken from a
+# run. A recording whose output disagrees, a missing port and a flip-flop on a
+# data clock must stop the run.
 #   tests/power/activity_test.sh [MCADSW_ACTIVITY]
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -89,4 +91,55 @@ refused wrong_output "$work/bad.txt" "cycle 3: output y_o bit 0: netlist 1, RTL 
 # A recording without one of the netlist's ports (m_o) is refused by name.
 { echo "ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out"; printf '%s\n' "0 0 0 0"; } > "$work/short.txt"
 refused missing_port "$work/short.txt" "missing: m_o"
+# A clock gate as flow/clock_gate.py builds it: ck_n = ~clk, the latch el takes en
+# while the clock is low, gclk = clk & el clocks the flip-flop g (reset by rst_ni).
+cat > "$work/g.v" <<'V'
+module mcadsw_engine(clk_i, rst_ni, en_i, d_i, g_o);
+  input clk_i;
+  input rst_ni;
+  input en_i;
+  input d_i;
+  output g_o;
+  wire ck_n;
+  wire el;
+  wire gclk;
+  INVX1 i0 (.A(clk_i), .Y(ck_n));
+  LATCH l0 (.CLK(ck_n), .D(en_i), .Q(el));
+  AND2X2 a0 (.A(clk_i), .B(el), .Y(gclk));
+  DFFSR g (.CLK(gclk), .D(d_i), .Q(g_o), .R(rst_ni), .S(1'b1));
+endmodule
+V
+# Cycles (values before the rising edge; the edge after cycle k is at half cycle
+# 2k + 2, the fall of cycle k at 2k + 1):
+#   c0: rst 0 en 0 d 1 -> g 0 (reset); el 0
+#   c1: rst 1 en 1 d 1 -> g 0; el 1 from the fall (3); edge (4) passes: g <= 1
+#   c2: rst 1 en 0 d 0 -> g 1; gclk falls and el 0 at the fall (5); edge gated
+#   c3: rst 1 en 1 d 0 -> g 1; el 1 (7); edge (8) passes: g <= 0
+#   c4: rst 1 en 0 d 1 -> g 0; gclk and el fall (9); edge (10) gated
+{ echo "ports rst_ni:1:in en_i:1:in d_i:1:in g_o:1:out"
+  printf '%s\n' "0 0 1 0" "1 1 1 0" "1 0 0 1" "1 1 0 1" "1 0 1 0"; } > "$work/gp.txt"
+if ! "$act" "$work/g.v" "$work/gp.txt" "$work/ga" > "$work/glog" 2>&1; then
+  echo "FAIL: mcadsw_activity failed on the clock gate"; cat "$work/glog"; fails=$((fails + 1))
+else
+  cp "$work/ga.frame.txt" "$work/a.gate.txt"
+  # g: up after c1, down after c3, high c2 c3. gclk: up 4, 8, down 5, 9: 4, high
+  # 2 half cycles. el: up 3, 7, down 5, 9: 4, high 4 halves. ck_n: down at every
+  # edge (2, 4, 6, 8, 10), up at the falls 3, 5, 7, 9: 9, high [0,2) and four
+  # halves = 6 halves. clk_i: the other 9 transitions, high 4 halves.
+  expect gate "cycles 5"
+  expect gate "net g_o 2 2"
+  expect gate "net gclk 4 1"
+  expect gate "net el 4 2"
+  expect gate "net ck_n 9 3"
+  expect gate "net clk_i 9 2"
+fi
+# A flip-flop clocked by anything but clk_i or such a gate is refused.
+sed 's/DFFSR g (.CLK(gclk)/DFFSR g (.CLK(en_i)/' "$work/g.v" > "$work/g_bad.v"
+if "$act" "$work/g_bad.v" "$work/gp.txt" "$work/gb" > "$work/gb.log" 2>&1; then
+  echo "FAIL: a flip-flop clocked by en_i accepted"; fails=$((fails + 1))
+elif grep -q "flip-flop g is clocked by en_i, neither clk_i nor a clock gate" "$work/gb.log"; then
+  echo "ok   data clock refused: $(grep -o 'flip-flop g is clocked.*' "$work/gb.log")"
+else
+  echo "FAIL: data clock: the message lacks the flip-flop"; cat "$work/gb.log"; fails=$((fails + 1))
+fi
 [ "$fails" = 0 ] && echo "activity_test: all checks passed" || { echo "activity_test: $fails failed"; exit 1; }

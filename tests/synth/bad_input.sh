@@ -55,6 +55,9 @@ expect dmax_zeros 2 "DMAX='064' is not supported" -- synth --dmax 064
 expect par_three  2 "PAR='3' is not supported: 1, 2 or 4" -- synth --par 3
 expect par_text   2 "PAR='x' is not supported" -- synth --par x
 expect par_dmax   2 "DMAX=18 is not a multiple of PAR=4" -- synth --dmax 18 --par 4
+# The clock gating's group size (0: no gating).
+expect gate_text  2 "clock-gate-min 'x' is not a non-negative integer" -- synth --clock-gate-min x
+expect gate_neg   2 "clock-gate-min '-1' is not a non-negative integer" -- synth --clock-gate-min=-1
 # No generator.
 expect no_gen     2 "gen_rtl_pkg not found at $work/none" -- "$py" "$driver" synth --out "$work/out_no_gen" --gen-rtl-pkg "$work/none"
 
