@@ -205,9 +205,16 @@ def read_sta(out):
         sys.stderr.write(indent(sta_log.splitlines()[-20:] + tail(out / "sta.err", 5)))
         raise FlowError(f"sta failed or gave no wns / worst slack (log: {out}/sta.log)")
     wns, slack = float(wns), float(slack)
-    crit_start = next((ln[len("Startpoint: "):] for ln in sta_log.splitlines() if ln.startswith("Startpoint:")), "")
-    crit_end = next((ln[len("Endpoint: "):] for ln in sta_log.splitlines() if ln.startswith("Endpoint:")), "")
-    crit_arrival = next((ln.split()[0] for ln in sta_log.splitlines() if "data arrival time" in ln), "")
+    # The critical path: of the paths report_checks printed (one a path group: the
+    # clock, and with clock gates the gating checks), the one with the least slack.
+    paths = []
+    for block in re.split(r"^(?=Startpoint:)", sta_log, flags=re.M)[1:]:
+        s = re.search(r"^\s*(-?[0-9.]+)\s+slack \(", block, re.M)
+        paths.append((float(s.group(1)) if s else float("inf"), block.splitlines()))
+    lines = min(paths, key=lambda p: p[0])[1] if paths else []
+    crit_start = next((ln[len("Startpoint: "):] for ln in lines if ln.startswith("Startpoint:")), "")
+    crit_end = next((ln[len("Endpoint: "):] for ln in lines if ln.startswith("Endpoint:")), "")
+    crit_arrival = next((ln.split()[0] for ln in lines if "data arrival time" in ln), "")
     crossing = [(w[0], w[1], w[2], int(w[3]), float(w[4])) for w in read_table(out / "sta_crossing.txt")]
     crossing.sort(key=lambda c: -c[4])
     cross_worst = float(f"{crossing[0][4]:.3f}") if crossing else 0
