@@ -380,10 +380,9 @@ def main():
     # 4. Figures.
     vdd, f_hz = lib["vdd"], freq_mhz * 1e6
     flops = {"DFFPOSX1": 0, "DFFSR": 0}
-    for line in netlist.open():
-        m = re.match(r"\s*(DFFPOSX1|DFFSR)\s", line)
-        if m:
-            flops[m.group(1)] += 1
+    for line, cell, _, _ in connections(netlist):
+        if cell in flops and CELL_LINE.match(line):
+            flops[cell] += 1
     loads, clk_pins = net_loads(netlist, lib["pin_cap"])
     clk_cap = loads["clk_i"]
     clk_net_w = clk_cap * vdd * vdd * f_hz

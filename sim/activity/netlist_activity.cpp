@@ -317,58 +317,7 @@ Netlist read_netlist(const std::string& path) {
   return nl;
 }
 
-// Every flip-flop is clocked by clk_i or by a clock gate of flow/clock_gate.py
-// (AND2 of clk_i and a LATCH's Q, the LATCH's CLK an inverter of clk_i; buffers
-// allowed between): the two-phase simulation below is right for these only.
-void check_clocks(const Netlist& nl) {
-  std::vector<int> driver(nl.net_name.size(), -1);
-  for (size_t i = 0; i < nl.cells.size(); ++i)
-    for (int o : nl.cells[i].out)
-      if (o >= 0) driver[size_t(o)] = int(i);
-  const auto is = [](const Cell* c, std::initializer_list<const char*> types) {
-    if (!c) return false;
-    for (const char* t : types)
-      if (c->type == t) return true;
-    return false;
-  };
-  const auto drv = [&](int net) -> const Cell* {  // the driver, through buffers
-    for (int hops = 0; hops < 64; ++hops) {
-      const int d = driver[size_t(net)];
-      if (d < 0) return nullptr;
-      const Cell& c = nl.cells[size_t(d)];
-      if (!is(&c, {"BUFX2", "BUFX4", "CLKBUF1", "CLKBUF2", "CLKBUF3"})) return &c;
-      net = c.in[0];
-    }
-    return nullptr;
-  };
-  const auto is_clk = [&](int net) {
-    while (driver[size_t(net)] >= 0 && is(&nl.cells[size_t(driver[size_t(net)])], {"BUFX2", "BUFX4", "CLKBUF1",
-                                                                                   "CLKBUF2", "CLKBUF3"}))
-      net = nl.cells[size_t(driver[size_t(net)])].in[0];
-    return net == nl.clk;
-  };
-  const auto gated = [&](int net) {
-    const Cell* a = drv(net);
-    if (!is(a, {"AND2X1", "AND2X2"})) return false;
-    for (int k = 0; k < 2; ++k) {
-      const Cell* l = drv(a->in[size_t(1 - k)]);
-      if (!is_clk(a->in[size_t(k)]) || !is(l, {"LATCH"})) continue;
-      const Cell* inv = drv(l->in[1]);
-      if (is(inv, {"INVX1", "INVX2", "INVX4", "INVX8"}) && is_clk(inv->in[0])) return true;
-    }
-    return false;
-  };
-  long gated_flops = 0;
-  for (const Cell& c : nl.cells) {
-    if (c.kind != Kind::kDff && c.kind != Kind::kDffSr) continue;
-    if (is_clk(c.in[0])) continue;
-    if (!gated(c.in[0]))
-      fail("netlist: flip-flop " + c.name + " is clocked by " + nl.net_name[size_t(c.in[0])] +
-           ", neither clk_i nor a clock gate (INVX -> LATCH -> AND2 on clk_i)");
-    ++gated_flops;
-  }
-  std::cerr << "activity: " << gated_flops << " flip-flops on gated clocks\n";
-}
+
 
 // ---- The recorded ports (sim/dut_core.cpp, --record-ports) ------------------------------
 // Line 1: "ports" then name:width:in|out for each port; then one line a clock
@@ -414,6 +363,52 @@ Op op_of(const std::string& type, int out) {
   const auto it = ops.find(type);
   if (it == ops.end()) fail("no model of cell " + type);
   return it->second;
+}
+
+// Every flip-flop is clocked by clk_i or by a clock gate of flow/clock_gate.py
+// (AND2 of clk_i and a LATCH's Q, the LATCH's CLK an inverter of clk_i; buffers
+// allowed between): the two-phase simulation is right for these only. Cells are
+// told apart by their model (op_of), not by name.
+void check_clocks(const Netlist& nl) {
+  std::vector<int> driver(nl.net_name.size(), -1);
+  for (size_t i = 0; i < nl.cells.size(); ++i)
+    for (int o : nl.cells[i].out)
+      if (o >= 0) driver[size_t(o)] = int(i);
+  const auto op = [](const Cell* c) { return c && c->kind == Kind::kComb ? int(op_of(c->type, 0)) : -1; };
+  // The net a net is buffered from, and its driver (null: a port or undriven).
+  const auto source = [&](int net) {
+    for (int hops = 0; hops < 64 && driver[size_t(net)] >= 0; ++hops) {
+      const Cell& c = nl.cells[size_t(driver[size_t(net)])];
+      if (op(&c) != kBuf) break;
+      net = c.in[0];
+    }
+    return net;
+  };
+  const auto drv = [&](int net) -> const Cell* {
+    const int d = driver[size_t(source(net))];
+    return d < 0 ? nullptr : &nl.cells[size_t(d)];
+  };
+  const auto gated = [&](int net) {
+    const Cell* a = drv(net);
+    if (op(a) != kAnd2) return false;
+    for (int k = 0; k < 2; ++k) {
+      const Cell* l = drv(a->in[size_t(1 - k)]);
+      if (source(a->in[size_t(k)]) != nl.clk || op(l) != kLatch) continue;
+      const Cell* inv = drv(l->in[1]);
+      if (op(inv) == kInv && source(inv->in[0]) == nl.clk) return true;
+    }
+    return false;
+  };
+  long gated_flops = 0;
+  for (const Cell& c : nl.cells) {
+    if (c.kind != Kind::kDff && c.kind != Kind::kDffSr) continue;
+    if (source(c.in[0]) == nl.clk) continue;
+    if (!gated(c.in[0]))
+      fail("netlist: flip-flop " + c.name + " is clocked by " + nl.net_name[size_t(c.in[0])] +
+           ", neither clk_i nor a clock gate (INVX -> LATCH -> AND2 on clk_i)");
+    ++gated_flops;
+  }
+  std::cerr << "activity: " << gated_flops << " flip-flops on gated clocks\n";
 }
 
 struct Gate {  // one output of a combinational cell
