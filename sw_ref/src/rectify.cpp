@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "mcadsw/params.hpp"
 
@@ -113,6 +115,39 @@ Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, i
       m.v[size_t(j) * size_t(m.nx) + size_t(i)] = v;
     }
   return m;
+}
+
+RectifyAgreement compare_with_opencv(const YuvImage& raw, const Mesh& m, const cv::Matx33d& k, const cv::Mat& d,
+                                     const cv::Matx33d& r, const cv::Matx34d& p) {
+  const Rectified mine = rectify(raw, m);
+  cv::Mat mx, my;
+  cv::initUndistortRectifyMap(cv::Mat(k), d, cv::Mat(r), cv::Mat(p), cv::Size(m.out_width, m.out_height), CV_32FC1,
+                              mx, my);
+  RectifyAgreement a;
+  const double limit_u = raw.width() - 1, limit_v = raw.height() - 1;
+  double sq = 0;
+  const Plane* raw_planes[3] = {&raw.y, &raw.u, &raw.v};
+  const Plane* mine_planes[3] = {&mine.image.y, &mine.image.u, &mine.image.v};
+  cv::Mat theirs[3];
+  for (int c = 0; c < 3; ++c) {
+    const cv::Mat src(raw.height(), raw.width(), CV_8UC1, const_cast<uint8_t*>(raw_planes[c]->px.data()));
+    cv::remap(src, theirs[c], mx, my, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  }
+  for (int y = 0; y < m.out_height; ++y)
+    for (int x = 0; x < m.out_width; ++x) {
+      const auto [pu, pv] = mesh_position(m, x, y);
+      const double fu = mx.at<float>(y, x), fv = my.at<float>(y, x);
+      a.mesh_deviation = std::max({a.mesh_deviation, std::abs(pu / 32.0 - fu), std::abs(pv / 32.0 - fv)});
+      if (!mine.valid.at(x, y) || !(fu >= 0 && fu <= limit_u && fv >= 0 && fv <= limit_v)) continue;
+      ++a.valid;
+      for (int c = 0; c < 3; ++c) {
+        const double e = double(mine_planes[c]->at(x, y)) - double(theirs[c].at<uint8_t>(y, x));
+        sq += e * e;
+      }
+    }
+  const double mse = a.valid ? sq / (3.0 * double(a.valid)) : 0.0;
+  a.psnr = mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  return a;
 }
 
 // ---- Calibration files and mesh images ------------------------------------------------------

@@ -75,6 +75,19 @@ StereoRectification read_calibration(const std::string& path);
 std::pair<Mesh, Mesh> meshes_from_rectification(const StereoRectification& rect, int out_width, int out_height,
                                                 int step_log2);
 
+// How close the mesh rectification of one raw view comes to OpenCV's float one
+// (issue 32, reported by `mcadsw rectify`): cv::initUndistortRectifyMap (CV_32FC1) of
+// (k, d, r, p) at the mesh's frame size against the mesh interpolated at every pixel,
+// and cv::remap (INTER_LINEAR) of the raw Y, U and V planes on that float map against
+// mcadsw::rectify, over the pixels both call valid.
+struct RectifyAgreement {
+  double mesh_deviation = 0;  // largest |mesh position - float map|, pixels (u or v)
+  double psnr = 0;            // dB, 8-bit, Y U V planes together
+  long long valid = 0;        // pixels valid for both
+};
+RectifyAgreement compare_with_opencv(const YuvImage& raw, const Mesh& mesh, const cv::Matx33d& k, const cv::Mat& d,
+                                     const cv::Matx33d& r, const cv::Matx34d& p);
+
 // The mesh memory image (13.1): the left view's nodes, then the right's, row by row,
 // each u then v as 32-bit little-endian words. read_meshes checks the file's size.
 void write_meshes(const std::string& path, const Mesh& left, const Mesh& right);
