@@ -197,6 +197,46 @@ TEST_F(CliRectify, MeshAndRectifiedPair) {
   EXPECT_GT(cv::countNonZero(valid), 352 * 288 / 2);
 }
 
+// match --calib (docs/algorithm.md 13.4): the raw pair of camera C (off-centre: invalid
+// strips) rectified, then matched; every left pixel invalid after rectification (as
+// `mcadsw rectify` reports it) carries the invalid code and mask 0, in the LR mode
+// and with --subpixel.
+TEST_F(CliRectify, MatchWithCalibrationMarksInvalidPixels) {
+  const auto raw = kData / "raw" / "C" / "cif" / "teddy";
+  const std::string cal = (raw / "calib.yml").string(),
+                    views = (raw / "left.png").string() + " " + (raw / "right.png").string();
+  const CliRun r = run("rectify " + cal + " " + views + " -o " + (dir_ / "rect").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const cv::Mat lvalid = cv::imread((dir_ / "rect" / "left_valid.png").string(), cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(lvalid.empty());
+  const int invalid = int(lvalid.total()) - cv::countNonZero(lvalid);
+  EXPECT_GT(invalid, 5000) << "camera C leaves an invalid strip";
+  const std::string d8 = (dir_ / "d8.png").string(), mask = (dir_ / "mask.png").string(),
+                    d16 = (dir_ / "d16.png").string();
+  const CliRun m = run("match " + views + " -d 64 --lr --calib " + cal + " --valid " + mask + " -o " + d8);
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_NE(m.output.find(std::to_string(invalid) + " left"), std::string::npos) << m.output;
+  const CliRun s = run("match " + views + " -d 64 --subpixel --calib " + cal + " --step 8 -o " + d16);
+  ASSERT_EQ(s.status, 0) << s.output;
+  const cv::Mat a = cv::imread(d8, cv::IMREAD_UNCHANGED), v = cv::imread(mask, cv::IMREAD_UNCHANGED),
+                b = cv::imread(d16, cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(a.type(), CV_8UC1);
+  ASSERT_EQ(b.type(), CV_16UC1);
+  int coded = 0;
+  for (int y = 0; y < a.rows; ++y)
+    for (int x = 0; x < a.cols; ++x) {
+      if (lvalid.at<uint8_t>(y, x)) {
+        ASSERT_LT(a.at<uint8_t>(y, x), 64) << x << "," << y;
+        continue;
+      }
+      ++coded;
+      ASSERT_EQ(a.at<uint8_t>(y, x), 255) << x << "," << y;
+      ASSERT_EQ(v.at<uint8_t>(y, x), 0) << x << "," << y;
+    }
+  EXPECT_EQ(coded, invalid);
+  EXPECT_GT(cv::countNonZero(b == 0xFFFF), invalid / 2) << "step 8 gives nearly the same strip";
+}
+
 TEST_F(CliRectify, BadCalibrationAndStep) {
   const CliRun k = run("mesh " + calib(true) + " -o " + (dir_ / "m.bin").string());
   EXPECT_EQ(k.status, 1);
@@ -209,4 +249,14 @@ TEST_F(CliRectify, BadCalibrationAndStep) {
   EXPECT_EQ(w.status, 1);
   EXPECT_NE(w.output.find("the calibration's images 352x288"), std::string::npos) << w.output;
   EXPECT_FALSE(fs::exists(dir_ / "r"));
+  const CliRun ns = run("match " + pair() + " -d 16 --step 16 -o " + (dir_ / "x.png").string());
+  EXPECT_EQ(ns.status, 2);
+  EXPECT_NE(ns.output.find("--step needs --calib"), std::string::npos) << ns.output;
+  const CliRun mw = run("match " + pair() + " -d 16 --calib " + calib() + " -o " + (dir_ / "x.png").string());
+  EXPECT_EQ(mw.status, 1);
+  EXPECT_NE(mw.output.find("the calibration's images 352x288"), std::string::npos) << mw.output;
+  const CliRun mk = run("match " + cif_pair() + " -d 16 --calib " + calib(true) + " -o " + (dir_ / "x.png").string());
+  EXPECT_EQ(mk.status, 1);
+  EXPECT_NE(mk.output.find("no key K2"), std::string::npos) << mk.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }

@@ -156,6 +156,84 @@ TEST(Post, LeftRightCheck) {
   EXPECT_THROW(lr_check(dl, Plane(5, 1), 1), std::invalid_argument);
 }
 
+// 13.4: the rectification's validity in the check. Same maps as above (T = 1): a left
+// pixel invalid after rectification fails; so does one whose match lands on an invalid
+// right pixel; the code 255 for dR gives the same (the equivalence the spec states).
+TEST(Post, LeftRightCheckWithRectificationValidity) {
+  Plane dl(6, 1), dr(6, 1), lv(6, 1, 1), rv(6, 1, 1);
+  const int l[] = {1, 0, 2, 3, 1, 2}, r[] = {1, 0, 0, 2, 5, 7};
+  for (int x = 0; x < 6; ++x) {
+    dl.at(x, 0) = uint8_t(l[x]);
+    dr.at(x, 0) = uint8_t(r[x]);
+  }
+  lv.at(1, 0) = 0;  // x = 1 passes without it
+  rv.at(3, 0) = 0;  // x = 4 and x = 5 match right pixel 3
+  const Plane v = lr_check(dl, dr, 1, &lv, &rv);
+  const int want[] = {0, 0, 255, 0, 0, 0};
+  for (int x = 0; x < 6; ++x) EXPECT_EQ(v.at(x, 0), want[x]) << "x=" << x;
+  Plane coded = dr;
+  coded.at(3, 0) = uint8_t(kRectInvalidDisp8);
+  const Plane c = lr_check(dl, coded, kLrToleranceMax, &lv, nullptr);
+  EXPECT_EQ(c.at(4, 0), 0);
+  EXPECT_EQ(c.at(5, 0), 0);
+  const Plane narrow(5, 1, 1);
+  EXPECT_THROW(lr_check(dl, dr, 1, &lv, &narrow), std::invalid_argument);
+}
+
+// 13.4 end to end: invalid left pixels get the code after fill and median, in every
+// mode; the rest equals the steps of 12.2-12.4 with the validity in the check, the
+// invalid pixels filled like any other (so their neighbours' medians see filled values).
+TEST(Post, RectificationInvalidPixelsGetTheCodeInEveryMode) {
+  const std::string dir = std::string(MCADSW_DATA_DIR) + "/cif/cones/";
+  const YuvImage l = crop(load_yuv(dir + "left.png"), 100, 80, 90, 50);
+  const YuvImage r = crop(load_yuv(dir + "right.png"), 100, 80, 90, 50);
+  Config cfg;
+  cfg.disparities = 32;
+  Plane lv(90, 50, 1), rv(90, 50, 1);
+  for (int y = 0; y < 50; ++y)
+    for (int x = 0; x < 90; ++x) {
+      if (x < 7 || (y > 30 && x > 70)) lv.at(x, y) = 0;  // a strip and a corner
+      if (x > 80) rv.at(x, y) = 0;
+    }
+  for (const bool lr : {false, true})
+    for (const bool sub : {false, true}) {
+      DepthOptions opt;
+      opt.lr = lr;
+      opt.subpixel = sub;
+      const DepthResult plain = depth_map(l, r, cfg, opt);
+      opt.left_valid = lv;
+      opt.right_valid = rv;
+      const DepthResult got = depth_map(l, r, cfg, opt);
+      Plane16 want = plain.disp16;
+      if (lr) {
+        const Plane valid = lr_check(got.raw, got.right, opt.tolerance, &lv, &rv);
+        ASSERT_EQ(got.valid.px, valid.px);
+        DepthOptions no_lr;
+        no_lr.subpixel = sub;
+        const Plane16 base = depth_map(l, r, cfg, no_lr).disp16;
+        want = median3x3(fill_invalid(base, valid));
+      }
+      const Plane got8 = got.disp8();
+      int coded = 0;
+      for (size_t i = 0; i < want.px.size(); ++i) {
+        if (!lv.px[i]) {
+          ASSERT_EQ(got.disp16.px[i], kRectInvalidDisp16) << "pixel " << i;
+          ASSERT_EQ(got8.px[i], kRectInvalidDisp8) << "pixel " << i;
+          if (lr) {
+            ASSERT_EQ(got.valid.px[i], 0) << "pixel " << i;
+          }
+          ++coded;
+        } else {
+          ASSERT_EQ(got.disp16.px[i], want.px[i]) << "lr " << lr << " sub " << sub << " pixel " << i;
+        }
+      }
+      EXPECT_EQ(coded, 7 * 50 + 19 * 19);
+      if (!lr) {
+        EXPECT_EQ(got.raw.px, plain.raw.px) << "the raw map itself carries no code";
+      }
+    }
+}
+
 TEST(Post, FillTakesTheSmallerNearestValidValue) {
   Plane16 d(8, 3);
   Plane v(8, 3);

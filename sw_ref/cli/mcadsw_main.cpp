@@ -1,6 +1,6 @@
 // mcadsw: command-line front end of the bit-exact reference model.
 //   mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]
-//                [--gamma G] [--threads N] -o OUT.png
+//                [--gamma G] [--threads N] [--calib CALIB.yml [--step S]] -o OUT.png
 //   mcadsw eval DISP.png GT.png --scale S --masks DIR [--disp-scale S] [--threshold T]
 //   mcadsw mesh CALIB.yml [--step S] -o MESH.bin
 //   mcadsw rectify CALIB.yml LEFT RIGHT [--step S] -o OUTDIR
@@ -26,8 +26,11 @@ namespace {
 const std::string kUsage =
     std::string("usage:\n"
     "  mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]\n"
-    "               [--gamma G] [--threads N] -o OUT.png\n"
+    "               [--gamma G] [--threads N] [--calib CALIB.yml [--step S]] -o OUT.png\n"
     "      Disparity map of the left view (MCADSW, bit-exact with the RTL).\n"
+    "      --calib: LEFT and RIGHT are raw camera views, rectified first through the\n"
+    "      mesh (as mcadsw rectify); a left pixel whose source lies outside its raw\n"
+    "      view gets 255 (0xFFFF with --subpixel), docs/algorithm.md 13.4.\n"
     "      Writes the raw 8-bit map (pixel value = disparity) to OUT.png and a\n"
     "      colour-mapped view to OUT_color.png. 1 <= D <= ") + std::to_string(mcadsw::kDmax) + " (DMAX); default gamma 22.\n"
     "      --lr: left-right check (tolerance T, 0..63, default 1), fill, 3x3 median;\n"
@@ -109,9 +112,19 @@ double to_double(const std::string& s, const char* what) {
   }
 }
 
+int step_log2_of(const Args& a);
+
+// A raw view must have the calibration's image size.
+void check_raw_size(const mcadsw::StereoRectification& cal, const mcadsw::YuvImage& raw, const std::string& path) {
+  if (raw.width() != cal.size.width || raw.height() != cal.size.height)
+    throw std::runtime_error(path + " is " + std::to_string(raw.width()) + "x" + std::to_string(raw.height()) +
+                             ", the calibration's images " + std::to_string(cal.size.width) + "x" +
+                             std::to_string(cal.size.height));
+}
+
 int cmd_match(const Args& a) {
   a.only({"-d", "--disparities", "--gamma", "--threads", "-o", "--output", "--lr", "--subpixel",
-          "-T", "--tolerance", "--valid"});
+          "-T", "--tolerance", "--valid", "--calib", "--step"});
   if (a.pos.size() != 2) throw UsageError("match needs LEFT and RIGHT images");
   const std::string* d = a.get({"-d", "--disparities"});
   const std::string* out = a.get({"-o", "--output"});
@@ -133,8 +146,26 @@ int cmd_match(const Args& a) {
   mcadsw::check_config(cfg, 1, 1);
   mcadsw::check_lr_tolerance(post.tolerance);
 
-  const mcadsw::YuvImage left = mcadsw::load_yuv(a.pos[0]);
-  const mcadsw::YuvImage right = mcadsw::load_yuv(a.pos[1]);
+  const std::string* calib = a.get({"--calib"});
+  if (a.get({"--step"}) && !calib) throw UsageError("--step needs --calib");
+  const int step_log2 = step_log2_of(a);
+
+  mcadsw::YuvImage left = mcadsw::load_yuv(a.pos[0]);
+  mcadsw::YuvImage right = mcadsw::load_yuv(a.pos[1]);
+  long long invalid[2] = {0, 0};
+  if (calib) {  // rectify first (docs/algorithm.md 13); invalid pixels per 13.4
+    const mcadsw::StereoRectification cal = mcadsw::read_calibration(*calib);
+    check_raw_size(cal, left, a.pos[0]);
+    check_raw_size(cal, right, a.pos[1]);
+    const auto meshes = mcadsw::meshes_from_rectification(cal, cal.size.width, cal.size.height, step_log2);
+    mcadsw::Rectified l = mcadsw::rectify(left, meshes.first), r = mcadsw::rectify(right, meshes.second);
+    for (const auto v : l.valid.px) invalid[0] += v == 0;
+    for (const auto v : r.valid.px) invalid[1] += v == 0;
+    left = std::move(l.image);
+    right = std::move(r.image);
+    post.left_valid = std::move(l.valid);
+    post.right_valid = std::move(r.valid);
+  }
   for (const std::string* o : {out, valid}) {
     if (!o) continue;
     const auto parent = std::filesystem::path(*o).parent_path();
@@ -144,7 +175,7 @@ int cmd_match(const Args& a) {
 
   const auto t0 = std::chrono::steady_clock::now();
   mcadsw::DepthResult r;
-  if (post.lr || post.subpixel) {
+  if (post.lr || post.subpixel || calib) {
     r = mcadsw::depth_map(left, right, cfg, post);
   } else {
     r.raw = mcadsw::disparity_map(left, right, cfg);  // the paper's raw mode
@@ -155,7 +186,7 @@ int cmd_match(const Args& a) {
   if (post.subpixel) {
     mcadsw::write_disparity16(r.disp16, cfg.disparities, *out, color);
   } else {
-    mcadsw::write_disparity(post.lr ? r.disp8() : r.raw, cfg.disparities, *out, color);
+    mcadsw::write_disparity(post.lr || calib ? r.disp8() : r.raw, cfg.disparities, *out, color);
   }
   if (valid) {
     try {
@@ -166,6 +197,10 @@ int cmd_match(const Args& a) {
       throw;
     }
   }
+  if (calib)
+    std::printf("rectified (%s, step %d): %lld left and %lld right pixels invalid (left ones: depth %d)\n",
+                calib->c_str(), 1 << step_log2, invalid[0], invalid[1],
+                post.subpixel ? mcadsw::kRectInvalidDisp16 : mcadsw::kRectInvalidDisp8);
   std::printf("%dx%d D=%d%s%s: %.3f s (%.1f MDE/s) -> %s, %s%s%s\n", r.raw.width, r.raw.height,
               cfg.disparities, post.lr ? " lr" : "", post.subpixel ? " subpixel" : "", s,
               double(r.raw.width) * r.raw.height * cfg.disparities / s / 1e6, out->c_str(),
@@ -220,11 +255,8 @@ int cmd_rectify(const Args& a) {
   const mcadsw::StereoRectification r = mcadsw::read_calibration(a.pos[0]);
   const auto meshes = mcadsw::meshes_from_rectification(r, r.size.width, r.size.height, step_log2_of(a));
   const mcadsw::YuvImage raws[2] = {mcadsw::load_yuv(a.pos[1]), mcadsw::load_yuv(a.pos[2])};
-  for (const int view : {0, 1})
-    if (raws[view].width() != r.size.width || raws[view].height() != r.size.height)
-      throw std::runtime_error(a.pos[size_t(1 + view)] + " is " + std::to_string(raws[view].width()) + "x" +
-                               std::to_string(raws[view].height()) + ", the calibration's images " +
-                               std::to_string(r.size.width) + "x" + std::to_string(r.size.height));
+  check_raw_size(r, raws[0], a.pos[1]);
+  check_raw_size(r, raws[1], a.pos[2]);
   std::filesystem::create_directories(*out);
   for (const int view : {0, 1}) {
     const mcadsw::YuvImage& raw = raws[view];

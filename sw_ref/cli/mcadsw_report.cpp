@@ -5,8 +5,10 @@
 // baselines (sw_ref/include/mcadsw/baselines.hpp), evaluates nonocc / all / disc
 // at threshold 1, writes OUT_DIR/<pair>.png (disparity and error maps of every
 // method next to the ground truth) and prints a Markdown table on stdout, then a
-// second one: sub-pixel maps, nonocc at threshold 0.5 (docs/algorithm.md 12.7).
+// second one: sub-pixel maps, nonocc at threshold 0.5 (docs/algorithm.md 12.7), and a
+// third: the raw camera pairs of data/raw rectified (issue 32, docs/algorithm.md 13.7).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -16,6 +18,7 @@
 #include "mcadsw/baselines.hpp"
 #include "mcadsw/eval.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/rectify_quality.hpp"
 #include "mcadsw/ref.hpp"
 
 namespace {
@@ -171,6 +174,34 @@ int main(int argc, char** argv) {
       std::printf("| %s", sub_methods[m].c_str());
       for (double e : sub_err[m]) std::printf(" | %.2f", e);
       std::printf(" | %.2f |\n", (sub_err[m][1] + sub_err[m][2] + sub_err[m][3]) / 3.0);
+    }
+
+    // Rectification (issue 32, docs/algorithm.md 13.7): the raw camera pairs of data/raw,
+    // LR mode, "all" error over the pixels valid after rectification.
+    std::printf("\nRectification: raw camera pairs (data/raw), LR mode, \"all\" error %% over the pixels valid "
+                "after rectification; average over the pairs of each camera.\n\n"
+                "| camera | pairs | undistorted (bundled) | mesh S = 16 (engine) | OpenCV float, bilinear | "
+                "OpenCV float, bicubic | OpenCV float, Lanczos-4 | mesh - OpenCV bilinear |\n"
+                "|---|---|---|---|---|---|---|---|\n");
+    for (const char* cam : {"A", "B", "C"}) {
+      mcadsw::RectificationQuality sum;
+      int n = 0;
+      for (const Pair& p : kPairs) {
+        const std::string raw_dir = data + "/raw/" + cam + "/middlebury/" + p.name;
+        if (!std::filesystem::is_directory(raw_dir)) continue;
+        const mcadsw::RectificationQuality q =
+            mcadsw::rectification_quality(raw_dir, data + "/middlebury/" + p.name, p.disparities, p.scale);
+        sum.undistorted += q.undistorted;
+        sum.mesh += q.mesh;
+        sum.opencv_linear += q.opencv_linear;
+        sum.opencv_cubic += q.opencv_cubic;
+        sum.opencv_lanczos += q.opencv_lanczos;
+        ++n;
+      }
+      if (n == 0) throw std::runtime_error("no raw pairs of camera " + std::string(cam) + " in " + data + "/raw");
+      std::printf("| %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %+.2f |\n", cam, n, sum.undistorted / n,
+                  sum.mesh / n, sum.opencv_linear / n, sum.opencv_cubic / n, sum.opencv_lanczos / n,
+                  (sum.mesh - sum.opencv_linear) / n);
     }
     return 0;
   } catch (const std::exception& e) {

@@ -67,12 +67,14 @@ std::string colormap_path_for(const std::string& path) {
 
 namespace {
 
-// Writes `raw` (8 or 16 bits) and its colour view (raw * scale, JET), both or neither.
-void write_map(const cv::Mat& raw, double scale, const std::string& path,
+// Writes `raw` (8 or 16 bits) and its colour view (raw * scale, JET; black where raw
+// holds the invalid code of a rectified frame, docs/algorithm.md 13.4), both or neither.
+void write_map(const cv::Mat& raw, double scale, int invalid_code, const std::string& path,
                const std::string& colormap_path) {
   cv::Mat scaled, color;
   raw.convertTo(scaled, CV_8U, scale);
   cv::applyColorMap(scaled, color, cv::COLORMAP_JET);
+  color.setTo(cv::Scalar::all(0), raw == invalid_code);
   bool ok = false;
   try {
     ok = cv::imwrite(path, raw) && cv::imwrite(colormap_path, color);
@@ -90,7 +92,8 @@ void write_map(const cv::Mat& raw, double scale, const std::string& path,
 
 void write_disparity(const Plane& disp, int disparities, const std::string& path,
                      const std::string& colormap_path) {
-  write_map(to_mat(disp), disparities > 1 ? 255.0 / (disparities - 1) : 0.0, path, colormap_path);
+  write_map(to_mat(disp), disparities > 1 ? 255.0 / (disparities - 1) : 0.0, kRectInvalidDisp8, path,
+            colormap_path);
 }
 
 cv::Mat to_mat(const Plane16& p) {
@@ -103,7 +106,7 @@ cv::Mat to_mat(const Plane16& p) {
 void write_disparity16(const Plane16& disp, int disparities, const std::string& path,
                        const std::string& colormap_path) {
   write_map(to_mat(disp), disparities > 1 ? 255.0 / (kSubpixelScale * (disparities - 1)) : 0.0,
-            path, colormap_path);
+            kRectInvalidDisp16, path, colormap_path);
 }
 
 void write_mask(const Plane& mask, const std::string& path) {

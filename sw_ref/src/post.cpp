@@ -67,17 +67,30 @@ void check_lr_tolerance(int tolerance) {
                                 " out of range 0.." + std::to_string(kLrToleranceMax));
 }
 
-Plane lr_check(const Plane& disp_left, const Plane& disp_right, int tolerance) {
+Plane lr_check(const Plane& disp_left, const Plane& disp_right, int tolerance, const Plane* left_valid,
+               const Plane* right_valid) {
   check_lr_tolerance(tolerance);
-  if (disp_left.width != disp_right.width || disp_left.height != disp_right.height)
-    throw std::invalid_argument("left and right disparity maps differ in size");
+  const auto same = [&](const auto& p) { return p.width == disp_left.width && p.height == disp_left.height; };
+  if (!same(disp_right)) throw std::invalid_argument("left and right disparity maps differ in size");
+  if ((left_valid && !same(*left_valid)) || (right_valid && !same(*right_valid)))
+    throw std::invalid_argument("a validity mask differs in size from the disparity maps");
   Plane valid(disp_left.width, disp_left.height);
   for (int y = 0; y < disp_left.height; ++y)
     for (int x = 0; x < disp_left.width; ++x) {
       const int d = disp_left.at(x, y);
-      valid.at(x, y) = (x - d >= 0 && std::abs(d - int(disp_right.at(x - d, y))) <= tolerance) ? 255 : 0;
+      const bool ok = x - d >= 0 && (!left_valid || left_valid->at(x, y)) &&
+                      (!right_valid || right_valid->at(x - d, y)) &&
+                      std::abs(d - int(disp_right.at(x - d, y))) <= tolerance;
+      valid.at(x, y) = ok ? 255 : 0;
     }
   return valid;
+}
+
+void mark_rect_invalid(Plane16& disp, const Plane& valid) {
+  if (valid.width != disp.width || valid.height != disp.height)
+    throw std::invalid_argument("the validity mask differs in size from the disparity map");
+  for (size_t i = 0; i < disp.px.size(); ++i)
+    if (!valid.px[i]) disp.px[i] = uint16_t(kRectInvalidDisp16);
 }
 
 Plane16 fill_invalid(const Plane16& disp, const Plane& valid) {
@@ -121,7 +134,8 @@ Plane16 median3x3(const Plane16& in) {
 
 Plane DepthResult::disp8() const {
   Plane p(disp16.width, disp16.height);
-  for (size_t i = 0; i < p.px.size(); ++i) p.px[i] = uint8_t(disp16.px[i] / kSubpixelScale);
+  for (size_t i = 0; i < p.px.size(); ++i)
+    p.px[i] = disp16.px[i] == kRectInvalidDisp16 ? uint8_t(kRectInvalidDisp8) : uint8_t(disp16.px[i] / kSubpixelScale);
   return p;
 }
 
@@ -140,11 +154,14 @@ DepthResult depth_map(const YuvImage& left, const YuvImage& right, const Config&
     r.disp16 = Plane16(r.raw.width, r.raw.height);
     for (size_t i = 0; i < r.raw.px.size(); ++i) r.disp16.px[i] = uint16_t(kSubpixelScale * r.raw.px[i]);
   }
+  const Plane* lv = opt.left_valid.px.empty() ? nullptr : &opt.left_valid;
+  const Plane* rv = opt.right_valid.px.empty() ? nullptr : &opt.right_valid;
   if (opt.lr) {
     r.right = disparity_map_right(left, right, cfg);
-    r.valid = lr_check(r.raw, r.right, opt.tolerance);
+    r.valid = lr_check(r.raw, r.right, opt.tolerance, lv, rv);
     r.disp16 = median3x3(fill_invalid(r.disp16, r.valid));
   }
+  if (lv) mark_rect_invalid(r.disp16, *lv);  // 13.4: after fill and median
   return r;
 }
 

@@ -122,5 +122,9 @@ inline constexpr int kMeshStepLog2Max = 5;       // .. 32
 inline constexpr int kMeshCoordLimit = 4096 << kMeshFracBits;  // nodes in [-limit, limit)
 inline constexpr int kRectInvalidY = 0;          // an invalid rectified pixel: black
 inline constexpr int kRectInvalidUV = 128;
+inline constexpr int kRectInvalidDisp16 = 0xFFFF;  // the depth of an invalid base pixel (13.4)
+inline constexpr int kRectInvalidDisp8 = 255;
+static_assert(kSubpixelScale * (kDmax - 1) + kSubpixelOffsetMax < kRectInvalidDisp16 && kDmax - 1 < kRectInvalidDisp8,
+              "the invalid codes lie above every disparity");
 
 }  // namespace mcadsw

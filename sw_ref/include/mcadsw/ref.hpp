@@ -157,9 +157,14 @@ int subpixel_value(int d, int disparities, uint32_t cost_minus, uint32_t cost_be
                    uint32_t cost_plus);
 // 12.6 from the block path's final costs (keep->final_cost[d][y*W+x]) and its map.
 Plane16 subpixel_from_costs(const Intermediates& keep, const Plane& disp, int disparities);
-// 12.2: 255 where the left pixel passes the check with tolerance T, else 0.
-// Throws std::invalid_argument for T outside 0..kLrToleranceMax or maps of different sizes.
-Plane lr_check(const Plane& disp_left, const Plane& disp_right, int tolerance);
+// 12.2: 255 where the left pixel passes the check with tolerance T, else 0. With the
+// rectification's validity of the views (13.4; nonzero = valid, nullptr = all valid),
+// the left pixel and the right pixel it matches must be valid too. Throws
+// std::invalid_argument for T outside 0..kLrToleranceMax or planes of different sizes.
+Plane lr_check(const Plane& disp_left, const Plane& disp_right, int tolerance, const Plane* left_valid = nullptr,
+               const Plane* right_valid = nullptr);
+// 13.4: the invalid code (kRectInvalidDisp16) wherever `valid` is 0.
+void mark_rect_invalid(Plane16& disp, const Plane& valid);
 void check_lr_tolerance(int tolerance);
 // 12.3: invalid pixels (valid == 0) take the smaller of the nearest valid values left
 // and right in their row; 0 when the row has none.
@@ -172,13 +177,16 @@ struct DepthOptions {
   bool lr = false;
   bool subpixel = false;
   int tolerance = kLrToleranceDefault;
+  // Validity after rectification (13.4), nonzero = valid; empty = every pixel valid.
+  Plane left_valid, right_valid;
 };
 struct DepthResult {
-  Plane16 disp16;  // 16 x disparity (+ offset with subpixel), after LR processing if lr
+  Plane16 disp16;  // 16 x disparity (+ offset with subpixel), after LR processing if lr;
+                   // kRectInvalidDisp16 where left_valid is 0
   Plane valid;     // lr: 255 valid, 0 filled (before the median); otherwise empty
-  Plane raw;       // the raw left map (section 6)
+  Plane raw;       // the raw left map (section 6), before any invalid code
   Plane right;     // lr: the right-reference map (12.1); otherwise empty
-  Plane disp8() const;  // disp16 / 16
+  Plane disp8() const;  // disp16 / 16; kRectInvalidDisp8 for the invalid code
 };
 DepthResult depth_map(const YuvImage& left, const YuvImage& right, const Config& cfg,
                       const DepthOptions& opt);
