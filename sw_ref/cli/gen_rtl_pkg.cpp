@@ -166,6 +166,14 @@ int main(int argc, char** argv) {
   p("MAX_HEIGHT", kMaxHeight, "largest image height");
   p("LR_T_MAX", kLrToleranceMax, "largest LR check tolerance T");
   p("POST_MAX_WIDTH", kPostMaxWidth, "largest width in the LR mode (post stage rows)");
+  p("MESH_FRAC_BITS", kMeshFracBits, "mesh nodes and sample positions in 1/32 pixel");
+  p("MESH_NODE_BITS", kMeshFracBits + 13, "a mesh node coordinate: -4096..4096 pixels, signed");
+  p("RECT_TILE_W", kRectTileW, "rectifier output tile width");
+  p("RECT_TILE_H", kRectTileH, "rectifier output tile height");
+  p("RECT_BUF_W", kRectBufW, "rectifier tile buffer: source columns");
+  p("RECT_BUF_H", kRectBufH, "rectifier tile buffer: source rows");
+  p("RECT_INVALID_Y", kRectInvalidY, "an invalid rectified pixel: Y");
+  p("RECT_INVALID_UV", kRectInvalidUV, "an invalid rectified pixel: U and V");
   std::printf("  // Census template: neighbour i is bit CENSUS_BITS-1-i, at (dx, dy).\n");
   for (int i = 0; i < kCensusBits; ++i) {
     std::printf("  localparam int TAP%d_DX = %d;\n", i, kCensusTaps[i].dx);

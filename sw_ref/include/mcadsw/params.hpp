@@ -122,6 +122,11 @@ inline constexpr int kMeshStepLog2Max = 5;       // .. 32
 inline constexpr int kMeshCoordLimit = 4096 << kMeshFracBits;  // nodes in [-limit, limit)
 inline constexpr int kRectInvalidY = 0;          // an invalid rectified pixel: black
 inline constexpr int kRectInvalidUV = 128;
+// The rectifier's tiles and tile buffers (docs/architecture.md 3.10).
+inline constexpr int kRectTileW = 32;            // output tile 32 x 16 pixels
+inline constexpr int kRectTileH = 16;
+inline constexpr int kRectBufW = 64;             // a tile's source rectangle: at most 64 x 32
+inline constexpr int kRectBufH = 32;
 inline constexpr int kRectInvalidDisp16 = 0xFFFF;  // the depth of an invalid base pixel (13.4)
 inline constexpr int kRectInvalidDisp8 = 255;
 static_assert(kSubpixelScale * (kDmax - 1) + kSubpixelOffsetMax < kRectInvalidDisp16 && kDmax - 1 < kRectInvalidDisp8,
