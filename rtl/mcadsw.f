@@ -19,7 +19,6 @@ mcadsw_pingpong.sv
 mcadsw_post.sv
 mcadsw_post_check.sv
 mcadsw_post_fill.sv
-mcadsw_rect_sample.sv
 mcadsw_regs.sv
 mcadsw_scheduler.sv
 mcadsw_strip_stage.sv

@@ -24,14 +24,6 @@ package mcadsw_pkg;
   localparam int MAX_HEIGHT       = 2048;  // largest image height
   localparam int LR_T_MAX         = 63;  // largest LR check tolerance T
   localparam int POST_MAX_WIDTH   = 1024;  // largest width in the LR mode (post stage rows)
-  localparam int MESH_FRAC_BITS   = 5;  // mesh nodes and sample positions in 1/32 pixel
-  localparam int MESH_NODE_BITS   = 18;  // a mesh node coordinate: -4096..4096 pixels, signed
-  localparam int RECT_TILE_W      = 32;  // rectifier output tile width
-  localparam int RECT_TILE_H      = 16;  // rectifier output tile height
-  localparam int RECT_BUF_W       = 64;  // rectifier tile buffer: source columns
-  localparam int RECT_BUF_H       = 32;  // rectifier tile buffer: source rows
-  localparam int RECT_INVALID_Y   = 0;  // an invalid rectified pixel: Y
-  localparam int RECT_INVALID_UV  = 128;  // an invalid rectified pixel: U and V
   // Census template: neighbour i is bit CENSUS_BITS-1-i, at (dx, dy).
   localparam int TAP0_DX = 0;
   localparam int TAP0_DY = -2;

@@ -218,5 +218,39 @@ TEST(RawCameras, MeshRectifiedErrorWithinTheBarOfOpenCv) {
   }
 }
 
+// Every tile's source rectangle of the bundled cameras' meshes at S = 8 and 16 fits the
+// engine's tile buffer (docs/algorithm.md 13.8). At S = 32 a tile's box is that of a whole
+// 32-row cell, so a strong camera can exceed the 32 rows: printed, not asserted (the
+// engine then rejects the mesh with its error code).
+TEST(RawCameras, SourceRectanglesFitTheEngine) {
+  const std::string data = kData.string();
+  for (const int s : {3, 4, 5}) {
+    int cols = 0, rows = 0, misfits = 0;
+    for (const char* cam : {"A/middlebury/teddy", "B/middlebury/teddy", "B/cif/teddy", "C/cif/teddy",
+                            "B/middlebury/venus", "B/middlebury/tsukuba", "A/cif/teddy", "C/middlebury/teddy"}) {
+      const StereoRectification r = read_calibration(data + "/raw/" + cam + "/calib.yml");
+      const auto meshes = meshes_from_rectification(r, r.size.width, r.size.height, s);
+      for (const Mesh* m : {&meshes.first, &meshes.second})
+        for (int b = 0; b * kRectTileH < m->out_height; ++b)
+          for (int a = 0; a * kRectTileW < m->out_width; ++a) {
+            const TileSource ts = tile_source(*m, a, b, r.size.width, r.size.height);
+            cols = std::max(cols, ts.cols);
+            rows = std::max(rows, ts.rows);
+            misfits += !ts.fits();
+          }
+      if (s <= 4) {
+        EXPECT_NO_THROW(check_rect_footprints(meshes.first, r.size.width, r.size.height)) << cam;
+        EXPECT_NO_THROW(check_rect_footprints(meshes.second, r.size.width, r.size.height)) << cam;
+      }
+    }
+    std::printf("S = %d: largest source rectangle of the bundled cameras %d x %d, %d tiles beyond the buffer\n",
+                1 << s, cols, rows, misfits);
+    if (s <= 4) {
+      EXPECT_LE(cols, kRectBufW);
+      EXPECT_LE(rows, kRectBufH);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mcadsw

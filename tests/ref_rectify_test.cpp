@@ -191,6 +191,42 @@ TEST(Rectify, MeshFromOpenCvMapsWithinATenthOfAPixel) {
   EXPECT_THROW(mesh_from_maps(mx, my, w, h, 5), std::invalid_argument);
 }
 
+// The engine's limit (13.8) by hand: the identity mesh's first CIF tile at S = 16 has
+// nodes 0..2 x 0..1, u from 0 to 32 pixels, v from 0 to 16: columns 0..33, rows 0..17;
+// clipped by a small raw view; a mesh three times too steep does not fit.
+TEST(Rectify, TileSourceByHand) {
+  const Mesh id = mesh_of(
+      100, 50, 4, [](int x, int) { return 32 * x; }, [](int, int y) { return 32 * y; });
+  TileSource t = tile_source(id, 0, 0, 200, 200);
+  EXPECT_EQ(t.node_i0, 0);
+  EXPECT_EQ(t.node_i1, 2);
+  EXPECT_EQ(t.node_j0, 0);
+  EXPECT_EQ(t.node_j1, 1);
+  EXPECT_FALSE(t.empty);
+  EXPECT_EQ(t.x0, 0);
+  EXPECT_EQ(t.cols, 34);
+  EXPECT_EQ(t.rows, 18);
+  t = tile_source(id, 3, 3, 200, 200);  // columns 96..99, rows 48..49: nodes 6..7 x 3..4
+  EXPECT_EQ(t.node_i0, 6);
+  EXPECT_EQ(t.node_i1, 7);
+  EXPECT_EQ(t.node_j1, 4);
+  EXPECT_EQ(t.x0, 96);
+  EXPECT_EQ(t.cols, 18);                 // 96 .. 113
+  t = tile_source(id, 1, 0, 40, 10);     // columns 32..63 in a 40 x 10 raw view
+  EXPECT_EQ(t.x0, 32);
+  EXPECT_EQ(t.cols, 8);
+  EXPECT_EQ(t.rows, 10);
+  t = tile_source(id, 2, 0, 40, 10);     // columns 64..95: wholly right of it
+  EXPECT_TRUE(t.empty);
+  EXPECT_TRUE(t.fits());
+  EXPECT_NO_THROW(check_rect_footprints(id, 200, 200));
+  const Mesh steep = mesh_of(
+      100, 50, 4, [](int x, int) { return 96 * x; }, [](int, int y) { return 32 * y; });
+  EXPECT_THROW(check_rect_footprints(steep, 400, 200), std::invalid_argument);
+  EXPECT_NO_THROW(check_rect_footprints(steep, 40, 200)) << "clipped to a narrow raw view it fits";
+  EXPECT_THROW(tile_source(id, 4, 0, 200, 200), std::invalid_argument);
+}
+
 // Calibration files (docs/algorithm.md 13.5): both forms give the meshes of the
 // rectification they describe; each defect is named in the message.
 class CalibrationFile : public ::testing::Test {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <climits>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -89,6 +90,55 @@ Rectified rectify(const YuvImage& raw, const Mesh& m) {
       r.valid.at(x, y) = 1;
     }
   return r;
+}
+
+bool TileSource::fits() const { return empty || (cols <= kRectBufW && rows <= kRectBufH); }
+
+TileSource tile_source(const Mesh& m, int a, int b, int raw_w, int raw_h) {
+  const int x_first = a * kRectTileW, y_first = b * kRectTileH;
+  if (a < 0 || b < 0 || x_first >= m.out_width || y_first >= m.out_height)
+    throw std::invalid_argument("tile_source: tile (" + std::to_string(a) + ", " + std::to_string(b) +
+                                ") outside the frame");
+  const int xl = std::min(x_first + kRectTileW - 1, m.out_width - 1);
+  const int yl = std::min(y_first + kRectTileH - 1, m.out_height - 1);
+  TileSource t;
+  t.node_i0 = x_first >> m.step_log2;
+  t.node_i1 = (xl >> m.step_log2) + 1;
+  t.node_j0 = y_first >> m.step_log2;
+  t.node_j1 = (yl >> m.step_log2) + 1;
+  t.umin = t.vmin = INT32_MAX;
+  t.umax = t.vmax = INT32_MIN;
+  for (int j = t.node_j0; j <= t.node_j1; ++j)
+    for (int i = t.node_i0; i <= t.node_i1; ++i) {
+      const size_t k = size_t(j) * size_t(m.nx) + size_t(i);
+      t.umin = std::min(t.umin, m.u[k]);
+      t.umax = std::max(t.umax, m.u[k]);
+      t.vmin = std::min(t.vmin, m.v[k]);
+      t.vmax = std::max(t.vmax, m.v[k]);
+    }
+  const int xf = std::max(0, t.umin >> kMeshFracBits), xt = std::min(raw_w - 1, (t.umax >> kMeshFracBits) + 1);
+  const int yf = std::max(0, t.vmin >> kMeshFracBits), yt = std::min(raw_h - 1, (t.vmax >> kMeshFracBits) + 1);
+  t.empty = xf > xt || yf > yt;
+  if (!t.empty) {
+    t.x0 = xf & ~3;
+    t.y0 = yf;
+    t.cols = xt - t.x0 + 1;
+    t.rows = yt - t.y0 + 1;
+  }
+  return t;
+}
+
+void check_rect_footprints(const Mesh& m, int raw_w, int raw_h) {
+  check_mesh(m);
+  for (int b = 0; b * kRectTileH < m.out_height; ++b)
+    for (int a = 0; a * kRectTileW < m.out_width; ++a) {
+      const TileSource t = tile_source(m, a, b, raw_w, raw_h);
+      if (!t.fits())
+        throw std::invalid_argument("mesh: the source of output tile (" + std::to_string(a) + ", " +
+                                    std::to_string(b) + ") is " + std::to_string(t.cols) + "x" +
+                                    std::to_string(t.rows) + " raw pixels, beyond the engine's " +
+                                    std::to_string(kRectBufW) + "x" + std::to_string(kRectBufH));
+    }
 }
 
 Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, int out_height, int step_log2) {

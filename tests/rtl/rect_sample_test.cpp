@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <random>
 #include <sstream>
@@ -17,6 +16,7 @@
 #include "Vrect_sample.h"
 #include "mcadsw/params.hpp"
 #include "mcadsw/rectify.hpp"
+#include "rect_bench.hpp"
 #include "rtl_bench.hpp"
 #include "test_util.hpp"
 
@@ -28,37 +28,6 @@ constexpr int kNodeCols = kRectTileW / 8 + 1, kNodeRows = kRectTileH / 8 + 1;
 constexpr int kBankWords = kRectBufH / 2 * kRectBufW / 4;
 constexpr int kBankAddrBits = 8;  // log2(kBankWords)
 static_assert(kBankWords == 1 << kBankAddrBits);
-
-template <size_t N>
-void set_bits(VlWide<N>& w, int lsb, int bits, uint32_t v) {
-  for (int b = 0; b < bits; ++b) {
-    const int i = lsb + b;
-    const uint32_t bit = (v >> b) & 1u;
-    w[size_t(i / 32)] = (w[size_t(i / 32)] & ~(1u << (i % 32))) | (bit << (i % 32));
-  }
-}
-
-// A random smooth mesh: an affine map (scale, rotation, offset) plus jitter per node.
-Mesh random_mesh(int w, int h, int s, int raw_w, int raw_h, std::mt19937& rng) {
-  Mesh m = make_mesh(w, h, s);
-  std::uniform_real_distribution<double> u01(0, 1);
-  const double scale = 0.6 + 1.1 * u01(rng), ang = (u01(rng) - 0.5) * 0.4;
-  const double jit = u01(rng) < 0.3 ? 0.0 : 2.5 * u01(rng);
-  // Offset: usually the views roughly aligned, sometimes far off (invalid regions).
-  const double far = u01(rng) < 0.25 ? 0.5 : 0.1;
-  const double ox = (u01(rng) - 0.5) * far * raw_w * 2, oy = (u01(rng) - 0.5) * far * raw_h * 2;
-  std::normal_distribution<double> n01(0, 1);
-  for (int j = 0; j < m.ny; ++j)
-    for (int i = 0; i < m.nx; ++i) {
-      const double x = i * m.step() - w / 2.0, y = j * m.step() - h / 2.0;
-      const double u = raw_w / 2.0 + ox + scale * (std::cos(ang) * x - std::sin(ang) * y) + jit * n01(rng);
-      const double v = raw_h / 2.0 + oy + scale * (std::sin(ang) * x + std::cos(ang) * y) + jit * n01(rng);
-      m.u[size_t(j * m.nx + i)] = int32_t(std::lround(u * 32));
-      m.v[size_t(j * m.nx + i)] = int32_t(std::lround(v * 32));
-    }
-  check_mesh(m);
-  return m;
-}
 
 struct Counts {
   int tiles = 0, skipped = 0, pixels = 0, valid = 0;
@@ -109,8 +78,8 @@ std::string run_tile(Vrect_sample& t, const Mesh& m, const Plane& raw, const Pla
       const bool in = gi < m.nx && gj < m.ny;
       const uint32_t mask = (1u << kNodeBits) - 1;
       const int k = j * kNodeCols + i;
-      set_bits(t.node_u_i, k * kNodeBits, kNodeBits, in ? uint32_t(m.u[size_t(gj * m.nx + gi)]) & mask : 0);
-      set_bits(t.node_v_i, k * kNodeBits, kNodeBits, in ? uint32_t(m.v[size_t(gj * m.nx + gi)]) & mask : 0);
+      sim::set_bits(t.node_u_i, k * kNodeBits, kNodeBits, in ? uint32_t(m.u[size_t(gj * m.nx + gi)]) & mask : 0);
+      sim::set_bits(t.node_v_i, k * kNodeBits, kNodeBits, in ? uint32_t(m.v[size_t(gj * m.nx + gi)]) & mask : 0);
     }
   t.step_log2_i = uint32_t(s);
   t.tile_y0_i = uint32_t(ty0);
@@ -194,7 +163,7 @@ TEST(RectSample, TilesMatchTheReference) {
     const int s = 3 + frame % 3;
     const int w = 8 + int(rng() % 90), h = 5 + int(rng() % 60);
     const int rw = 10 + int(rng() % 110), rh = 10 + int(rng() % 80);
-    const Mesh m = random_mesh(w, h, s, rw, rh, rng);
+    const Mesh m = sim::random_mesh(w, h, s, rw, rh, rng);
     const YuvImage raw = test::random_yuv(rw, rh, rng);
     const Rectified ref = rectify(raw, m);
     const bool uv = frame % 2;

@@ -37,6 +37,21 @@ void check_mesh(const Mesh& mesh);
 // Source position of output pixel (x, y), in 1/32 pixel (section 13.2).
 std::pair<int32_t, int32_t> mesh_position(const Mesh& mesh, int x, int y);
 
+// The engine's limit (section 13.8): the source rectangle of output tile (a, b) of
+// kRectTileW x kRectTileH pixels, from the bounding box of the tile's nodes, in a raw
+// view of raw_w x raw_h. x0 is word-aligned; cols and rows count from (x0, y0).
+struct TileSource {
+  int node_i0 = 0, node_i1 = 0, node_j0 = 0, node_j1 = 0;  // the tile's nodes, inclusive
+  int32_t umin = 0, umax = 0, vmin = 0, vmax = 0;          // their bounding box, 1/32 pixel
+  bool empty = false;                                      // wholly outside the raw view
+  int x0 = 0, y0 = 0, cols = 0, rows = 0;                  // the rectangle (when not empty)
+  bool fits() const;                                       // empty, or cols <= 64 and rows <= 32
+};
+TileSource tile_source(const Mesh& mesh, int tile_a, int tile_b, int raw_w, int raw_h);
+// Throws std::invalid_argument naming the first tile (row by row) whose source
+// rectangle does not fit the engine's tile buffer.
+void check_rect_footprints(const Mesh& mesh, int raw_w, int raw_h);
+
 // The rectified view (section 13.3): every plane of `raw` sampled at the mesh's
 // positions; valid (1) where the position lies inside the raw view, else 0 and
 // the pixel black (Y 0, U and V 128).

@@ -40,11 +40,11 @@
 
 module mcadsw_rect_sample #(
   parameter int CW  = 12,                              // coordinates, sizes
-  parameter int NB  = mcadsw_pkg::MESH_NODE_BITS,      // a node coordinate, signed
-  parameter int TW  = mcadsw_pkg::RECT_TILE_W,
-  parameter int TH  = mcadsw_pkg::RECT_TILE_H,
-  parameter int BW  = mcadsw_pkg::RECT_BUF_W,
-  parameter int BH  = mcadsw_pkg::RECT_BUF_H,
+  parameter int NB  = mcadsw_rect_pkg::MESH_NODE_BITS,      // a node coordinate, signed
+  parameter int TW  = mcadsw_rect_pkg::RECT_TILE_W,
+  parameter int TH  = mcadsw_rect_pkg::RECT_TILE_H,
+  parameter int BW  = mcadsw_rect_pkg::RECT_BUF_W,
+  parameter int BH  = mcadsw_rect_pkg::RECT_BUF_H,
   parameter int NODE_COLS = TW / 8 + 1,                // nodes of a tile at S = 8
   parameter int NODE_ROWS = TH / 8 + 1,
   parameter int NODES = NODE_COLS * NODE_ROWS,
@@ -352,7 +352,7 @@ module mcadsw_rect_sample #(
     end else if (en_i) begin
       pix_valid_o <= v3_q;
       pix_ok_o    <= ok3_q;
-      pix_o       <= ok3_q ? out4 : (uv_q ? 8'(mcadsw_pkg::RECT_INVALID_UV) : 8'(mcadsw_pkg::RECT_INVALID_Y));
+      pix_o       <= ok3_q ? out4 : (uv_q ? 8'(mcadsw_rect_pkg::RECT_INVALID_UV) : 8'(mcadsw_rect_pkg::RECT_INVALID_Y));
       pix_x_o     <= x3_q;
       pix_y_o     <= y3_q;
       pix_last_o  <= last3_q;

@@ -1,0 +1,9 @@
+// The rectifier (issue 32, docs/architecture.md 3.10), built and block-tested beside the
+// engine until its pass goes in: then these files join rtl/mcadsw.f. Relative to rtl/rect/,
+// its package first; the engine's package (rtl/mcadsw_pkg.sv) is read before it.
+mcadsw_rect_pkg.sv
+mcadsw_rect_load.sv
+mcadsw_rect_nodes.sv
+mcadsw_rect_sample.sv
+mcadsw_rect_write.sv
+mcadsw_rect.sv
