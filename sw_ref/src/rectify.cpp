@@ -11,6 +11,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "mcadsw/image_io.hpp"
 #include "mcadsw/params.hpp"
 
 namespace mcadsw {
@@ -167,31 +168,46 @@ Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, i
   return m;
 }
 
+Rectified remap_with_opencv(const YuvImage& raw, const cv::Mat& mx, const cv::Mat& my, int interpolation) {
+  Rectified r;
+  const Plane* in[3] = {&raw.y, &raw.u, &raw.v};
+  Plane* out[3] = {&r.image.y, &r.image.u, &r.image.v};
+  for (int c = 0; c < 3; ++c) {
+    const cv::Mat src(raw.height(), raw.width(), CV_8UC1, const_cast<uint8_t*>(in[c]->px.data()));
+    cv::Mat dst;
+    cv::remap(src, dst, mx, my, interpolation, cv::BORDER_REPLICATE);
+    *out[c] = from_mat(dst);
+  }
+  const cv::Mat valid = (mx >= 0) & (mx <= raw.width() - 1) & (my >= 0) & (my <= raw.height() - 1);
+  r.valid = from_mat(valid / 255);
+  for (size_t i = 0; i < r.valid.px.size(); ++i)
+    if (!r.valid.px[i]) {
+      r.image.y.px[i] = kRectInvalidY;
+      r.image.u.px[i] = r.image.v.px[i] = kRectInvalidUV;
+    }
+  return r;
+}
+
 RectifyAgreement compare_with_opencv(const YuvImage& raw, const Mesh& m, const cv::Matx33d& k, const cv::Mat& d,
                                      const cv::Matx33d& r, const cv::Matx34d& p) {
   const Rectified mine = rectify(raw, m);
   cv::Mat mx, my;
   cv::initUndistortRectifyMap(cv::Mat(k), d, cv::Mat(r), cv::Mat(p), cv::Size(m.out_width, m.out_height), CV_32FC1,
                               mx, my);
+  const Rectified theirs = remap_with_opencv(raw, mx, my, cv::INTER_LINEAR);
   RectifyAgreement a;
-  const double limit_u = raw.width() - 1, limit_v = raw.height() - 1;
   double sq = 0;
-  const Plane* raw_planes[3] = {&raw.y, &raw.u, &raw.v};
   const Plane* mine_planes[3] = {&mine.image.y, &mine.image.u, &mine.image.v};
-  cv::Mat theirs[3];
-  for (int c = 0; c < 3; ++c) {
-    const cv::Mat src(raw.height(), raw.width(), CV_8UC1, const_cast<uint8_t*>(raw_planes[c]->px.data()));
-    cv::remap(src, theirs[c], mx, my, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  }
+  const Plane* their_planes[3] = {&theirs.image.y, &theirs.image.u, &theirs.image.v};
   for (int y = 0; y < m.out_height; ++y)
     for (int x = 0; x < m.out_width; ++x) {
       const auto [pu, pv] = mesh_position(m, x, y);
-      const double fu = mx.at<float>(y, x), fv = my.at<float>(y, x);
-      a.mesh_deviation = std::max({a.mesh_deviation, std::abs(pu / 32.0 - fu), std::abs(pv / 32.0 - fv)});
-      if (!mine.valid.at(x, y) || !(fu >= 0 && fu <= limit_u && fv >= 0 && fv <= limit_v)) continue;
+      a.mesh_deviation = std::max({a.mesh_deviation, std::abs(pu / 32.0 - double(mx.at<float>(y, x))),
+                                   std::abs(pv / 32.0 - double(my.at<float>(y, x)))});
+      if (!mine.valid.at(x, y) || !theirs.valid.at(x, y)) continue;
       ++a.valid;
       for (int c = 0; c < 3; ++c) {
-        const double e = double(mine_planes[c]->at(x, y)) - double(theirs[c].at<uint8_t>(y, x));
+        const double e = double(mine_planes[c]->at(x, y)) - double(their_planes[c]->at(x, y));
         sq += e * e;
       }
     }

@@ -16,32 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct View {
-  YuvImage image;
-  Plane valid;  // 1 valid, 0 invalid
-};
-
-// OpenCV's rectification of the raw view's Y, U and V planes on the float maps, with
-// `interpolation`; valid where the map lies inside the raw view (as 13.3).
-View opencv_view(const YuvImage& raw, const cv::Mat& mx, const cv::Mat& my, int interpolation) {
-  View v;
-  const Plane* in[3] = {&raw.y, &raw.u, &raw.v};
-  Plane* out[3] = {&v.image.y, &v.image.u, &v.image.v};
-  for (int c = 0; c < 3; ++c) {
-    cv::Mat dst;
-    cv::remap(to_mat(*in[c]), dst, mx, my, interpolation, cv::BORDER_REPLICATE);
-    *out[c] = from_mat(dst);
-  }
-  const cv::Mat valid = (mx >= 0) & (mx <= raw.width() - 1) & (my >= 0) & (my <= raw.height() - 1);
-  v.valid = from_mat(valid / 255);
-  // Black outside, as 13.3, so the matcher sees the same border as the mesh's.
-  for (size_t i = 0; i < v.valid.px.size(); ++i)
-    if (!v.valid.px[i]) {
-      v.image.y.px[i] = kRectInvalidY;
-      v.image.u.px[i] = v.image.v.px[i] = kRectInvalidUV;
-    }
-  return v;
-}
+using View = Rectified;  // image and validity (1 valid)
 
 Plane match_lr(const View& left, const View& right, int disparities, int tolerance, bool use_valid) {
   Config cfg;
@@ -80,7 +55,7 @@ RectificationQuality rectification_quality(const std::string& raw_dir, const std
   View mesh[2];
   for (int v = 0; v < 2; ++v) {
     Rectified r = rectify(raws[v], v == 0 ? meshes.first : meshes.second);
-    mesh[v] = {std::move(r.image), std::move(r.valid)};
+    mesh[v] = std::move(r);
   }
   // OpenCV's float maps, three filters.
   cv::Mat mx[2], my[2];
@@ -91,7 +66,7 @@ RectificationQuality rectification_quality(const std::string& raw_dir, const std
   const int filters[3] = {cv::INTER_LINEAR, cv::INTER_CUBIC, cv::INTER_LANCZOS4};
   View cv_views[3][2];
   for (int f = 0; f < 3; ++f)
-    for (int v = 0; v < 2; ++v) cv_views[f][v] = opencv_view(raws[v], mx[v], my[v], filters[f]);
+    for (int v = 0; v < 2; ++v) cv_views[f][v] = remap_with_opencv(raws[v], mx[v], my[v], filters[f]);
 
   const cv::Mat maps[5] = {to_mat(match_lr(undistorted[0], undistorted[1], disparities, tolerance, false)),
                            to_mat(match_lr(mesh[0], mesh[1], disparities, tolerance, true)),

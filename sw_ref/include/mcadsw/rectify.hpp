@@ -90,6 +90,11 @@ StereoRectification read_calibration(const std::string& path);
 std::pair<Mesh, Mesh> meshes_from_rectification(const StereoRectification& rect, int out_width, int out_height,
                                                 int step_log2);
 
+// OpenCV's rectification of a raw view on float maps (CV_32FC1): cv::remap of its Y, U
+// and V planes with `interpolation` (replicated border); valid where the map lies in the
+// closed rectangle of the raw pixels' centres (as 13.3), and black there otherwise.
+Rectified remap_with_opencv(const YuvImage& raw, const cv::Mat& map_x, const cv::Mat& map_y, int interpolation);
+
 // How close the mesh rectification of one raw view comes to OpenCV's float one
 // (issue 32, reported by `mcadsw rectify`): cv::initUndistortRectifyMap (CV_32FC1) of
 // (k, d, r, p) at the mesh's frame size against the mesh interpolated at every pixel,
