@@ -304,19 +304,23 @@ module mcadsw_rect #(
   assign c_th = height_i - c_ty0 >= CW'(TH) ? 5'(TH) : 5'(height_i - c_ty0);
   logic [2:0] c_plane;
   assign c_plane = (c_v ? 3'd3 : 3'd0) + c_p;
-  // Addresses: the tile's first word in the rectified plane, the validity word
+  // Addresses: the tile's first word in the rectified plane (base + off_top) and its
+  // validity word (valid base + off_v). The offsets move on at a tile's first job, tiles
+  // coming in order (a inner, b, the view): raster off_top = 16 b stride + 32 a, tiled
+  // 8 a stride + 64 b; off_v = 32 a vh + 8 b.
   logic [31:0] c_base, c_top, c_vtop;
   assign c_base = base_i[32 * c_plane +: 32];
-  logic [31:0] c_col, c_row8;                              // the tile's strip column, its 8-row group
-  assign c_col  = {22'b0, c_a[6:0], 3'b000};              // tx0 / 4 = 8 a (a < 64)
-  assign c_row8 = {21'b0, c_b[9:0], 1'b0};                // ty0 / 8 = 2 b
-  assign c_top  = tiled_i ? c_base + c_col * stride_i + {18'b0, c_ty0, 2'b0}
-                          : c_base + 32'(c_ty0) * stride_i + 32'(c_tx0);
-  assign c_vtop = valid_base_i[32 * c_v +: 32] + ((c_col * 32'(vh) + c_row8) << 2);
+  logic [31:0] off_top_q, row_top_q, off_v_q, row_v_q;     // this tile's, its band's first tile's
+  logic [31:0] band_top, step_top;
+  assign band_top = tiled_i ? 32'd64 : {stride_i[27:0], 4'b0};
+  assign step_top = tiled_i ? {stride_i[28:0], 3'b0} : 32'd32;
+  assign c_top  = c_base + off_top_q;
+  assign c_vtop = valid_base_i[32 * c_v +: 32] + off_v_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cs_q <= CIdle; c_q <= 1'b0; cu_q <= '0; cv_q <= '0;
+      off_top_q <= '0; row_top_q <= '0; off_v_q <= '0; row_v_q <= '0;
     end else if (ps_q == PIdle && start_i) begin        // a pass: the producer starts at buffer 0
       c_q <= 1'b0;
     end else begin
@@ -325,6 +329,15 @@ module mcadsw_rect #(
           if (c_first) begin
             cu_q <= nd_u;
             cv_q <= nd_v;
+            if (c_a == '0) begin                          // a band's first tile (a view's: b = 0)
+              row_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
+              off_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
+              row_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
+              off_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
+            end else begin
+              off_top_q <= off_top_q + step_top;
+              off_v_q   <= off_v_q + {15'b0, vh, 5'b0};
+            end
           end
           cs_q <= CStart;
         end
@@ -426,7 +439,7 @@ module mcadsw_rect #(
 
   logic unused_rect;
   assign unused_rect = ^{nrd_busy, nrd_done, unused_nrd_we, unused_nrd_par, unused_nrd_addr, unused_nrd_even,
-                         unused_nrd_odd, nd_rows[CW:6], nd_cols[CW:7]};
+                         unused_nrd_odd, nd_rows[CW:6], nd_cols[CW:7], stride_i[31:29]};
 
   `MCADSW_ASSERT(load_when_idle, !ld_start || !ld_busy)
   `MCADSW_ASSERT(reads_answered_in_order, !mem_rvalid_i || outs_q != '0)

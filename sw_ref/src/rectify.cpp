@@ -66,6 +66,15 @@ std::pair<int32_t, int32_t> mesh_position(const Mesh& m, int x, int y) {
   return {interp(m.u), interp(m.v)};
 }
 
+std::vector<uint32_t> validity_bitmap(const Plane& valid) {
+  const int vh = (valid.height + 7) / 8, nk = (valid.width + 3) / 4;
+  std::vector<uint32_t> words(size_t(nk * vh), 0u);
+  for (int y = 0; y < valid.height; ++y)
+    for (int x = 0; x < valid.width; ++x)
+      if (valid.at(x, y)) words[size_t((x / 4) * vh + y / 8)] |= 1u << (4 * (y % 8) + x % 4);
+  return words;
+}
+
 Rectified rectify(const YuvImage& raw, const Mesh& m) {
   check_mesh(m);
   const int wr = raw.width(), hr = raw.height();

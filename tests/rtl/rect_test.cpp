@@ -163,23 +163,20 @@ std::string compare(const Frame& f, const PassRun& r) {
           }
         }
     }
-    // Validity bitmap: word (x / 4) ceil(H / 8) + y / 8, bit 4 (y % 8) + x % 4.
+    // Validity bitmap (validity_bitmap: word (x / 4) ceil(H / 8) + y / 8, bit 4 (y % 8) + x % 4).
     const int vh = (f.h + 7) / 8;
+    const std::vector<uint32_t> bitmap = validity_bitmap(ref.valid);
     for (int k = 0; 4 * k < f.w; ++k)
       for (int g = 0; g < vh; ++g) {
         const uint32_t a = kValidBase + uint32_t(v) * 0x40000 + 4u * uint32_t(k * vh + g);
-        uint32_t got = 0, want = 0;
+        uint32_t got = 0;
         for (int b = 0; b < 4; ++b) {
           if (r.written[a + uint32_t(b)] != 1) return "validity word " + std::to_string(k) + "," + std::to_string(g) +
                                                       " written " + std::to_string(r.written[a + uint32_t(b)]) + " times";
           got |= uint32_t(r.mem[a + uint32_t(b)]) << (8 * b);
         }
         expected_bytes += 4;
-        for (int yy = 0; yy < 8; ++yy)
-          for (int xx = 0; xx < 4; ++xx) {
-            const int x = 4 * k + xx, y = 8 * g + yy;
-            if (x < f.w && y < f.h && ref.valid.at(x, y)) want |= 1u << (4 * yy + xx);
-          }
+        const uint32_t want = bitmap[size_t(k * vh + g)];
         if (got != want) {
           std::ostringstream e;
           e << "view " << v << " validity word (" << k << "," << g << "): " << std::hex << got << ", reference " << want;

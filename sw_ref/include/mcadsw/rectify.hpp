@@ -61,6 +61,11 @@ struct Rectified {
 };
 Rectified rectify(const YuvImage& raw, const Mesh& mesh);
 
+// The validity bitmap the hardware writes and its mark step reads (docs/architecture.md
+// 3.10.1): one bit a pixel in strip order, word (x / 4) ceil(H / 8) + y / 8, bit
+// 4 (y % 8) + x % 4, 1 valid; the bits of pixels outside the frame are 0.
+std::vector<uint32_t> validity_bitmap(const Plane& valid);
+
 // The mesh of OpenCV float maps (CV_32FC1, at least (nx - 1) S + 1 by (ny - 1) S + 1
 // pixels, section 13.5): node (i, j) = cvRound(32 map(i S, j S)).
 Mesh mesh_from_maps(const cv::Mat& map_x, const cv::Mat& map_y, int out_width, int out_height,
