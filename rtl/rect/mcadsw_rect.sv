@@ -180,8 +180,6 @@ module mcadsw_rect #(
     if (!rst_ni) begin
       ps_q <= PIdle; check_q <= 1'b0; p_a <= '0; p_b <= '0; p_v <= 1'b0; p_p <= '0; p_q <= 1'b0;
       buf_full_q <= '0; nodes_free_q <= 1'b1;
-      pr_empty_q <= 1'b0; pr_x0_q <= '0; pr_y0_q <= '0; pr_cols_q <= '0; pr_rows_q <= '0;
-      h_a_q <= '0; h_b_q <= '0; h_v_q <= '0; h_first_q <= '0; h_p_q <= '0; h_x0_q <= '0; h_y0_q <= '0;
       err_range_q <= 1'b0; err_fit_q <= 1'b0;
     end else begin
       if (cons_took_nodes) nodes_free_q <= 1'b1;
@@ -197,9 +195,6 @@ module mcadsw_rect #(
         PNodes: if (nd_start) ps_q <= PNodesRd;              // the tile registered
         PNodesRd: ps_q <= PNodesWait;                        // nrd_start: its node rows
         PNodesWait: if (nd_done) begin                               // the tile's rectangle
-          pr_empty_q <= nd_empty;
-          pr_x0_q <= nd_x0; pr_y0_q <= nd_y0;
-          pr_cols_q <= 7'(nd_cols); pr_rows_q <= 6'(nd_rows);
           p_p <= first_plane(p_v ? planes_i[4:3] : planes_i[1:0]);
           if (check_q) begin
             if (nd_range || !nd_fits) begin
@@ -232,10 +227,6 @@ module mcadsw_rect #(
         PLoad: ps_q <= PLoadRun;                           // ld_start this cycle
         PLoadRun: if (pr_empty_q || ld_done) begin
           buf_full_q[p_q] <= 1'b1;
-          h_a_q[p_q * CW +: CW] <= p_a; h_b_q[p_q * CW +: CW] <= p_b; h_v_q[p_q] <= p_v;
-          h_p_q[p_q * 3 +: 3] <= p_p;
-          h_first_q[p_q] <= p_p == first_plane(p_v ? planes_i[4:3] : planes_i[1:0]);
-          h_x0_q[p_q * CW +: CW] <= pr_x0_q; h_y0_q[p_q * CW +: CW] <= pr_y0_q;
           p_q <= !p_q;
           if (p_next != 3'd3) begin
             p_p <= p_next;
@@ -255,6 +246,21 @@ module mcadsw_rect #(
         PDone: if (cons_idle) ps_q <= PIdle;
         default: ps_q <= PIdle;
       endcase
+    end
+  end
+  // Data (no reset: the rectangle is written when the tile's nodes are in, a handoff
+  // before its buffer is marked full)
+  always_ff @(posedge clk_i) begin
+    if (ps_q == PNodesWait && nd_done) begin
+      pr_empty_q <= nd_empty;
+      pr_x0_q <= nd_x0; pr_y0_q <= nd_y0;
+      pr_cols_q <= 7'(nd_cols); pr_rows_q <= 6'(nd_rows);
+    end
+    if (ps_q == PLoadRun && (pr_empty_q || ld_done)) begin
+      h_a_q[p_q * CW +: CW] <= p_a; h_b_q[p_q * CW +: CW] <= p_b; h_v_q[p_q] <= p_v;
+      h_p_q[p_q * 3 +: 3] <= p_p;
+      h_first_q[p_q] <= p_p == first_plane(p_v ? planes_i[4:3] : planes_i[1:0]);
+      h_x0_q[p_q * CW +: CW] <= pr_x0_q; h_y0_q[p_q * CW +: CW] <= pr_y0_q;
     end
   end
   assign nd_start  = ps_q == PNodes && (nodes_free_q || check_q) && !nd_busy;
@@ -319,28 +325,12 @@ module mcadsw_rect #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      cs_q <= CIdle; c_q <= 1'b0; cu_q <= '0; cv_q <= '0;
-      off_top_q <= '0; row_top_q <= '0; off_v_q <= '0; row_v_q <= '0;
+      cs_q <= CIdle; c_q <= 1'b0;
     end else if (ps_q == PIdle && start_i) begin        // a pass: the producer starts at buffer 0
       c_q <= 1'b0;
     end else begin
       case (cs_q)
-        CIdle: if (buf_full_q[c_q] && !check_q && ps_q != PIdle) begin
-          if (c_first) begin
-            cu_q <= nd_u;
-            cv_q <= nd_v;
-            if (c_a == '0) begin                          // a band's first tile (a view's: b = 0)
-              row_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
-              off_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
-              row_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
-              off_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
-            end else begin
-              off_top_q <= off_top_q + step_top;
-              off_v_q   <= off_v_q + {15'b0, vh, 5'b0};
-            end
-          end
-          cs_q <= CStart;
-        end
+        CIdle: if (buf_full_q[c_q] && !check_q && ps_q != PIdle) cs_q <= CStart;
         CStart: if (smp_en) cs_q <= CRun;                 // sample and writer start (the core
                                                           // takes its start with en_i)
         CRun: if (wr_done) begin
@@ -352,6 +342,23 @@ module mcadsw_rect #(
     end
   end
   assign cons_took_nodes = cs_q == CIdle && buf_full_q[c_q] && !check_q && ps_q != PIdle && c_first;
+  // Data (no reset): the tile's nodes and address offsets, taken at its first job (a
+  // view's first tile, a = b = 0, sets the offsets)
+  always_ff @(posedge clk_i) begin
+    if (cons_took_nodes) begin
+      cu_q <= nd_u;
+      cv_q <= nd_v;
+      if (c_a == '0) begin                                // a band's first tile
+        row_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
+        off_top_q <= c_b == '0 ? 32'd0 : row_top_q + band_top;
+        row_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
+        off_v_q   <= c_b == '0 ? 32'd0 : row_v_q + 32'd8;
+      end else begin
+        off_top_q <= off_top_q + step_top;
+        off_v_q   <= off_v_q + {15'b0, vh, 5'b0};
+      end
+    end
+  end
   assign cons_free_buf   = cs_q == CRun && wr_done;
   assign cons_idle       = cs_q == CIdle && buf_full_q == 2'b00 && wr_idle && !smp_busy;
   assign smp_start = cs_q == CStart;
@@ -412,18 +419,20 @@ module mcadsw_rect #(
   assign rd_granted = mem_gnt_i && (sel == 2'd2 || sel == 2'd3);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      lock_q <= '0; outs_q <= '0; tag_client_q <= '0; tag_wr_q <= '0; tag_rd_q <= '0; beat_q <= '0;
-      tag_len_q <= '0;
+      lock_q <= '0; outs_q <= '0; tag_wr_q <= '0; tag_rd_q <= '0; beat_q <= '0;
     end else begin
       lock_q <= mem_req_o && !mem_gnt_i ? sel : 2'd0;
-      if (rd_granted) begin
-        tag_client_q[tag_wr_q] <= sel == 2'd3;
-        tag_len_q[tag_wr_q * 4 +: 4] <= {1'b0, mem_len_o} + 4'd1;
-        tag_wr_q <= tag_wr_q + 1'b1;
-      end
+      if (rd_granted) tag_wr_q <= tag_wr_q + 1'b1;
       if (mem_rvalid_i) beat_q <= rd_last ? 4'd0 : beat_q + 4'd1;
       if (rd_last) tag_rd_q <= tag_rd_q + 1'b1;
       outs_q <= outs_q + ($clog2(OUTS) + 1)'(rd_granted) - ($clog2(OUTS) + 1)'(rd_last);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin                        // tag entries: written before read
+    if (rd_granted) begin
+      tag_client_q[tag_wr_q] <= sel == 2'd3;
+      tag_len_q[tag_wr_q * 4 +: 4] <= {1'b0, mem_len_o} + 4'd1;
     end
   end
 

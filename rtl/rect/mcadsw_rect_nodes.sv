@@ -88,32 +88,20 @@ module mcadsw_rect_nodes #(
   logic first_node;                                 // the tile's first node: min and max start
   assign first_node = ci_q == '0 && cj_q == '0;
 
+  // Control (reset)
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      rw_q <= '0; rh_q <= '0; ncols_q <= 3'd2; nrows_q <= 2'd2; ci_q <= '0; cj_q <= '0; v_q <= 1'b0;
+      ncols_q <= 3'd2; nrows_q <= 2'd2; ci_q <= '0; cj_q <= '0; v_q <= 1'b0;
       busy_q <= 1'b0; fin_q <= 1'b0; range_q <= 1'b0;
-      umin_q <= '0; umax_q <= '0; vmin_q <= '0; vmax_q <= '0;
-      node_u_o <= '0; node_v_o <= '0; node_i0_o <= '0; node_j0_o <= '0;
     end else begin
       fin_q <= 1'b0;
       if (start_i && !busy_q) begin
-        rw_q <= raw_w_i; rh_q <= raw_h_i;
-        node_i0_o <= i0; node_j0_o <= j0;
         ncols_q <= 3'(i1 - i0 + CW'(1));
         nrows_q <= 2'(j1 - j0 + CW'(1));
         ci_q <= '0; cj_q <= '0; v_q <= 1'b0; range_q <= 1'b0;
         busy_q <= 1'b1;
       end else if (busy_q && word_valid_i) begin
         range_q <= range_q || !word_ok;
-        if (v_q) begin
-          node_v_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
-          if (first_node || val < vmin_q) vmin_q <= val;
-          if (first_node || val > vmax_q) vmax_q <= val;
-        end else begin
-          node_u_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
-          if (first_node || val < umin_q) umin_q <= val;
-          if (first_node || val > umax_q) umax_q <= val;
-        end
         v_q <= !v_q;
         if (v_q) begin
           if (ci_q == ncols_q - 3'd1) begin
@@ -127,6 +115,24 @@ module mcadsw_rect_nodes #(
           busy_q <= 1'b0;
           fin_q <= 1'b1;
         end
+      end
+    end
+  end
+  // Data (no reset: each is written before it is used; a node the tile does not have is
+  // never read)
+  always_ff @(posedge clk_i) begin
+    if (start_i && !busy_q) begin
+      rw_q <= raw_w_i; rh_q <= raw_h_i;
+      node_i0_o <= i0; node_j0_o <= j0;
+    end else if (busy_q && word_valid_i) begin
+      if (v_q) begin
+        node_v_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
+        if (first_node || val < vmin_q) vmin_q <= val;
+        if (first_node || val > vmax_q) vmax_q <= val;
+      end else begin
+        node_u_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
+        if (first_node || val < umin_q) umin_q <= val;
+        if (first_node || val > umax_q) umax_q <= val;
       end
     end
   end
@@ -153,19 +159,22 @@ module mcadsw_rect_nodes #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       done_o <= 1'b0; range_err_o <= 1'b0; empty_o <= 1'b0; fits_o <= 1'b0;
-      src_x0_o <= '0; src_y0_o <= '0; src_cols_o <= '0; src_rows_o <= '0;
     end else begin
       done_o <= fin_q;
       if (fin_q) begin
         range_err_o <= range_q;
         empty_o     <= empty;
-        src_x0_o    <= empty ? '0 : x0;
-        src_y0_o    <= empty ? '0 : CW'(yf);
-        src_cols_o  <= empty ? '0 : (CW + 1)'(xt) - (CW + 1)'(x0) + (CW + 1)'(1);
-        src_rows_o  <= empty ? '0 : (CW + 1)'(yt) - (CW + 1)'(yf) + (CW + 1)'(1);
         fits_o      <= empty || ((CW + 1)'(xt) - (CW + 1)'(x0) < (CW + 1)'(BW) &&
                                  (CW + 1)'(yt) - (CW + 1)'(yf) < (CW + 1)'(BH));
       end
+    end
+  end
+  always_ff @(posedge clk_i) begin                   // data: read with done_o
+    if (fin_q) begin
+      src_x0_o   <= empty ? '0 : x0;
+      src_y0_o   <= empty ? '0 : CW'(yf);
+      src_cols_o <= empty ? '0 : (CW + 1)'(xt) - (CW + 1)'(x0) + (CW + 1)'(1);
+      src_rows_o <= empty ? '0 : (CW + 1)'(yt) - (CW + 1)'(yf) + (CW + 1)'(1);
     end
   end
 

@@ -169,8 +169,6 @@ module mcadsw_rect_sample #(
       k_q <= '0; r_q <= '0; c_q <= '0; ci_q <= '0; cj_q <= '0;
       s_q <= 3'd4; tw_q <= '0; th_q <= '0; bx0_q <= '0; by0_q <= '0; rw_q <= '0; rh_q <= '0;
       uv_q <= 1'b0; oy0_q <= 1'b0;
-      {sum_u_q, sum0_u_q, d_u_q, r_u_q, dd_u_q, sum0t_u_q, dt_u_q, rt_u_q, ddt_u_q} <= '0;
-      {sum_v_q, sum0_v_q, d_v_q, r_v_q, dd_v_q, sum0t_v_q, dt_v_q, rt_v_q, ddt_v_q} <= '0;
     end else if (en_i) begin
       case (state_q)
         StIdle: if (start_i) begin
@@ -181,30 +179,13 @@ module mcadsw_rect_sample #(
           setup_cross_q <= 1'b0;
           state_q <= StSetup;
         end
-        StSetup: begin
-          if (setup_cross_q) begin
-            r_u_q <= rset_u; dd_u_q <= ddl_u;
-            r_v_q <= rset_v; dd_v_q <= ddl_v;
-          end else begin
-            sum0t_u_q <= a_u <<< s_q; dt_u_q <= dtop_u; rt_u_q <= da_u <<< s_q; ddt_u_q <= ddl_u;
-            sum0t_v_q <= a_v <<< s_q; dt_v_q <= dtop_v; rt_v_q <= da_v <<< s_q; ddt_v_q <= ddl_v;
-            sum0_u_q <= a_u <<< s_q; sum_u_q <= a_u <<< s_q; d_u_q <= dtop_u; r_u_q <= da_u <<< s_q;
-            dd_u_q <= ddl_u;
-            sum0_v_q <= a_v <<< s_q; sum_v_q <= a_v <<< s_q; d_v_q <= dtop_v; r_v_q <= da_v <<< s_q;
-            dd_v_q <= ddl_v;
-          end
-          state_q <= StRun;
-        end
+        StSetup: state_q <= StRun;
         StRun: begin
           if (!row_end) begin
             c_q <= c_q + 2'd1;
-            sum_u_q <= sum_u_q + d_u_q;
-            sum_v_q <= sum_v_q + d_v_q;
           end else if (!strip_end) begin                // next row of the strip
             c_q <= '0;
             r_q <= r_q + 4'd1;
-            sum0_u_q <= sum0_u_q + r_u_q; sum_u_q <= sum0_u_q + r_u_q; d_u_q <= d_u_q + dd_u_q;
-            sum0_v_q <= sum0_v_q + r_v_q; sum_v_q <= sum0_v_q + r_v_q; d_v_q <= d_v_q + dd_v_q;
             if (cross_next) begin
               cj_q <= cj_q + 2'd1;
               setup_cross_q <= 1'b1;
@@ -219,13 +200,6 @@ module mcadsw_rect_sample #(
               ci_q <= ci_q + 3'd1;
               setup_cross_q <= 1'b0;
               state_q <= StSetup;
-            end else begin
-              sum0t_u_q <= sum0t_u_q + (dt_u_q <<< 2); rt_u_q <= rt_u_q + (ddt_u_q <<< 2);
-              sum0t_v_q <= sum0t_v_q + (dt_v_q <<< 2); rt_v_q <= rt_v_q + (ddt_v_q <<< 2);
-              sum0_u_q <= sum0t_u_q + (dt_u_q <<< 2); sum_u_q <= sum0t_u_q + (dt_u_q <<< 2);
-              d_u_q <= dt_u_q; r_u_q <= rt_u_q + (ddt_u_q <<< 2); dd_u_q <= ddt_u_q;
-              sum0_v_q <= sum0t_v_q + (dt_v_q <<< 2); sum_v_q <= sum0t_v_q + (dt_v_q <<< 2);
-              d_v_q <= dt_v_q; r_v_q <= rt_v_q + (ddt_v_q <<< 2); dd_v_q <= ddt_v_q;
             end
           end else begin
             state_q <= StIdle;
@@ -233,6 +207,41 @@ module mcadsw_rect_sample #(
         end
         default: state_q <= StIdle;
       endcase
+    end
+  end
+
+  // The interpolation's sums and steps (no reset: a tile's setup writes them before its
+  // first pixel)
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      if (state_q == StSetup) begin
+        if (setup_cross_q) begin
+          r_u_q <= rset_u; dd_u_q <= ddl_u;
+          r_v_q <= rset_v; dd_v_q <= ddl_v;
+        end else begin
+          sum0t_u_q <= a_u <<< s_q; dt_u_q <= dtop_u; rt_u_q <= da_u <<< s_q; ddt_u_q <= ddl_u;
+          sum0t_v_q <= a_v <<< s_q; dt_v_q <= dtop_v; rt_v_q <= da_v <<< s_q; ddt_v_q <= ddl_v;
+          sum0_u_q <= a_u <<< s_q; sum_u_q <= a_u <<< s_q; d_u_q <= dtop_u; r_u_q <= da_u <<< s_q;
+          dd_u_q <= ddl_u;
+          sum0_v_q <= a_v <<< s_q; sum_v_q <= a_v <<< s_q; d_v_q <= dtop_v; r_v_q <= da_v <<< s_q;
+          dd_v_q <= ddl_v;
+        end
+      end else if (state_q == StRun) begin
+        if (!row_end) begin
+          sum_u_q <= sum_u_q + d_u_q;
+          sum_v_q <= sum_v_q + d_v_q;
+        end else if (!strip_end) begin                  // next row of the strip
+          sum0_u_q <= sum0_u_q + r_u_q; sum_u_q <= sum0_u_q + r_u_q; d_u_q <= d_u_q + dd_u_q;
+          sum0_v_q <= sum0_v_q + r_v_q; sum_v_q <= sum0_v_q + r_v_q; d_v_q <= d_v_q + dd_v_q;
+        end else if (!tile_end && !newcol_next) begin   // next strip in the same cell column
+          sum0t_u_q <= sum0t_u_q + (dt_u_q <<< 2); rt_u_q <= rt_u_q + (ddt_u_q <<< 2);
+          sum0t_v_q <= sum0t_v_q + (dt_v_q <<< 2); rt_v_q <= rt_v_q + (ddt_v_q <<< 2);
+          sum0_u_q <= sum0t_u_q + (dt_u_q <<< 2); sum_u_q <= sum0t_u_q + (dt_u_q <<< 2);
+          d_u_q <= dt_u_q; r_u_q <= rt_u_q + (ddt_u_q <<< 2); dd_u_q <= ddt_u_q;
+          sum0_v_q <= sum0t_v_q + (dt_v_q <<< 2); sum_v_q <= sum0t_v_q + (dt_v_q <<< 2);
+          d_v_q <= dt_v_q; r_v_q <= rt_v_q + (ddt_v_q <<< 2); dd_v_q <= ddt_v_q;
+        end
+      end
     end
   end
 

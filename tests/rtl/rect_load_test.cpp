@@ -113,6 +113,7 @@ std::string run_load(Vrect_load& t, const Plane& p, int x0, int y0, int cols, in
 }
 
 TEST(RectLoad, RectanglesLandInTheBanks) {
+  sim::random_initial_values(1);
   Vrect_load t;
   t.start_i = 0;
   t.mem_gnt_i = 0;

@@ -195,7 +195,11 @@ Job random_job(std::mt19937& rng, int n) {
   return j;
 }
 
-class RectMark : public ::testing::Test {
+struct RandomInitialValues {
+  RandomInitialValues() { sim::random_initial_values(6); }
+};
+
+class RectMark : public ::testing::Test, private RandomInitialValues {  // before the model
  protected:
   void SetUp() override {
     t.start_i = 0;

@@ -110,6 +110,7 @@ std::string run_tile(Vrect_nodes& t, const Mesh& m, int rw, int rh, int a, int b
 }
 
 TEST(RectNodes, TileSourcesMatchTheReference) {
+  sim::random_initial_values(2);
   Vrect_nodes t;
   t.rst_ni = 0;
   sim::tick(t);

@@ -152,6 +152,7 @@ std::string run_tile(Vrect_sample& t, const Mesh& m, const Plane& raw, const Pla
 }
 
 TEST(RectSample, TilesMatchTheReference) {
+  sim::random_initial_values(3);
   Vrect_sample t;
   t.rst_ni = 0;
   t.en_i = 1;

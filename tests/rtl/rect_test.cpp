@@ -212,6 +212,7 @@ Frame random_frame(std::mt19937& rng, int n) {
 
 Vrect& dut() {
   static Vrect* t = [] {
+    sim::random_initial_values(5);
     auto* v = new Vrect;
     v->start_i = 0;
     v->mem_gnt_i = 0;

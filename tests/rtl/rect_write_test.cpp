@@ -126,6 +126,7 @@ std::string run_tile(Vrect_write& t, std::mt19937& rng, long& words, long& cycle
 }
 
 TEST(RectWrite, WordsAndValidityLandOnce) {
+  sim::random_initial_values(4);
   Vrect_write t;
   t.rst_ni = 0;
   sim::tick(t);

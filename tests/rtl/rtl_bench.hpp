@@ -6,8 +6,17 @@
 #include <vector>
 
 #include "mcadsw/win_geom.hpp"  // floor_div4
+#include "verilated.h"
 
 namespace mcadsw::sim {
+
+// Flip-flops without a reset start at random values (the models are verilated with
+// --x-initial unique) in the models constructed after this call: a block that reads
+// such a register before writing it then fails its bench.
+inline void random_initial_values(int seed) {
+  Verilated::threadContextp()->randSeed(seed);
+  Verilated::threadContextp()->randReset(2);
+}
 
 template <typename V>
 void tick(V& t) {
