@@ -13,11 +13,11 @@ STA_OUT = ("mcadsw_engine_sta.v", "mcadsw_ram.lib", "sta.log", "sta_endpoints.lo
 
 
 # ---- STA netlist: parameter-free macro cells and their liberty ---------------------------
-def sta_netlist(flat_v, out, cfg_path):
+def sta_netlist(flat_v, out, cfg_path, top="mcadsw_engine"):
     """Every MCADSW_RAM instance of the flattened netlist renamed to a parameter-free
     cell per shape (MCADSW_RAM_S<words>_W<bits>_A<addr bits>_<SYNC|ASYNC>, _WE when
     all bit write enables are one net: a word write enable); writes
-    mcadsw_engine_sta.v and mcadsw_ram.lib (a cell per shape, timing from
+    <top>_sta.v and mcadsw_ram.lib (a cell per shape, timing from
     constraints/mcadsw_ram_timing.cfg). Returns the number of shapes."""
     def val(s):
         s = s[s.rfind("(") + 1:]
@@ -73,8 +73,8 @@ def sta_netlist(flat_v, out, cfg_path):
         final.append(line)
     text = "\n".join(final) + "\n"
     if "#(" in text:
-        raise FlowError(f"STA netlist: parameterised instances left in {out}/mcadsw_engine_sta.v")
-    (out / "mcadsw_engine_sta.v").write_text(text)
+        raise FlowError(f"STA netlist: parameterised instances left in {out}/{top}_sta.v")
+    (out / f"{top}_sta.v").write_text(text)
 
     cfg = {}
     for line in Path(cfg_path).read_text().splitlines():

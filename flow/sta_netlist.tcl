@@ -2,11 +2,13 @@
 # to bits, wire-to-wire assigns replaced by BUFX2. Every instantiated module must be
 # defined, a cell or a macro, with matching port widths (hierarchy -check; a
 # resized port is an error flow/synth.py finds in the log).
-# Environment: RAM_MODEL, LIBERTY, NETLIST, OUT_V.
+# Environment: RAM_MODEL, LIBERTY, NETLIST, OUT_V; TOP (default mcadsw_engine; the
+# rectifier, timed apart, is mcadsw_rect).
 yosys read_verilog -lib $::env(RAM_MODEL)
 yosys read_liberty -lib $::env(LIBERTY)
 yosys read_verilog $::env(NETLIST)
-yosys hierarchy -check -top mcadsw_engine
+set top [expr {[info exists ::env(TOP)] ? $::env(TOP) : "mcadsw_engine"}]
+yosys hierarchy -check -top $top
 yosys flatten
 # Single-bit nets, so that bits of one wire that alias another bit merge
 # instead of becoming buffers (a write enable fanned out to 384 aliases did).

@@ -26,7 +26,9 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
   4. flow/sta_netlist.tcl and a macro liberty prepare it for OpenSTA,
      flow/sta_engine.tcl times it;
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
-     (flow/soc.tcl) and timed alone (flow/sta_soc.tcl);
+     (flow/soc.tcl) and timed alone (flow/sta_soc.tcl); the rectifier (rtl/rect/,
+     issue 32: mcadsw_rect and mcadsw_rect_mark) is mapped as a block and timed alone
+     (flow/rect.py), its figures reported apart from the engine's;
   6. report.md and summary.json, written last (deleted at the start).
 
   flow/synth.py synth [--dmax N] [--par P] [--out DIR] [--jobs N] [--mem-mb MB]
@@ -54,6 +56,7 @@ import synth_report
 from fpga import fpga
 from flowlib import (CON, FLOW, LIBERTY, PREFIX, RAM_MODEL, ROOT, FlowError, Run, default_out, gen_package, indent,
                      log, reusable, rtl_list, stamp_of, tail)
+from rect import synth_rect
 from soc import synth_soc
 from synth_check import check
 
@@ -180,6 +183,13 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
     soc_nand, soc_slack = synth_soc(run, out, rtl, pkg, pkg_text, dmax, par, yosys, yosys_version, lib, period_ns,
                                     period_ps, nand2_area)
 
+    # ---- (5b) The rectifier, mapped and timed apart (not yet in the engine) ----
+    rect = synth_rect(run, out, rtl, pkg, pkg_text, yosys, yosys_version, lib, period_ns, period_ps, nand2_area,
+                      gate_min)
+    rect_nand = sum(r["nand2_eq"] for r in rect.values())
+    rect_bits = sum(r["memory_bits"] for r in rect.values())
+    rect_slack = min(r["worst_slack_ns"] for r in rect.values())
+
     # ---- (6) Figures ----
     # Per block: NAND2 eq (the module's own `stat -liberty` area / NAND2X1 area),
     # flip-flops, memory bits, Yosys time and peak; instances multiply a block's
@@ -251,6 +261,9 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         "memory_kB": kb(mem_bits), "memory_macros": len(memories),
         "soc_regs_nand2_eq": soc_nand["mcadsw_regs"], "soc_axi_master_nand2_eq": soc_nand["mcadsw_axi_master"],
         "soc_total_nand2_eq": soc_total, "soc_worst_slack_ns": soc_slack,
+        "rect_nand2_eq": rect_nand, "rect_memory_bits": rect_bits, "rect_memory_kB": kb(rect_bits),
+        "rect_worst_slack_ns": rect_slack,
+        "rect_async_read_macros": sum(r["async_read_macros"] for r in rect.values()), "rect": rect,
         "memory_kB_engine": kb(eng_bits), "post_stage_nand2_eq": post_nand2, "post_stage_memory_bits": post_bits,
         "post_stage_memory_kB": kb(post_bits), "async_read_macros": async_count, "data_register_bits": reg_bits,
         "flip_flops": ff_count, "clock_mhz": clock_mhz, "wns_ns": wns, "worst_slack_ns": slack, "fmax_mhz": fmax,
@@ -294,6 +307,8 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
           f"{soc_nand['mcadsw_regs']}, AXI4 master {soc_nand['mcadsw_axi_master']}, slack {soc_slack} ns) "
           f"{soc_total} NAND2 eq,")
     print(f"       worst slack {slack} ns (WNS {wns} ns) at {clock_mhz} MHz, achievable {fmax} MHz (paper 95 MHz)")
+    print(f"       rectifier apart (pass and mark step): {rect_nand} NAND2 eq, {kb(rect_bits)} kB, "
+          f"worst slack {rect_slack} ns")
     log(f"report {out}/report.md, summary {out}/summary.json, netlist {netlist}")
     log(f"wall time {wall_s} s ({len(ran)} blocks synthesised, {len(cached)} reused); peak memory {proc_peak_mb} MB "
         f"in one process ({proc_peak_what}), {sum_peak_mb} MB all processes together")

@@ -74,6 +74,20 @@ def check(a, synth):
     if "soc_worst_slack_ns" in s:
         chk("SoC wrapper slack", s["soc_worst_slack_ns"], ">=", v["min_slack"], "ns",
             "the register block or the AXI4 master misses the clock (build/synth/soc/sta.log)")
+    # The rectifier (issue 32), mapped and timed apart: its own gate and memory budget,
+    # the engine's clock and the synchronous-macro rule.
+    if "rect_nand2_eq_max" in budget or "rect_memory_kB_max" in budget:
+        for k in ("rect_nand2_eq", "rect_memory_kB", "rect_worst_slack_ns", "rect_async_read_macros"):
+            if not isinstance(s.get(k), (int, float)):
+                return fail2(f"'{k}' missing from {summary_path} (the budget has the rectifier's limits)")
+        chk("rectifier gates (NAND2 eq)", s["rect_nand2_eq"], "<=", budget.get("rect_nand2_eq_max", 0), "",
+            "the rectifier exceeds its gate budget (build/synth/report.md, Rectifier)")
+        chk("rectifier memory", s["rect_memory_kB"], "<=", budget.get("rect_memory_kB_max", 0), "kB",
+            "the rectifier's tile buffers exceed its memory budget")
+        chk("rectifier slack", s["rect_worst_slack_ns"], ">=", v["min_slack"], "ns",
+            "the rectifier misses the clock (build/synth/rect/<module>/sta.log)")
+        chk("rectifier async-read macros", s["rect_async_read_macros"], "<=", 0, "",
+            "a rectifier memory is read asynchronously")
     # Optional: macros with an asynchronous read port (no SRAM offers one).
     if "async_read_macros_max" in budget:
         if "async_read_macros" not in s:

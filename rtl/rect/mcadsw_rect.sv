@@ -61,15 +61,22 @@ module mcadsw_rect #(
   input  logic [31:0]        mem_rdata_i
 );
   // ---- Frame geometry ----------------------------------------------------------------------
+  // Registered from the configuration every cycle (no reset, no enable): the inputs are
+  // held from the start on, so from the cycle after the start these are the frame's. The
+  // first use is two cycles after the start (nx, at the first node read); registered, the
+  // tile counters' enables start from flip-flops (a path from width_i through the
+  // comparisons into their clock gates missed half a period, flow/rect.py).
   logic [2:0]    s;
   assign s = step_log2_i;
   logic [CW-1:0] nx;                                      // nodes a row: (W - 1) >> s + 2
-  assign nx = ((width_i - CW'(1)) >> s) + CW'(2);
   logic [CW-1:0] vh;                                      // validity words a strip: ceil(H / 8)
-  assign vh = (height_i + CW'(7)) >> 3;
   logic [CW-1:0] last_a, last_b;                          // the last tile column and row
-  assign last_a = (width_i - CW'(1)) >> 5;
-  assign last_b = (height_i - CW'(1)) >> 4;
+  always_ff @(posedge clk_i) begin
+    nx     <= ((width_i - CW'(1)) >> s) + CW'(2);
+    vh     <= (height_i + CW'(7)) >> 3;
+    last_a <= (width_i - CW'(1)) >> 5;
+    last_b <= (height_i - CW'(1)) >> 4;
+  end
   function automatic logic [2:0] first_plane(input logic [1:0] f);   // f: planes 0 and 1
     first_plane = f[0] ? 3'd0 : f[1] ? 3'd1 : 3'd2;
   endfunction

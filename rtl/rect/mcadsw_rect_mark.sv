@@ -45,9 +45,19 @@ module mcadsw_rect_mark #(
   localparam int FB = $clog2(FD);
 
   // ---- Frame geometry --------------------------------------------------------------------------
+  // Registered from the configuration every cycle (no reset, no enable): the inputs are held
+  // from the start on, and the first use is the cycle after it. Registered, the marker's
+  // enables start from flip-flops (from width_i / height_i through the masks they missed
+  // half a period into their clock gates, flow/rect.py).
   logic [CW-1:0] last_k, last_g;                          // the last strip column and 8-row group
-  assign last_k = (width_i - CW'(1)) >> 2;
-  assign last_g = (height_i - CW'(1)) >> 3;
+  logic [3:0]    last_colmask;                            // the last strip column's columns
+  logic [7:0]    last_rowmask;                            // the last group's rows
+  always_ff @(posedge clk_i) begin
+    last_k       <= (width_i - CW'(1)) >> 2;
+    last_g       <= (height_i - CW'(1)) >> 3;
+    last_colmask <= 4'b1111 >> (2'd3 - 2'(width_i - CW'(1)));
+    last_rowmask <= 8'hff >> (3'd7 - 3'(height_i - CW'(1)));
+  end
 
   // ---- Reader: the bitmap, strip column by strip column --------------------------------------
   logic          run_q;                                   // a frame is being marked
@@ -86,11 +96,8 @@ module mcadsw_rect_mark #(
   logic [31:0]   row_q;                                   // the row's first word: col + y stride
   logic [3:0]    colmask;                                 // the word's columns inside the frame
   logic [7:0]    rowmask;                                 // its rows inside the frame
-  logic [CW-1:0] cols_in, rows_in;
-  assign cols_in = width_i - {ck_q[CW-3:0], 2'b00};
-  assign rows_in = height_i - {cg_q[CW-4:0], 3'b000};
-  assign colmask = cols_in >= CW'(4) ? 4'b1111 : 4'b1111 >> (3'd4 - 3'(cols_in));
-  assign rowmask = rows_in >= CW'(8) ? 8'hff : 8'hff >> (4'd8 - 4'(rows_in));
+  assign colmask = ck_q == last_k ? last_colmask : 4'b1111;
+  assign rowmask = cg_q == last_g ? last_rowmask : 8'hff;
   logic all_ok;                                           // every in-frame pixel of the word valid
   always_comb begin
     all_ok = 1'b1;
@@ -188,7 +195,7 @@ module mcadsw_rect_mark #(
   assign busy_o = run_q || fin_q || done_o;
 
   logic unused_mark;
-  assign unused_mark = ^{ck_q[CW-1:CW-2], cg_q[CW-1:CW-3], stride_i[31:29]};
+  assign unused_mark = ^{stride_i[31:29]};
 
   `MCADSW_ASSUME(start_when_idle, !(start_i && busy_o))
   `MCADSW_ASSERT(credit_covers_queue, 32'(q_count) <= 32'(credit_q) && 32'(credit_q) <= FD)

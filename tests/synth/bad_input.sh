@@ -146,6 +146,29 @@ sed 's/"async_read_macros": 1/"async_read_macros": 0/' "$work/async.json" > "$wo
 rc=0; "$py" "$driver" check --budget $work/budget_async.json --summary $work/sync.json > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 0 ] && grep -q "ok      async-read macros" "$work/check.out"; then echo "ok   synth_check no asynchronous-read macro"
 else echo "FAIL synth_check no asynchronous-read macro (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+# A budget with the rectifier's limits (issue 32): a summary without its figures is an
+# error (exit 2); its gates, memory and slack each fail on their own; within passes.
+echo '{"nand2_eq_max": 563000, "wns_ns_min": 0, "memory_kB_max": 57.1, "rect_nand2_eq_max": 60000, "rect_memory_kB_max": 4.0, "clock_mhz": 95.0}' > "$work/budget_rect.json"
+rc=0; "$py" "$driver" check --budget $work/budget_rect.json --summary $work/within.json > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 2 ] && grep -q "rect_nand2_eq' missing" "$work/check.out"; then
+  echo "ok   synth_check summary without the rectifier's figures (exit 2)"
+else echo "FAIL synth_check summary without the rectifier's figures (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+rect_ok='"rect_nand2_eq": 59000, "rect_memory_kB": 4.0, "rect_worst_slack_ns": 0.1, "rect_async_read_macros": 0'
+echo "{\"dmax\": 64, \"nand2_eq\": 500000, \"memory_kB\": 57.0, \"clock_mhz\": 95.0, \"wns_ns\": 0, \"worst_slack_ns\": 0.3, $rect_ok}" > "$work/rect_within.json"
+rc=0; "$py" "$driver" check --budget $work/budget_rect.json --summary $work/rect_within.json > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 0 ] && grep -q "ok      rectifier gates" "$work/check.out"; then echo "ok   synth_check rectifier within budget"
+else echo "FAIL synth_check rectifier within budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+for bad in '"rect_nand2_eq": 59000/"rect_nand2_eq": 60001/rectifier gates' \
+           '"rect_memory_kB": 4.0/"rect_memory_kB": 4.1/rectifier memory' \
+           '"rect_worst_slack_ns": 0.1/"rect_worst_slack_ns": -0.01/rectifier slack' \
+           '"rect_async_read_macros": 0/"rect_async_read_macros": 1/rectifier async-read'; do
+  from=${bad%%/*}; rest=${bad#*/}; to=${rest%%/*}; what=${rest#*/}
+  sed "s|$from|$to|" "$work/rect_within.json" > "$work/rect_over.json"
+  rc=0; "$py" "$driver" check --budget $work/budget_rect.json --summary $work/rect_over.json > "$work/check.out" 2>&1 || rc=$?
+  if [ "$rc" = 1 ] && grep -q "FAILED  $what" "$work/check.out" && [ "$(grep -c 'FAILED  ' "$work/check.out")" = 1 ]; then
+    echo "ok   synth_check $what over budget (exit 1)"
+  else echo "FAIL synth_check $what over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+done
 
 if [ "$fails" -ne 0 ]; then echo "bad_input: $fails case(s) failed"; exit 1; fi
 echo "bad_input: all cases passed"
