@@ -1,10 +1,10 @@
 """The rectifier (issue 32, rtl/rect/), mapped and timed apart from the engine
-(flow/synth.py, step 5b; reused when unchanged): the pass mcadsw_rect and the mark
-step mcadsw_rect_mark, each elaborated alone (flow/rect_elab.tcl), mapped exactly as
+(flow/synth.py, step 5b; reused when unchanged): the pass mcadsw_rect, the mark step
+mcadsw_rect_mark and the configuration check mcadsw_rect_check, each elaborated alone (flow/rect_elab.tcl), mapped exactly as
 an engine block is (flow/synth_block.tcl: memories as MCADSW_RAM macros, clock
 gating, OSU 0.18 um cells, ABC with the buffering script), prepared for OpenSTA as
 the engine's netlist is (flow/sta_netlist.tcl, a generated macro liberty) and timed
-alone at the SDC's clock (flow/sta_rect.tcl). The issue's budget is for the two
+alone at the SDC's clock (flow/sta_rect.tcl). The issue's budget is for them
 together: constraints/budget.json rect_nand2_eq_max, rect_memory_kB_max."""
 import json
 import re
@@ -15,7 +15,7 @@ from blocks import area_figures, block_outputs, read_table
 from flowlib import CON, FLOW, RAM_MODEL, ROOT, FlowError, indent, log, reusable, stamp_of, tail
 from sta import sta_netlist
 
-MODULES = ("mcadsw_rect", "mcadsw_rect_mark")
+MODULES = ("mcadsw_rect", "mcadsw_rect_mark", "mcadsw_rect_check")
 
 
 def rect_files():

@@ -2,7 +2,7 @@
 # macro liberty), at the SDC's clock with the engine's port budget: a fifth of the
 # period outside the block on each side of every input and output (as the SoC
 # wrapper's blocks, flow/sta_soc.tcl).
-# Environment: LIBERTY, OUT_DIR, PERIOD_NS, TOP (mcadsw_rect or mcadsw_rect_mark).
+# Environment: LIBERTY, OUT_DIR, PERIOD_NS, TOP (mcadsw_rect, mcadsw_rect_mark or mcadsw_rect_check).
 set out $::env(OUT_DIR)
 read_liberty $::env(LIBERTY)
 read_liberty $out/mcadsw_ram.lib

@@ -27,7 +27,7 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
      flow/sta_engine.tcl times it;
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
      (flow/soc.tcl) and timed alone (flow/sta_soc.tcl); the rectifier (rtl/rect/,
-     issue 32: mcadsw_rect and mcadsw_rect_mark) is mapped as a block and timed alone
+     issue 32: mcadsw_rect, mcadsw_rect_mark, mcadsw_rect_check) is mapped as a block and timed alone
      (flow/rect.py), its figures reported apart from the engine's;
   6. report.md and summary.json, written last (deleted at the start).
 
@@ -307,7 +307,7 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
           f"{soc_nand['mcadsw_regs']}, AXI4 master {soc_nand['mcadsw_axi_master']}, slack {soc_slack} ns) "
           f"{soc_total} NAND2 eq,")
     print(f"       worst slack {slack} ns (WNS {wns} ns) at {clock_mhz} MHz, achievable {fmax} MHz (paper 95 MHz)")
-    print(f"       rectifier apart (pass and mark step): {rect_nand} NAND2 eq, {kb(rect_bits)} kB, "
+    print(f"       rectifier apart (pass, mark step, check): {rect_nand} NAND2 eq, {kb(rect_bits)} kB, "
           f"worst slack {rect_slack} ns")
     log(f"report {out}/report.md, summary {out}/summary.json, netlist {netlist}")
     log(f"wall time {wall_s} s ({len(ran)} blocks synthesised, {len(cached)} reused); peak memory {proc_peak_mb} MB "

@@ -92,7 +92,8 @@ def render(s):
     if "rect" in s:
         r += ["", "## Rectifier (issue 32), apart from the engine", "",
               "The rectifier of `rtl/rect/` is not yet driven by the engine's frame controller: its pass",
-              "(`mcadsw_rect`) and its mark step (`mcadsw_rect_mark`) are each elaborated alone and mapped as an",
+              "(`mcadsw_rect`), mark step (`mcadsw_rect_mark`) and configuration check (`mcadsw_rect_check`) are",
+              "each elaborated alone and mapped as an",
               "engine block is (macros, clock gating, ABC), then timed alone at the engine's clock with a fifth",
               "of the period outside on each port (`flow/rect.py`, `rect/<module>/`). Issue 32's limits: 60 000",
               "NAND2 eq and 4 kB of on-chip memory, the engine's own budgets unchanged.", "",

@@ -225,6 +225,48 @@ TEST(Rectify, TileSourceByHand) {
   EXPECT_THROW(check_rect_footprints(steep, 400, 200), std::invalid_argument);
   EXPECT_NO_THROW(check_rect_footprints(steep, 40, 200)) << "clipped to a narrow raw view it fits";
   EXPECT_THROW(tile_source(id, 4, 0, 200, 200), std::invalid_argument);
+
+  // S = 32: a tile is half a cell row; its box is over its own top and bottom edges, the
+  // far edge the midpoint of the cell's two node rows (13.8).
+  const Mesh id32 = mesh_of(
+      100, 64, 5, [](int x, int) { return 32 * x; }, [](int, int y) { return 32 * y; });
+  t = tile_source(id32, 0, 0, 200, 200);  // rows 0..15 of cell row 0: v edges 0 and 512
+  EXPECT_EQ(t.node_j0, 0);
+  EXPECT_EQ(t.node_j1, 1);
+  EXPECT_EQ(t.vmin, 0);
+  EXPECT_EQ(t.vmax, 512);
+  EXPECT_EQ(t.y0, 0);
+  EXPECT_EQ(t.rows, 18);                  // 0 .. 17: pixel 16 and its lower tap (was 34)
+  EXPECT_EQ(t.cols, 34);                  // a whole cell column: 0 .. 33
+  t = tile_source(id32, 0, 1, 200, 200);  // rows 16..31: v edges 512 and 1024
+  EXPECT_EQ(t.vmin, 512);
+  EXPECT_EQ(t.vmax, 1024);
+  EXPECT_EQ(t.y0, 16);
+  EXPECT_EQ(t.rows, 18);                  // 16 .. 33
+  // An odd sum: the far edge's midpoint 1023 / 2 = 511.5 in 1/32 pixel, its ceiling 512.
+  const Mesh odd = mesh_of(
+      100, 64, 5, [](int x, int) { return 32 * x; }, [](int, int y) { return y == 32 ? 1023 : y == 64 ? 2046 : 0; });
+  t = tile_source(odd, 0, 0, 200, 200);
+  EXPECT_EQ(t.vmax, 512);
+  EXPECT_EQ(t.rows, 18);
+  t = tile_source(odd, 0, 1, 200, 200);   // edges 511.5 and 1023: floor 511, pixel 15
+  EXPECT_EQ(t.vmin, 511);
+  EXPECT_EQ(t.vmax, 1023);
+  EXPECT_EQ(t.y0, 15);
+  EXPECT_EQ(t.rows, 18);                  // 15 .. 32
+  // Every pixel's rounded position (13.2) of such tiles lies in the box.
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const TileSource ts = tile_source(odd, a, b, 200, 200);
+      for (int y = 16 * b; y < std::min(16 * b + 16, 64); ++y)
+        for (int x = 32 * a; x < std::min(32 * a + 32, 100); ++x) {
+          const auto p = mesh_position(odd, x, y);
+          EXPECT_GE(p.second, ts.vmin) << x << "," << y;
+          EXPECT_LE(p.second, ts.vmax) << x << "," << y;
+          EXPECT_GE(p.first, ts.umin) << x << "," << y;
+          EXPECT_LE(p.first, ts.umax) << x << "," << y;
+        }
+    }
 }
 
 // Calibration files (docs/algorithm.md 13.5): both forms give the meshes of the

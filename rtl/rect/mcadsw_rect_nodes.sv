@@ -76,7 +76,10 @@ module mcadsw_rect_nodes #(
   logic [1:0]    cj_q;                              // node row
   logic          v_q;                               // the next word is v
   logic          busy_q, fin_q;
-  logic signed [NB-1:0] umin_q, umax_q, vmin_q, vmax_q;
+  localparam int XB = NB + 1;                       // the box: 1/64 pixel
+  logic signed [XB-1:0] umin_q, umax_q, vmin_q, vmax_q;
+  logic          half_q;                            // the step is larger than the tile's height
+  logic          lower_q;                           // the tile is a cell row's lower half
   logic          range_q;
 
   logic signed [NB-1:0] val;
@@ -85,8 +88,35 @@ module mcadsw_rect_nodes #(
   assign word_ok = word_i[31:NB-1] == '0 || word_i[31:NB-1] == '1;
   logic last_word;
   assign last_word = v_q && ci_q == ncols_q - 3'd1 && cj_q == nrows_q - 2'd1;
-  logic first_node;                                 // the tile's first node: min and max start
-  assign first_node = ci_q == '0 && cj_q == '0;
+  // The box (docs/algorithm.md 13.8), in 1/64 pixel: twice each node; at a step larger
+  // than the tile's height (the tile is half a cell row) the node of the cell row's near
+  // edge twice, and at the other edge the midpoint of the node column's two nodes (their
+  // sum: the word's node and the column's row-0 node, stored). A word adds up to two
+  // candidates.
+  localparam logic signed [XB-1:0] BIG = {1'b0, {(XB - 1){1'b1}}};
+  localparam logic signed [XB-1:0] SMALL = {1'b1, {(XB - 1){1'b0}}};
+  logic signed [NB-1:0] near0;                      // the word's column's row-0 node
+  assign near0 = v_q ? node_v_o[32'(ci_q) * NB +: NB] : node_u_o[32'(ci_q) * NB +: NB];
+  logic take_dir, take_mid;
+  assign take_dir = !half_q || ((cj_q == 2'd0) != lower_q);
+  assign take_mid = half_q && cj_q == 2'd1;
+  logic signed [XB-1:0] c_dir, c_mid, lo_a, lo_b, hi_a, hi_b;
+  assign c_dir = {val, 1'b0};
+  assign c_mid = XB'(near0) + XB'(val);
+  assign lo_a = take_dir ? c_dir : BIG;
+  assign lo_b = take_mid ? c_mid : BIG;
+  assign hi_a = take_dir ? c_dir : SMALL;
+  assign hi_b = take_mid ? c_mid : SMALL;
+  function automatic logic signed [XB-1:0] smin3(input logic signed [XB-1:0] a, b, c);
+    logic signed [XB-1:0] m;
+    m = a < b ? a : b;
+    smin3 = m < c ? m : c;
+  endfunction
+  function automatic logic signed [XB-1:0] smax3(input logic signed [XB-1:0] a, b, c);
+    logic signed [XB-1:0] m;
+    m = a > b ? a : b;
+    smax3 = m > c ? m : c;
+  endfunction
 
   // Control (reset)
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -124,26 +154,32 @@ module mcadsw_rect_nodes #(
     if (start_i && !busy_q) begin
       rw_q <= raw_w_i; rh_q <= raw_h_i;
       node_i0_o <= i0; node_j0_o <= j0;
+      half_q <= 32'(1) << s > TH;
+      lower_q <= (32'(tile_y0_i) & ((32'(1) << s) - 1)) != 0;
+      umin_q <= BIG; vmin_q <= BIG; umax_q <= SMALL; vmax_q <= SMALL;
     end else if (busy_q && word_valid_i) begin
       if (v_q) begin
         node_v_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
-        if (first_node || val < vmin_q) vmin_q <= val;
-        if (first_node || val > vmax_q) vmax_q <= val;
+        vmin_q <= smin3(vmin_q, lo_a, lo_b);
+        vmax_q <= smax3(vmax_q, hi_a, hi_b);
       end else begin
         node_u_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
-        if (first_node || val < umin_q) umin_q <= val;
-        if (first_node || val > umax_q) umax_q <= val;
+        umin_q <= smin3(umin_q, lo_a, lo_b);
+        umax_q <= smax3(umax_q, hi_a, hi_b);
       end
     end
   end
 
   // ---- The source rectangle (registered a cycle after the last word) ------------------------
   localparam int PB = NB - FB + 1;                   // a pixel coordinate, signed, + 1 of headroom
-  logic signed [PB-1:0] uf, ut, vf, vt;               // floor(min), floor(max) + 1
-  assign uf = PB'(umin_q >>> FB);
-  assign ut = PB'(umax_q >>> FB) + PB'(1);
-  assign vf = PB'(vmin_q >>> FB);
-  assign vt = PB'(vmax_q >>> FB) + PB'(1);
+  logic signed [PB-1:0] uf, ut, vf, vt;               // floor(min), floor(max) + 1, pixels
+  logic signed [XB:0]   umax1, vmax1;                 // the largest, 1/64 pixel, + 1
+  assign umax1 = (XB + 1)'(umax_q) + (XB + 1)'(1);
+  assign vmax1 = (XB + 1)'(vmax_q) + (XB + 1)'(1);
+  assign uf = PB'(umin_q >>> (FB + 1));              // floor of the box's 1/32 pixel: >> 1
+  assign ut = PB'(umax1 >>> (FB + 1)) + PB'(1);      // ceiling: (x + 1) >> 1
+  assign vf = PB'(vmin_q >>> (FB + 1));
+  assign vt = PB'(vmax1 >>> (FB + 1)) + PB'(1);
   logic signed [PB:0] rwm1, rhm1, xf, xt, yf, yt;     // one more bit: raw sizes up to 2048
   assign rwm1 = (PB + 1)'({1'b0, rw_q}) - (PB + 1)'(1);
   assign rhm1 = (PB + 1)'({1'b0, rh_q}) - (PB + 1)'(1);

@@ -7,4 +7,5 @@ mcadsw_rect_nodes.sv
 mcadsw_rect_sample.sv
 mcadsw_rect_write.sv
 mcadsw_rect_mark.sv
+mcadsw_rect_check.sv
 mcadsw_rect.sv

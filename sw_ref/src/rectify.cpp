@@ -116,16 +116,34 @@ TileSource tile_source(const Mesh& m, int a, int b, int raw_w, int raw_h) {
   t.node_i1 = (xl >> m.step_log2) + 1;
   t.node_j0 = y_first >> m.step_log2;
   t.node_j1 = (yl >> m.step_log2) + 1;
-  t.umin = t.vmin = INT32_MAX;
-  t.umax = t.vmax = INT32_MIN;
+  // The box in 1/64 pixel (section 13.8): twice each node, except at a step larger
+  // than the tile's height, where the tile holds half a cell row and the box is over its
+  // top and bottom edges: a node of the cell row's near edge, and the midpoint of the
+  // node column's two nodes (their sum in 1/64 pixel) at the tile's other edge.
+  const bool half = (1 << m.step_log2) > kRectTileH;
+  const bool lower = half && (y_first & ((1 << m.step_log2) - 1)) != 0;  // the cell row's lower half
+  int64_t umin = INT64_MAX, umax = INT64_MIN, vmin = INT64_MAX, vmax = INT64_MIN;
+  auto take = [&](int64_t u64, int64_t v64) {
+    umin = std::min(umin, u64);
+    umax = std::max(umax, u64);
+    vmin = std::min(vmin, v64);
+    vmax = std::max(vmax, v64);
+  };
   for (int j = t.node_j0; j <= t.node_j1; ++j)
     for (int i = t.node_i0; i <= t.node_i1; ++i) {
       const size_t k = size_t(j) * size_t(m.nx) + size_t(i);
-      t.umin = std::min(t.umin, m.u[k]);
-      t.umax = std::max(t.umax, m.u[k]);
-      t.vmin = std::min(t.vmin, m.v[k]);
-      t.vmax = std::max(t.vmax, m.v[k]);
+      if (!half || (j == t.node_j0) == !lower) take(2 * int64_t(m.u[k]), 2 * int64_t(m.v[k]));
+      if (half && j == t.node_j1) {
+        const size_t k0 = size_t(t.node_j0) * size_t(m.nx) + size_t(i);
+        take(int64_t(m.u[k0]) + m.u[k], int64_t(m.v[k0]) + m.v[k]);
+      }
     }
+  // Floor of the smallest, ceiling of the largest, in 1/32 pixel: every rounded position
+  // (13.2, round half up) of a pixel of the tile lies between them.
+  t.umin = int32_t(umin >> 1);
+  t.umax = int32_t((umax + 1) >> 1);
+  t.vmin = int32_t(vmin >> 1);
+  t.vmax = int32_t((vmax + 1) >> 1);
   const int xf = std::max(0, t.umin >> kMeshFracBits), xt = std::min(raw_w - 1, (t.umax >> kMeshFracBits) + 1);
   const int yf = std::max(0, t.vmin >> kMeshFracBits), yt = std::min(raw_h - 1, (t.vmax >> kMeshFracBits) + 1);
   t.empty = xf > xt || yf > yt;
@@ -136,6 +154,51 @@ TileSource tile_source(const Mesh& m, int a, int b, int raw_w, int raw_h) {
     t.rows = yt - t.y0 + 1;
   }
   return t;
+}
+
+int rect_check(const RectCheck& c) {
+  // The regions of docs/architecture.md 3.10.2: base, bytes, enabled, kind (0 read,
+  // 1 write, 2 bitmap).
+  const int views = ((c.planes & 7) != 0 ? 1 : 0) | ((c.planes & 070) != 0 ? 2 : 0);
+  const uint64_t raw_size =
+      uint64_t(c.raw_stride) * uint64_t(c.tiled ? (c.raw_width + 3) / 4 : c.raw_height);
+  const uint64_t mesh_size = 8 * uint64_t(c.mesh_nx) * uint64_t(c.mesh_ny);
+  const uint64_t bm_size = 4 * uint64_t((c.width + 3) / 4) * uint64_t((c.height + 7) / 8);
+  struct Region {
+    uint64_t base, size;
+    bool en;
+    int kind;
+  };
+  std::vector<Region> r;
+  for (int p = 0; p < 6; ++p) r.push_back({c.raw_base[p], raw_size, (c.planes >> p & 1) != 0, 0});
+  for (int v = 0; v < 2; ++v) r.push_back({c.mesh_base[v], mesh_size, (views >> v & 1) != 0, 0});
+  for (int p = 0; p < 6; ++p) r.push_back({c.rect_base[p], c.rect_size, (c.planes >> p & 1) != 0, 1});
+  for (int v = 0; v < 2; ++v) r.push_back({c.valid_base[v], bm_size, (views >> v & 1) != 0, 2});
+  for (int k = 0; k < 4; ++k) r.push_back({c.out_base[k], c.out_size[k], (c.outs >> k & 1) != 0, 1});
+  bool align = false, overlap = false, beyond = false;
+  for (size_t i = 0; i < r.size(); ++i) {
+    if (!r[i].en) continue;
+    if (r[i].kind != 1) {  // the rectifier's own regions: raw planes, meshes, bitmaps
+      align = align || (r[i].base & 3) != 0;
+      beyond = beyond || r[i].base + r[i].size > (uint64_t(1) << 32);
+    }
+    for (size_t j = i + 1; j < r.size(); ++j)
+      if (r[j].en && !(r[i].kind == 0 && r[j].kind == 0) && !(r[i].kind == 1 && r[j].kind == 1))
+        overlap = overlap || (r[i].base < r[j].base + r[j].size && r[j].base < r[i].base + r[i].size);
+  }
+  const int s = c.step_log2;
+  const bool step_ok = s >= kMeshStepLog2Min && s <= kMeshStepLog2Max;
+  if (!step_ok) return 1;
+  const bool raw_bad = c.raw_width == 0 || c.raw_width > kMaxWidth || c.raw_height == 0 ||
+                       c.raw_height > kMaxHeight || (c.raw_stride & 3) != 0 ||
+                       (c.tiled ? uint64_t(c.raw_stride) < 4 * uint64_t(c.raw_height)
+                                : uint64_t(c.raw_stride) < uint64_t(c.raw_width));
+  if (raw_bad) return 2;
+  if (c.mesh_nx != ((c.width - 1) >> s) + 2 || c.mesh_ny != ((c.height - 1) >> s) + 2) return 3;
+  if (align) return 4;
+  if (overlap) return 5;
+  if (beyond) return 6;
+  return 0;
 }
 
 void check_rect_footprints(const Mesh& m, int raw_w, int raw_h) {

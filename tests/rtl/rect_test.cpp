@@ -263,17 +263,19 @@ TEST(Rect, FramesMatchTheReference) {
 // A bundled camera (B, the strong one, on the Teddy CIF crop) at S = 16, the raw mode's
 // planes (LY LU LV RY), zero latency, every request granted: bit-exact, and the cycles
 // and the reads a byte written, printed (docs/architecture.md 3.10.7). Column-tiled, as the
-// DDR-like bar's input.
+// DDR-like bar's input. Then at S = 32 (raster), whose tiles fit since their box is over
+// their own edges (docs/algorithm.md 13.8): every tap of every pixel in the loaded rectangle.
 TEST(Rect, BundledCameraCif) {
   const std::string dir = std::string(MCADSW_DATA_DIR) + "/raw/B/cif/teddy/";
   const StereoRectification cal = read_calibration(dir + "calib.yml");
   Frame f;
   f.w = f.rw = cal.size.width;
   f.h = f.rh = cal.size.height;
-  f.s = 4;
   f.planes = 0x0f;
   std::mt19937 rng(5);
-  for (const bool tiled : {false, true}) {
+  const std::pair<int, bool> runs[] = {{4, false}, {4, true}, {5, false}};  // (log2 S, tiled)
+  for (const auto& [step, tiled] : runs) {
+    f.s = step;
     f.lay.tiled = tiled;
     f.lay.raw_stride = f.lay.stride = tiled ? 4u * uint32_t(f.h) : uint32_t(f.w);
     const auto meshes = meshes_from_rectification(cal, f.w, f.h, f.s);
@@ -285,9 +287,9 @@ TEST(Rect, BundledCameraCif) {
     ASSERT_EQ(r.err, 0);
     ASSERT_EQ(compare(f, r), "");
     const long px = 4L * f.w * f.h;
-    std::printf("camera B, CIF, S = 16, LY LU LV RY, %s, zero latency: %ld cycles (%.3f a pixel), %.2f bytes read "
+    std::printf("camera B, CIF, S = %d, LY LU LV RY, %s, zero latency: %ld cycles (%.3f a pixel), %.2f bytes read "
                 "a byte written\n",
-                tiled ? "column-tiled" : "raster", r.cycles, double(r.cycles) / double(px),
+                1 << step, tiled ? "column-tiled" : "raster", r.cycles, double(r.cycles) / double(px),
                 4.0 * double(r.reads) / double(px));
   }
 }

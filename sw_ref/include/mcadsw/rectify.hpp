@@ -38,11 +38,12 @@ void check_mesh(const Mesh& mesh);
 std::pair<int32_t, int32_t> mesh_position(const Mesh& mesh, int x, int y);
 
 // The engine's limit (section 13.8): the source rectangle of output tile (a, b) of
-// kRectTileW x kRectTileH pixels, from the bounding box of the tile's nodes, in a raw
+// kRectTileW x kRectTileH pixels, from the bounding box of the tile's nodes (at a step
+// larger than the tile's height, of its top and bottom edges interpolated), in a raw
 // view of raw_w x raw_h. x0 is word-aligned; cols and rows count from (x0, y0).
 struct TileSource {
   int node_i0 = 0, node_i1 = 0, node_j0 = 0, node_j1 = 0;  // the tile's nodes, inclusive
-  int32_t umin = 0, umax = 0, vmin = 0, vmax = 0;          // their bounding box, 1/32 pixel
+  int32_t umin = 0, umax = 0, vmin = 0, vmax = 0;          // the box, 1/32 pixel (13.8)
   bool empty = false;                                      // wholly outside the raw view
   int x0 = 0, y0 = 0, cols = 0, rows = 0;                  // the rectangle (when not empty)
   bool fits() const;                                       // empty, or cols <= 64 and rows <= 32
@@ -51,6 +52,28 @@ TileSource tile_source(const Mesh& mesh, int tile_a, int tile_b, int raw_w, int 
 // Throws std::invalid_argument naming the first tile (row by row) whose source
 // rectangle does not fit the engine's tile buffer.
 void check_rect_footprints(const Mesh& mesh, int raw_w, int raw_h);
+
+// The check of the rectification's configuration (docs/architecture.md 3.10.2, register
+// map 1.2 codes 16..21 = 15 + the result; rtl/rect/mcadsw_rect_check.sv): 0, or the first
+// failing check: 1 step, 2 raw size, 3 mesh size, 4 align, 5 overlap, 6 beyond. Regions
+// 0..5 raw planes, 6..7 meshes (read), 8..13 rectified planes, 16..19 output planes
+// (written), 14..15 validity bitmaps; sizes exact in 64 bits.
+struct RectCheck {
+  int step_log2 = 4;
+  int width = 0, height = 0;             // the rectified frame (the engine's, 1 .. 2048)
+  int raw_width = 0, raw_height = 0;     // 0 .. 4095 (RAW_SIZE's 12-bit fields)
+  uint32_t raw_stride = 0;
+  bool tiled = false;                    // TILE_STRIDE not 0: raw planes column-tiled too
+  int planes = 0;                        // bit p: plane p (LY LU LV RY RU RV) rectified
+  uint32_t raw_base[6] = {}, rect_base[6] = {};
+  uint64_t rect_size = 0;                // bytes of a rectified plane (the engine's input plane)
+  uint32_t mesh_base[2] = {}, valid_base[2] = {};
+  int mesh_nx = 0, mesh_ny = 0;          // MESH_NODES, 0 .. 4095
+  uint32_t out_base[4] = {};
+  uint64_t out_size[4] = {};
+  int outs = 0;                          // bit k: output plane k written by the mode
+};
+int rect_check(const RectCheck& c);
 
 // The rectified view (section 13.3): every plane of `raw` sampled at the mesh's
 // positions; valid (1) where the position lies inside the raw view, else 0 and
