@@ -4,7 +4,7 @@ mcadsw_rect_mark and the configuration check mcadsw_rect_check, each elaborated 
 an engine block is (flow/synth_block.tcl: memories as MCADSW_RAM macros, clock
 gating, OSU 0.18 um cells, ABC with the buffering script), prepared for OpenSTA as
 the engine's netlist is (flow/sta_netlist.tcl, a generated macro liberty) and timed
-alone at the SDC's clock (flow/sta_rect.tcl). The issue's budget is for them
+alone at the SDC's clock (flow/sta_alone.tcl, as the SoC wrapper's blocks). The issue's budget is for them
 together: constraints/budget.json rect_nand2_eq_max, rect_memory_kB_max."""
 import json
 import re
@@ -33,7 +33,7 @@ def synth_rect(run, out, rtl, pkg, pkg_text, yosys, yosys_version, lib, period_n
     top_dir.mkdir(exist_ok=True)
     files = rect_files()
     flow_files = [FLOW / "rect.py", FLOW / "rect_elab.tcl", FLOW / "synth_block.tcl", FLOW / "clock_gate.py",
-                  FLOW / "sta_netlist.tcl", FLOW / "sta_rect.tcl", FLOW / "sta.py", CON / "macro_map.v",
+                  FLOW / "sta_netlist.tcl", FLOW / "sta_alone.tcl", FLOW / "sta.py", CON / "macro_map.v",
                   CON / "abc_osu018.constr", CON / "abc_osu018.script", CON / "mcadsw_ram_timing.cfg",
                   RAM_MODEL, Path(lib)]
     res = {}
@@ -76,9 +76,10 @@ def synth_rect(run, out, rtl, pkg, pkg_text, yosys, yosys_version, lib, period_n
                 raise FlowError(f"preparing the STA netlist of {m} failed (log: {d}/sta_netlist.log)")
             sta_netlist(d / "flat.v", d, CON / "mcadsw_ram_timing.cfg", top=m)
             (d / "flat.v").unlink()
-            rc, _, _ = run.run(["sta", "-no_splash", "-exit", str(FLOW / "sta_rect.tcl")],
+            rc, _, _ = run.run(["sta", "-no_splash", "-exit", str(FLOW / "sta_alone.tcl")],
                                out_path=d / "sta.log", err_path=d / "sta.err",
-                               env={"LIBERTY": lib, "OUT_DIR": str(d), "PERIOD_NS": period_ns, "TOP": m})
+                               env={"LIBERTY": lib, "RAM_LIB": str(d / "mcadsw_ram.lib"),
+                                    "NETLIST": str(d / f"{m}_sta.v"), "MODULE": m, "PERIOD_NS": period_ns})
             slog = (d / "sta.log").read_text(errors="replace")
             if rc != 0 or not re.search(r"^worst slack", slog, re.M):
                 sys.stderr.write(indent(slog.splitlines()[-20:] + tail(d / "sta.err", 5)))

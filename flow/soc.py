@@ -1,6 +1,6 @@
 """The SoC wrapper around the engine (mcadsw_top: the AXI4-Lite register block
 and the AXI4 master), mapped alone by flow/soc.tcl and timed by
-flow/sta_soc.tcl (flow/synth.py, step 5; about 20 s, reused when unchanged)."""
+flow/sta_alone.tcl (flow/synth.py, step 5; about 20 s, reused when unchanged)."""
 import re
 import sys
 from pathlib import Path
@@ -19,7 +19,7 @@ def synth_soc(run, out, rtl, pkg, pkg_text, dmax, par, yosys, yosys_version, lib
     soc_nand, soc_slack = {}, None
     socs = MODULES
     soc_stamp = stamp_of(yosys_version, pkg_text, f"DMAX {dmax} PAR {par} period {period_ns}\n",
-                         *[rtl / f"{m}.sv" for m in socs], FLOW / "soc.tcl", FLOW / "sta_soc.tcl",
+                         *[rtl / f"{m}.sv" for m in socs], FLOW / "soc.tcl", FLOW / "sta_alone.tcl",
                          CON / "abc_osu018.constr", CON / "abc_osu018.script", Path(lib))
     soc_reused = reusable(soc / "stamp", soc_stamp, [soc / f for m in socs
                                                      for f in (f"{m}_area.txt", f"{m}.v", f"sta_{m}.log")])
@@ -36,7 +36,7 @@ def synth_soc(run, out, rtl, pkg, pkg_text, dmax, par, yosys, yosys_version, lib
             sys.stderr.write(indent(tail(soc / "yosys.log", 10)))
             raise FlowError(f"the SoC wrapper's synthesis failed (log: {soc}/yosys.log)", 2)
         for m in socs:
-            rc, _, _ = run.run(["sta", "-no_splash", "-exit", str(FLOW / "sta_soc.tcl")],
+            rc, _, _ = run.run(["sta", "-no_splash", "-exit", str(FLOW / "sta_alone.tcl")],
                                out_path=soc / f"sta_{m}.log", err_path=soc / f"sta_{m}.err",
                                env={"LIBERTY": lib, "NETLIST": str(soc / f"{m}.v"), "MODULE": m,
                                     "PERIOD_NS": period_ns})

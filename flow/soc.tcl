@@ -1,7 +1,7 @@
 # The SoC wrapper's own logic (mcadsw_top's AXI4-Lite register block mcadsw_regs
 # and AXI4 master mcadsw_axi_master), each flattened and mapped as the engine's
 # blocks are (flow/synth_block.tcl: OSU 0.18 um flip-flops, ABC with the buffering
-# script and -constr), then prepared for OpenSTA (flow/sta_soc.tcl times each alone).
+# script and -constr), then prepared for OpenSTA (flow/sta_alone.tcl times each alone).
 # One Yosys process for both, as they have always run (ABC's result depends on the
 # names Yosys has handed out before).
 # Environment: PKG, RTL_DIR (the modules' folder), DMAX, PAR, OUT_DIR, PERIOD_PS,

@@ -26,7 +26,7 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
   4. flow/sta_netlist.tcl and a macro liberty prepare it for OpenSTA,
      flow/sta_engine.tcl times it;
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
-     (flow/soc.tcl) and timed alone (flow/sta_soc.tcl); the rectifier (rtl/rect/,
+     (flow/soc.tcl) and timed alone (flow/sta_alone.tcl); the rectifier (rtl/rect/,
      issue 32: mcadsw_rect, mcadsw_rect_mark, mcadsw_rect_check) is mapped as a block and timed alone
      (flow/rect.py), its figures reported apart from the engine's;
   6. report.md and summary.json, written last (deleted at the start).

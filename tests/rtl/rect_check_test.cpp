@@ -152,13 +152,23 @@ void break_one(RectCheck& c, std::mt19937& rng) {
   }
 }
 
-TEST(RectCheck, ResultsMatchTheReference) {
-  sim::random_initial_values(7);
+struct RandomInitialValues {
+  RandomInitialValues() { sim::random_initial_values(7); }
+};
+
+// A model after reset; its flip-flops without a reset start at random values.
+class RectCheckTest : public ::testing::Test, private RandomInitialValues {  // before the model
+ protected:
+  void SetUp() override {
+    t.rst_ni = 0;
+    t.start_i = 0;
+    sim::tick(t);
+    t.rst_ni = 1;
+  }
   Vrect_check t;
-  t.rst_ni = 0;
-  t.start_i = 0;
-  sim::tick(t);
-  t.rst_ni = 1;
+};
+
+TEST_F(RectCheckTest, ResultsMatchTheReference) {
   std::mt19937 rng(3301);
   int seen[7][2] = {};  // per check (0: none failed), [reference result == k]
   long runs = 0, cycles = 0;
@@ -185,13 +195,7 @@ TEST(RectCheck, ResultsMatchTheReference) {
 // By hand: the sizes the block multiplies out (a raw plane raster and tiled, the mesh,
 // the bitmap) decide an overlap to the byte, and a region that ends exactly at 2^32
 // is inside the space.
-TEST(RectCheck, SizesToTheByte) {
-  sim::random_initial_values(8);
-  Vrect_check t;
-  t.rst_ni = 0;
-  t.start_i = 0;
-  sim::tick(t);
-  t.rst_ni = 1;
+TEST_F(RectCheckTest, SizesToTheByte) {
   RectCheck c;
   c.step_log2 = 4;
   c.width = 100;

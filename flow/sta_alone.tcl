@@ -1,13 +1,14 @@
-# OpenSTA on the rectifier alone (flow/rect.py prepared <TOP>_sta.v and the
-# macro liberty), at the SDC's clock with the engine's port budget: a fifth of the
-# period outside the block on each side of every input and output (as the SoC
-# wrapper's blocks, flow/sta_soc.tcl).
-# Environment: LIBERTY, OUT_DIR, PERIOD_NS, TOP (mcadsw_rect, mcadsw_rect_mark or mcadsw_rect_check).
-set out $::env(OUT_DIR)
+# OpenSTA on one block alone, at the SDC's clock with the engine's port budget: a fifth
+# of the period outside the block on each side of every input and output. Used for the
+# SoC wrapper's blocks (flow/soc.py: mcadsw_regs, mcadsw_axi_master) and the rectifier's
+# (flow/rect.py: mcadsw_rect, mcadsw_rect_mark, mcadsw_rect_check), each prepared as its
+# caller says.
+# Environment: LIBERTY, NETLIST, MODULE, PERIOD_NS; RAM_LIB (optional: the liberty of the
+# block's memory macros, flow/sta.py).
 read_liberty $::env(LIBERTY)
-read_liberty $out/mcadsw_ram.lib
-read_verilog $out/$::env(TOP)_sta.v
-link_design $::env(TOP)
+if {[info exists ::env(RAM_LIB)]} { read_liberty $::env(RAM_LIB) }
+read_verilog $::env(NETLIST)
+link_design $::env(MODULE)
 set period $::env(PERIOD_NS)
 create_clock -name clk -period $period [get_ports clk_i]
 set_clock_uncertainty 0.25 [get_clocks clk]
@@ -21,7 +22,8 @@ set_load 0.05 [all_outputs]
 set_false_path -from [get_ports rst_ni]
 # A clock gate's enable must settle before its latch opens (half a period after the
 # edge), as every enable of the engine does: no time borrowed through a gate's latch
-# (OpenSTA would otherwise report such a path with slack 0).
+# (OpenSTA would otherwise report such a path with slack 0). Blocks without clock gates
+# (the SoC wrapper's) have no such pins.
 set gate_latches [get_pins -quiet clock_gate_*_latch/D]
 if {[llength $gate_latches] > 0} { set_max_time_borrow 0 $gate_latches }
 report_checks -path_delay max -digits 3 -fields {fanout cap slew}
