@@ -9,7 +9,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root/rtl"
 pkg=mcadsw_pkg.sv
-mapfile -t mods < <("$root/scripts/rtl_files.sh" --no-pkg . | sed 's|^\./||')
+list=$("$root/scripts/rtl_files.sh" --no-pkg .) || { echo "rtl_check: scripts/rtl_files.sh failed" >&2; exit 1; }
+mapfile -t mods <<< "${list//.\//}"
 # The list is the one every tool reads: a source file it does not name is an error.
 for f in *.sv; do
   printf '%s\n' "$pkg" "${mods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
@@ -17,7 +18,12 @@ done
 # The rectifier, beside the engine until its pass goes in (rtl/rect/rect.f: its package
 # first); checked like the engine's modules, with the engine's files.
 rpkg=rect/mcadsw_rect_pkg.sv
-mapfile -t rmods < <(sed -e 's://.*$::' -e 's/[[:space:]]*$//' rect/rect.f | grep -v '^$' | sed 's|^|rect/|' | grep -vx "$rpkg")
+rmods=()
+while IFS= read -r line || [ -n "$line" ]; do    # bash alone, as scripts/rtl_files.sh
+  line=${line%%//*}
+  line=${line%"${line##*[![:space:]]}"}
+  [ -n "$line" ] && [ "rect/$line" != "$rpkg" ] && rmods+=("rect/$line")
+done < rect/rect.f
 for f in rect/*.sv; do
   printf '%s\n' "$rpkg" "${rmods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/rect/rect.f" >&2; exit 1; }
 done

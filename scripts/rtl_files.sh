@@ -7,5 +7,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 nopkg=0
 if [ "${1:-}" = --no-pkg ]; then nopkg=1; shift; fi
 dir=${1:-$root/rtl}
-sed -e 's://.*$::' -e 's/[[:space:]]*$//' "$root/rtl/mcadsw.f" | grep -v '^$' |
-  { if [ $nopkg = 1 ]; then grep -vx 'mcadsw_pkg.sv'; else cat; fi; } | sed "s|^|$dir/|"
+# Bash alone (no pipeline of sed and grep): a reader of this list sees all of it or an
+# error, never a list cut short (rtl_check once failed on a list that ended after five
+# files, 2026-11-26, cause not found).
+while IFS= read -r line || [ -n "$line" ]; do
+  line=${line%%//*}                                  # comment
+  line=${line%"${line##*[![:space:]]}"}              # trailing white space
+  [ -n "$line" ] || continue
+  [ $nopkg = 1 ] && [ "$line" = mcadsw_pkg.sv ] && continue
+  printf '%s/%s\n' "$dir" "$line"
+done < "$root/rtl/mcadsw.f"
