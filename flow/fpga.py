@@ -36,7 +36,7 @@ def fpga(a):
     try:
         rc, _, _ = run.run([a.yosys, "-q", "-l", str(out / "yosys.log"), "-c", str(FLOW / "fpga.tcl")],
                            err_path=out / "yosys.err",
-                           env={"PKG": str(pkg), "TOP": a.top, "OUT_DIR": str(out),
+                           env={"PKG": str(pkg), "TOP": a.top, "OUT_DIR": str(out), "RTL_DIR": str(rtl),
                                 "RTL_MODULES": " ".join(str(rtl / f) for f in rtl_list(no_pkg=True))})
     finally:
         run.stop()

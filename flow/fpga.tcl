@@ -3,9 +3,10 @@
 # core, so no I/O buffers or clock buffer) to LUTs, flip-flops, block RAMs, LUT
 # RAMs and DSP48E1s; the cell counts go to OUT_DIR/stat.txt.
 # Environment: PKG (the configuration's package), RTL_MODULES (module files,
-# space-separated), TOP, OUT_DIR.
+# space-separated), RTL_DIR (the RTL folder: the `include of mcadsw_assert.svh from
+# rtl/rect/ is found there), TOP, OUT_DIR.
 set top $::env(TOP)
-yosys read_verilog -sv -D SYNTHESIS $::env(PKG) {*}$::env(RTL_MODULES)
+yosys read_verilog -sv -D SYNTHESIS -I$::env(RTL_DIR) $::env(PKG) {*}$::env(RTL_MODULES)
 yosys hierarchy -check -top $top
 yosys synth_xilinx -family xc7 -top $top -noiopad -noclkbuf
 yosys tee -o $::env(OUT_DIR)/stat.txt stat

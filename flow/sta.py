@@ -187,10 +187,11 @@ def run_sta(run, out, yosys, lib, sdc, netlist):
 
 
 
-def read_sta(out):
+def read_sta(out, instances=()):
     """The figures of OpenSTA's logs in out: wns and worst slack (ns), the critical
-    path, the nets of the crossing check (slowest first) and the violating
-    endpoints per block instance."""
+    path, the nets of the crossing check (slowest first), the violating
+    endpoints per block instance, and for each top-level instance named in
+    instances (u_rect, ...) its endpoints and their worst slack (endpoint_slack)."""
     sta_log = (out / "sta.log").read_text(errors="replace")
 
     def first(pattern, text, field):
@@ -219,15 +220,38 @@ def read_sta(out):
     crossing.sort(key=lambda c: -c[4])
     cross_worst = float(f"{crossing[0][4]:.3f}") if crossing else 0
     cross_slow = sum(1 for c in crossing if c[4] > 0.5)
-    # Violating endpoints per block instance (the instance path's first component).
-    viol = {}
-    for line in (out / "sta_endpoints.log").read_text(errors="replace").splitlines():
-        if "VIOLATED" in line:
-            w = line.split()
+    viol, inst = endpoint_slack(out / "sta_endpoints.log", instances)
+    return {"wns": wns, "slack": slack, "crit": (crit_start, crit_end, crit_arrival), "crossing": crossing,
+            "cross_worst": cross_worst, "cross_slow": cross_slow, "viol": viol, "endpoint_slack": inst}
+
+
+def endpoint_slack(path, instances=()):
+    """Every endpoint of flow/sta_engine.tcl's sta_endpoints.log (report_checks
+    -format end: `<endpoint> (<cell>) <required> <actual> <slack> (MET|VIOLATED)`,
+    every path group, the clock gates' checks included). The STA netlist is
+    flattened: a cell of a block instance is named <instance>.<cell of the block>
+    (u_post._15412_/D, u_post.clock_gate_0_and/B), the top's own cells _<n>_ and
+    ports by their names. Returns (violating endpoints per block instance: {the
+    name's first component, "top" for the top's cells: (count, worst slack)}, and
+    for each name of instances: {instance: (endpoints, worst slack or None when
+    the log has none of it)})."""
+    viol, inst = {}, {i: (0, None) for i in instances}
+    for line in Path(path).read_text(errors="replace").splitlines():
+        w = line.split()
+        if len(w) < 6 or w[-1] not in ("(MET)", "(VIOLATED)"):
+            continue
+        try:
+            s = float(w[-2])
+        except ValueError:
+            continue
+        for i in instances:
+            if w[0].startswith(i + "."):
+                n, worst = inst[i]
+                inst[i] = (n + 1, s if worst is None or s < worst else worst)
+        if w[-1] == "(VIOLATED)":
+            # Per block instance: the instance path's first component.
             bl = re.sub(r"\[.*", "", w[0].split(".")[0])
             bl = "top" if bl.startswith("_") else bl
             n, worst = viol.get(bl, (0, None))
-            s = float(w[-2])
             viol[bl] = (n + 1, s if worst is None or s < worst else worst)
-    return {"wns": wns, "slack": slack, "crit": (crit_start, crit_end, crit_arrival), "crossing": crossing,
-            "cross_worst": cross_worst, "cross_slow": cross_slow, "viol": viol}
+    return viol, inst

@@ -1,8 +1,7 @@
 # OpenSTA on one block alone, at the SDC's clock with the engine's port budget: a fifth
 # of the period outside the block on each side of every input and output. Used for the
-# SoC wrapper's blocks (flow/soc.py: mcadsw_regs, mcadsw_axi_master) and the rectifier's
-# (flow/rect.py: mcadsw_rect, mcadsw_rect_mark, mcadsw_rect_check), each prepared as its
-# caller says.
+# SoC wrapper's blocks (flow/soc.py: mcadsw_regs, mcadsw_axi_master). (The rectifier,
+# inside the engine, is timed with it: flow/sta_engine.tcl.)
 # Environment: LIBERTY, NETLIST, MODULE, PERIOD_NS; RAM_LIB (optional: the liberty of the
 # block's memory macros, flow/sta.py).
 read_liberty $::env(LIBERTY)

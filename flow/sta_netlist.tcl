@@ -2,8 +2,7 @@
 # to bits, wire-to-wire assigns replaced by BUFX2. Every instantiated module must be
 # defined, a cell or a macro, with matching port widths (hierarchy -check; a
 # resized port is an error flow/synth.py finds in the log).
-# Environment: RAM_MODEL, LIBERTY, NETLIST, OUT_V; TOP (default mcadsw_engine; the
-# rectifier, timed apart, is mcadsw_rect).
+# Environment: RAM_MODEL, LIBERTY, NETLIST, OUT_V; TOP (optional, default mcadsw_engine).
 yosys read_verilog -lib $::env(RAM_MODEL)
 yosys read_liberty -lib $::env(LIBERTY)
 yosys read_verilog $::env(NETLIST)

@@ -26,10 +26,14 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
   4. flow/sta_netlist.tcl and a macro liberty prepare it for OpenSTA,
      flow/sta_engine.tcl times it;
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
-     (flow/soc.tcl) and timed alone (flow/sta_alone.tcl); the rectifier (rtl/rect/,
-     issue 32: mcadsw_rect, mcadsw_rect_mark, mcadsw_rect_check) is mapped as a block and timed alone
-     (flow/rect.py), its figures reported apart from the engine's;
-  6. report.md and summary.json, written last (deleted at the start).
+     (flow/soc.tcl) and timed alone (flow/sta_alone.tcl);
+  6. report.md and summary.json, written last (deleted at the start). The
+     rectifier (rtl/rect/, issue 32: the engine's blocks u_rect, u_rect_mark,
+     u_rect_check, group "rectifier" of flow/blocks.py) is mapped and timed in
+     steps 2 to 4 as every block is, and reported apart: its gates, flip-flops and
+     memory are the rect_* figures, not in the engine's (nand2_eq, flip_flops,
+     memory_kB_engine, soc_total_nand2_eq); its worst slack is the worst of the
+     endpoints inside its instances in sta_endpoints.log.
 
   flow/synth.py synth [--dmax N] [--par P] [--out DIR] [--jobs N] [--mem-mb MB]
   flow/synth.py check [--summary FILE] [--budget FILE]   (make synth-check)
@@ -56,7 +60,6 @@ import synth_report
 from fpga import fpga
 from flowlib import (CON, FLOW, LIBERTY, PREFIX, RAM_MODEL, ROOT, FlowError, Run, default_out, gen_package, indent,
                      log, reusable, rtl_list, stamp_of, tail)
-from rect import synth_rect
 from soc import synth_soc
 from synth_check import check
 
@@ -174,7 +177,8 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         stanet_mb, sta_mb = sta.run_sta(run, out, yosys, lib, sdc, netlist)
         (out / "sta.stamp").write_text(sta_stamp + "\n")
     sta_s = int(time.time() - sta_start)
-    t = sta.read_sta(out)
+    rect_insts = [i for b in blocks if blk.group_of(b) == blk.RECT_GROUP for i in b["instance_names"]]
+    t = sta.read_sta(out, rect_insts)
     wns, slack, crossing, viol = t["wns"], t["slack"], t["crossing"], t["viol"]
     crit_start, crit_end, crit_arrival = t["crit"]
     cross_worst, cross_slow = t["cross_worst"], t["cross_slow"]
@@ -183,17 +187,13 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
     soc_nand, soc_slack = synth_soc(run, out, rtl, pkg, pkg_text, dmax, par, yosys, yosys_version, lib, period_ns,
                                     period_ps, nand2_area)
 
-    # ---- (5b) The rectifier, mapped and timed apart (not yet in the engine) ----
-    rect = synth_rect(run, out, rtl, pkg, pkg_text, yosys, yosys_version, lib, period_ns, period_ps, nand2_area,
-                      gate_min)
-    rect_nand = sum(r["nand2_eq"] for r in rect.values())
-    rect_bits = sum(r["memory_bits"] for r in rect.values())
-    rect_slack = min(r["worst_slack_ns"] for r in rect.values())
-
     # ---- (6) Figures ----
     # Per block: NAND2 eq (the module's own `stat -liberty` area / NAND2X1 area),
     # flip-flops, memory bits, Yosys time and peak; instances multiply a block's
-    # figures into the totals. Fig. 16 group of each block.
+    # figures into the totals. Fig. 16 group of each block; the rectifier's group
+    # is reported apart (its rect_* figures) and kept out of the engine's totals.
+    # (The rectifier's runs apart of earlier versions of this flow, rect/, are stale.)
+    shutil.rmtree(out / "rect", ignore_errors=True)
     memories, registers = [], []
     for b in blocks:
         d = out / "blocks" / b["label"]
@@ -205,18 +205,25 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
                                                     cg.get("kept_enable_flops", 0))
         mems = blk.read_table(d / "memories.txt")
         b["mem"] = sum(int(m[4]) for m in mems)
+        b["macros"], b["async"] = len(mems), sum(1 for m in mems if m[7] != "sync")
         b["group"] = blk.group_of(b)
         for _ in range(b["instances"]):
             memories += [[b["module"]] + m[1:] for m in mems]
             registers += [[b["module"]] + r[1:] for r in blk.read_table(d / "registers.txt")]
     (out / "memories.txt").write_text("".join(" ".join(m) + "\n" for m in memories))
     (out / "registers.txt").write_text("".join(" ".join(r) + "\n" for r in registers))
-    nand2_total = sum(b["instances"] * b["nand2"] for b in blocks)
-    ff_count = sum(b["instances"] * b["ff"] for b in blocks)
+    rect_blocks = [b for b in blocks if b["group"] == blk.RECT_GROUP]
+    eng_blocks = [b for b in blocks if b["group"] != blk.RECT_GROUP]
+    rect_modules = {b["module"] for b in rect_blocks}
+    # The engine's gates and flip-flops: every block but the rectifier's.
+    nand2_total = sum(b["instances"] * b["nand2"] for b in eng_blocks)
+    ff_count = sum(b["instances"] * b["ff"] for b in eng_blocks)
     soc_total = nand2_total + soc_nand["mcadsw_regs"] + soc_nand["mcadsw_axi_master"]
+    # Every macro of the netlist (the rectifier's included); the engine's without the
+    # post stage and the rectifier below (memory_kB_engine).
     mem_bits = sum(int(m[4]) for m in memories)
     async_count = sum(1 for m in memories if m[7] != "sync")
-    reg_bits = sum(int(r[2]) for r in registers)
+    reg_bits = sum(int(r[2]) for r in registers if r[0] not in rect_modules)
 
     def kb(bits):
         return float(f"{bits / 8 / 1024:.1f}")
@@ -224,7 +231,28 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
     # (the budget's memory) are those without it.
     post_nand2 = sum(b["instances"] * b["nand2"] for b in blocks if b["group"] == "post_stage")
     post_bits = sum(b["instances"] * b["mem"] for b in blocks if b["group"] == "post_stage")
-    eng_bits = mem_bits - post_bits
+    # The rectifier (issue 32), inside the engine, reported apart with its own budget
+    # (constraints/budget.json rect_*): per module (the block's figures, its
+    # instances' worst endpoint slack in the engine's STA), and together.
+    rect = {}
+    for b in rect_blocks:
+        sl = [t["endpoint_slack"][i] for i in b["instance_names"]]
+        missing = [i for i, (n, _) in zip(b["instance_names"], sl) if n == 0]
+        if missing:
+            sys.stderr.write(f"synth: warning: no endpoint of {' '.join(missing)} in {out}/sta_endpoints.log; "
+                             f"the rectifier's worst slack is left out (null)\n")
+        rect[b["module"]] = {"instances": b["instances"], "instance_names": b["instance_names"],
+                             "nand2_eq": b["nand2"], "flip_flops": b["ff"], "memory_bits": b["mem"],
+                             "memory_macros": b["macros"], "async_read_macros": b["async"],
+                             "worst_slack_ns": None if missing or not sl else min(w for _, w in sl),
+                             "endpoints": sum(n for n, _ in sl), "gated_flip_flops": b["gated"]}
+    rect_nand = sum(b["instances"] * b["nand2"] for b in rect_blocks)
+    rect_ff = sum(b["instances"] * b["ff"] for b in rect_blocks)
+    rect_bits = sum(b["instances"] * b["mem"] for b in rect_blocks)
+    rect_async = sum(b["instances"] * b["async"] for b in rect_blocks)
+    rect_slacks = [r["worst_slack_ns"] for r in rect.values()]
+    rect_slack = min(rect_slacks) if rect_slacks and None not in rect_slacks else None
+    eng_bits = mem_bits - post_bits - rect_bits
     fmax = float(f"{1000 / (float(period_ns) - slack):.1f}")
     groups = {}
     for b in blocks:
@@ -261,9 +289,11 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
         "memory_kB": kb(mem_bits), "memory_macros": len(memories),
         "soc_regs_nand2_eq": soc_nand["mcadsw_regs"], "soc_axi_master_nand2_eq": soc_nand["mcadsw_axi_master"],
         "soc_total_nand2_eq": soc_total, "soc_worst_slack_ns": soc_slack,
-        "rect_nand2_eq": rect_nand, "rect_memory_bits": rect_bits, "rect_memory_kB": kb(rect_bits),
-        "rect_worst_slack_ns": rect_slack,
-        "rect_async_read_macros": sum(r["async_read_macros"] for r in rect.values()), "rect": rect,
+        "rect_nand2_eq": rect_nand, "rect_flip_flops": rect_ff,
+        "rect_gated_flip_flops": sum(b["instances"] * b["gated"] for b in rect_blocks),
+        "rect_memory_bits": rect_bits, "rect_memory_kB": kb(rect_bits),
+        "rect_memory_macros": sum(b["instances"] * b["macros"] for b in rect_blocks),
+        "rect_worst_slack_ns": rect_slack, "rect_async_read_macros": rect_async, "rect": rect,
         "memory_kB_engine": kb(eng_bits), "post_stage_nand2_eq": post_nand2, "post_stage_memory_bits": post_bits,
         "post_stage_memory_kB": kb(post_bits), "async_read_macros": async_count, "data_register_bits": reg_bits,
         "flip_flops": ff_count, "clock_mhz": clock_mhz, "wns_ns": wns, "worst_slack_ns": slack, "fmax_mhz": fmax,
@@ -276,10 +306,11 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
                                 "yosys_seconds": b["seconds"], "peak_MB": b["peak_MB"], "reused": b["cached"],
                                 "gated_flip_flops": b["gated"], "clock_gates": b["gates"]}
                    for b in blocks},
+        # The engine's (the rectifier's: rect_gated_flip_flops).
         "clock_gating": {"min_group": gate_min,
-                         "gated_flip_flops": sum(b["instances"] * b["gated"] for b in blocks),
-                         "gates": sum(b["instances"] * b["gates"] for b in blocks),
-                         "enable_flip_flops_kept": sum(b["instances"] * b["kept_enable"] for b in blocks)},
+                         "gated_flip_flops": sum(b["instances"] * b["gated"] for b in eng_blocks),
+                         "gates": sum(b["instances"] * b["gates"] for b in eng_blocks),
+                         "enable_flip_flops_kept": sum(b["instances"] * b["kept_enable"] for b in eng_blocks)},
         # For the report (flow/synth_report.py).
         "liberty": Path(lib).name, "jobs": a.jobs, "cif_cycles": cif_cycles,
         "run": {"wall_seconds": wall_s, "blocks_wall_seconds": yosys_wall, "sta_seconds": sta_s,
@@ -301,14 +332,14 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
     (out / "report.md.tmp").rename(out / "report.md")
     (out / "summary.json.tmp").rename(out / "summary.json")
 
-    log(f"{nand2_total} NAND2 eq (paper 563k), memory {kb(mem_bits)} kB in {len(memories)} macros "
-        f"({kb(eng_bits)} kB without the LR post stage; paper 21.3 kB),")
+    log(f"{nand2_total} NAND2 eq without the rectifier (paper 563k), memory {kb(mem_bits)} kB in {len(memories)} "
+        f"macros ({kb(eng_bits)} kB without the LR post stage and the rectifier; paper 21.3 kB),")
     print(f"       LR post stage {post_nand2} NAND2 eq, {kb(post_bits)} kB; with the SoC wrapper (registers "
           f"{soc_nand['mcadsw_regs']}, AXI4 master {soc_nand['mcadsw_axi_master']}, slack {soc_slack} ns) "
           f"{soc_total} NAND2 eq,")
     print(f"       worst slack {slack} ns (WNS {wns} ns) at {clock_mhz} MHz, achievable {fmax} MHz (paper 95 MHz)")
-    print(f"       rectifier apart (pass, mark step, check): {rect_nand} NAND2 eq, {kb(rect_bits)} kB, "
-          f"worst slack {rect_slack} ns")
+    print(f"       rectifier (in the engine, reported apart: pass, mark step, check): {rect_nand} NAND2 eq, "
+          f"{kb(rect_bits)} kB, worst slack {rect_slack} ns")
     log(f"report {out}/report.md, summary {out}/summary.json, netlist {netlist}")
     log(f"wall time {wall_s} s ({len(ran)} blocks synthesised, {len(cached)} reused); peak memory {proc_peak_mb} MB "
         f"in one process ({proc_peak_what}), {sum_peak_mb} MB all processes together")

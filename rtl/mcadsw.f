@@ -5,6 +5,7 @@
 // A configuration other than DMAX 64 / PAR 1 replaces mcadsw_pkg.sv with its own
 // (make sim-build, make synth DMAX=<n> PAR=<p>).
 mcadsw_pkg.sv
+rect/mcadsw_rect_pkg.sv
 mcadsw_axi_master.sv
 mcadsw_census.sv
 mcadsw_cfg_check.sv
@@ -28,3 +29,10 @@ mcadsw_weight_gen.sv
 mcadsw_win_geom.sv
 mcadsw_win_reader.sv
 mcadsw_wta.sv
+rect/mcadsw_rect_load.sv
+rect/mcadsw_rect_nodes.sv
+rect/mcadsw_rect_sample.sv
+rect/mcadsw_rect_write.sv
+rect/mcadsw_rect_mark.sv
+rect/mcadsw_rect_check.sv
+rect/mcadsw_rect.sv

@@ -16,7 +16,8 @@ module mcadsw_cfg_check #(
   parameter int AW   = 32,                            // address bits
   parameter int CW   = 12,                            // width / height bits
   parameter int DMAX = mcadsw_pkg::DMAX,              // largest D this build supports
-  parameter int NB   = $clog2(DMAX + 1)               // D bits
+  parameter int NB   = $clog2(DMAX + 1),              // D bits
+  parameter int SB   = AW + CW                        // plane sizes: stride x height (or x columns), exact
 ) (
   // Planes (byte addresses)
   input  logic [AW-1:0]   base_ly_i,
@@ -42,10 +43,13 @@ module mcadsw_cfg_check #(
   input  logic [NB-1:0]   disp_i,
   // mcadsw_pkg::ErrNone, or the first failing check's code
   output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
-  output logic            ok_o               // err_o == ErrNone
+  output logic            ok_o,              // err_o == ErrNone
+  // The sizes of the checked planes, for the rectifier's check (mcadsw_rect_check)
+  output logic [SB-1:0]   in_size_o,         // an input plane
+  output logic [SB-1:0]   size_o,            // stride x height: dR, the mask
+  output logic [SB-1:0]   out_size_o         // out stride x height: the disparity plane, dL
 );
 
-  localparam int SB = AW + CW;         // plane sizes: stride x height (or x columns), exact
   // The checks in priority order, check c failing gives code CODES[c].
   localparam int NCHECK = 12;
   localparam int EB = mcadsw_pkg::ERR_BITS;
@@ -141,6 +145,9 @@ module mcadsw_cfg_check #(
     fail[11] = lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
                         base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
                         base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
+    in_size_o  = in_size;
+    size_o     = size;
+    out_size_o = out_size;
     ok_o  = fail == '0;
     err_o = mcadsw_pkg::ErrNone;
     for (int c = NCHECK - 1; c >= 0; c--)

@@ -37,12 +37,31 @@ module mcadsw_engine #(
   input  logic [CW-1:0]       cfg_height_i,
   input  logic [NB-1:0]       cfg_disp_i,      // D
   input  logic [NTHR*DCB-1:0] cfg_thr_i,       // weight table thresholds
+  // Rectification (register map 1.2, docs/architecture.md 3.10): raw planes and meshes in,
+  // the planes above written from them before the matching passes
+  input  logic                cfg_rect_en_i,   // RECT_CTRL.ENABLE
+  input  logic [2:0]          cfg_rect_step_i, // RECT_CTRL.STEP_LOG2: S = 8, 16, 32
+  input  logic [CW-1:0]       cfg_raw_width_i,
+  input  logic [CW-1:0]       cfg_raw_height_i,
+  input  logic [AW-1:0]       cfg_raw_stride_i,// raster: bytes a row; tiled: bytes a 4-pixel column
+  input  logic [AW-1:0]       cfg_raw_ly_i,
+  input  logic [AW-1:0]       cfg_raw_lu_i,
+  input  logic [AW-1:0]       cfg_raw_lv_i,
+  input  logic [AW-1:0]       cfg_raw_ry_i,
+  input  logic [AW-1:0]       cfg_raw_ru_i,
+  input  logic [AW-1:0]       cfg_raw_rv_i,
+  input  logic [AW-1:0]       cfg_mesh_l_i,
+  input  logic [AW-1:0]       cfg_mesh_r_i,
+  input  logic [CW-1:0]       cfg_mesh_nx_i,
+  input  logic [CW-1:0]       cfg_mesh_ny_i,
+  input  logic [AW-1:0]       cfg_valid_l_i,   // validity bitmaps (written)
+  input  logic [AW-1:0]       cfg_valid_r_i,
   input  logic                start_i,         // ignored while busy_o
   // Status
   output logic                busy_o,
   output logic                done_o,          // frame finished (or rejected) since start
   output logic                error_o,         // configuration rejected; nothing was written
-  output logic [3:0]          error_code_o,    // docs/memory_map.md
+  output logic [7:0]          error_code_o,    // docs/registers.md
   output logic [31:0]         cnt_cycles_o,
   output logic [31:0]         cnt_words_read_o,
   output logic [31:0]         cnt_words_written_o,
@@ -89,6 +108,11 @@ module mcadsw_engine #(
   logic [CW-1:0]       width_q, height_q;
   logic [NB-1:0]       disp_q;
   logic [NTHR*DCB-1:0] thr_q;
+  logic                rect_q;
+  logic [2:0]          rect_step_q;
+  logic [CW-1:0]       raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q;
+  logic [AW-1:0]       raw_stride_q, raw_ly_q, raw_lu_q, raw_lv_q, raw_ry_q, raw_ru_q, raw_rv_q;
+  logic [AW-1:0]       mesh_l_q, mesh_r_q, valid_l_q, valid_r_q;
   logic                accept;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -96,6 +120,9 @@ module mcadsw_engine #(
       {cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q} <= '0;
       {cfg_out_q, cfg_dl_q, cfg_dr_q, cfg_mask_q, stride_q, out_stride_q, tile_q} <= '0;
       {cfg_right_q, lr_q, cfg_sub_q, lr_t_q, width_q, height_q, disp_q, thr_q} <= '0;
+      {rect_q, rect_step_q, raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q} <= '0;
+      {raw_stride_q, raw_ly_q, raw_lu_q, raw_lv_q, raw_ry_q, raw_ru_q, raw_rv_q} <= '0;
+      {mesh_l_q, mesh_r_q, valid_l_q, valid_r_q} <= '0;
     end else if (accept) begin
       cfg_ly_q     <= cfg_base_ly_i;
       cfg_lu_q     <= cfg_base_lu_i;
@@ -116,12 +143,31 @@ module mcadsw_engine #(
       height_q     <= cfg_height_i;
       disp_q       <= cfg_disp_i;
       thr_q        <= cfg_thr_i;
+      rect_q       <= cfg_rect_en_i;
+      rect_step_q  <= cfg_rect_step_i;
+      raw_w_q      <= cfg_raw_width_i;
+      raw_h_q      <= cfg_raw_height_i;
+      raw_stride_q <= cfg_raw_stride_i;
+      raw_ly_q     <= cfg_raw_ly_i;
+      raw_lu_q     <= cfg_raw_lu_i;
+      raw_lv_q     <= cfg_raw_lv_i;
+      raw_ry_q     <= cfg_raw_ry_i;
+      raw_ru_q     <= cfg_raw_ru_i;
+      raw_rv_q     <= cfg_raw_rv_i;
+      mesh_l_q     <= cfg_mesh_l_i;
+      mesh_r_q     <= cfg_mesh_r_i;
+      mesh_nx_q    <= cfg_mesh_nx_i;
+      mesh_ny_q    <= cfg_mesh_ny_i;
+      valid_l_q    <= cfg_valid_l_i;
+      valid_r_q    <= cfg_valid_r_i;
     end
   end
 
+  localparam int SB = AW + CW;                      // plane sizes, exact
   logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err;
   logic cfg_ok;
-  mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB)) u_cfg_check (
+  logic [SB-1:0] in_size, size, out_size;
+  mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
     .base_ly_i (cfg_ly_q), .base_lu_i (cfg_lu_q), .base_lv_i (cfg_lv_q),
     .base_ry_i (cfg_ry_q), .base_ru_i (cfg_ru_q), .base_rv_i (cfg_rv_q),
     .base_out_i (cfg_out_q), .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q),
@@ -129,24 +175,37 @@ module mcadsw_engine #(
     .tile_stride_i (tile_q),
     .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .lr_t_i (lr_t_q),
     .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
-    .err_o (cfg_err), .ok_o (cfg_ok)
+    .err_o (cfg_err), .ok_o (cfg_ok),
+    .in_size_o (in_size), .size_o (size), .out_size_o (out_size)
   );
 
   // ---- Frame controller: the passes, busy / done, error code, counters --------------------
   logic sched_busy, sched_done, go, post_start, post_done, post_busy;
   logic pass_second, pass_post;
+  logic rchk_start, rchk_done, rect_start, rect_done, rect_sel, mark_start, mark_done, mark_sel;
+  logic [1:0] mark_phase;
+  logic [2:0] rchk_err;
+  logic [1:0] rect_err;
+  logic [mcadsw_pkg::ERR_BITS-1:0] error_code;
+  assign error_code_o = 8'(error_code);
 
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
     .start_i,
-    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .err_i (cfg_err), .ok_i (cfg_ok),
+    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .cfg_rect_i (rect_q), .err_i (cfg_err),
+    .ok_i (cfg_ok),
     .accept_o (accept),
+    .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
+    .rect_start_o (rect_start), .rect_done_i (rect_done), .rect_err_i (rect_err),
+    .rect_sel_o (rect_sel),
+    .mark_start_o (mark_start), .mark_done_i (mark_done), .mark_sel_o (mark_sel),
+    .mark_phase_o (mark_phase),
     .sched_start_o (go), .sched_busy_i (sched_busy), .sched_done_i (sched_done),
     .to_second_o (to_second), .pass_second_o (pass_second), .pass_post_o (pass_post),
     .post_start_o (post_start), .post_done_i (post_done),
     .wr_idle_i (mem_wr_idle_i),
     .mem_req_i (mem_req_o), .mem_gnt_i, .mem_we_i (mem_we_o), .mem_len_i (mem_len_o),
-    .busy_o, .done_o, .error_o, .error_code_o,
+    .busy_o, .done_o, .error_o, .error_code_o (error_code),
     .cnt_cycles_o, .cnt_words_read_o, .cnt_words_written_o, .cnt_stall_o
   );
 
@@ -304,7 +363,7 @@ module mcadsw_engine #(
   logic [3:0]    post_be;
   logic [AW-1:0] post_addr;
   logic [31:0]   post_wdata;
-  assign post_sel = pass_post;
+  assign post_sel = pass_post && !rect_sel && !mark_sel;
 
   mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
     .clk_i, .rst_ni,
@@ -317,14 +376,108 @@ module mcadsw_engine #(
     .mem_be_o (post_be), .mem_addr_o (post_addr), .mem_wdata_o (post_wdata),
     .mem_rvalid_i (mem_rvalid_i && post_sel), .mem_rdata_i
   );
-  assign mem_req_o   = post_sel ? post_req : eng_req;
-  assign mem_we_o    = post_sel ? post_we : eng_we;
-  assign mem_be_o    = post_sel ? post_be : eng_be;
-  assign mem_addr_o  = post_sel ? post_addr : eng_addr;
-  assign mem_len_o   = post_sel ? 4'd0 : eng_len;
-  assign mem_wdata_o = post_sel ? post_wdata : eng_wdata;
-  assign eng_gnt     = mem_gnt_i && !post_sel;
-  assign eng_rvalid  = mem_rvalid_i && !post_sel;
+
+  // ---- Rectification (docs/architecture.md 3.10): the check of its registers, the
+  // rectify pass and the mark step; the pass and the mark step own the memory port
+  // in their states, as the post stage in its own.
+  // The planes rectified: those the mode reads (docs/algorithm.md 13.4), bit p for
+  // LY LU LV RY RU RV.
+  logic [5:0] rect_planes;
+  assign rect_planes = lr_q ? 6'b111111 : cfg_right_q ? 6'b111001 : 6'b001111;
+  // The engine's plane sizes for the check, registered (the configuration is fixed
+  // from the cycle after the start; the check starts two cycles later).
+  logic [SB-1:0] in_size_q, size_q, out_size_q;
+  always_ff @(posedge clk_i) {in_size_q, size_q, out_size_q} <= {in_size, size, out_size};
+  logic rchk_busy_unused;
+  mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
+    .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
+    .err_o (rchk_err),
+    .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
+    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .raw_stride_i (raw_stride_q), .tiled_i (tile_q != '0),
+    .planes_i (rect_planes),
+    .raw_base_i ({raw_rv_q, raw_ru_q, raw_ry_q, raw_lv_q, raw_lu_q, raw_ly_q}),
+    .rect_base_i ({cfg_rv_q, cfg_ru_q, cfg_ry_q, cfg_lv_q, cfg_lu_q, cfg_ly_q}),
+    .rect_size_i (in_size_q),
+    .mesh_base_i ({mesh_r_q, mesh_l_q}), .valid_base_i ({valid_r_q, valid_l_q}),
+    .mesh_nx_i (mesh_nx_q), .mesh_ny_i (mesh_ny_q),
+    // The frame's output planes (mcadsw_cfg_check's write list): the first pass's
+    // (the disparity plane, or dL in the LR mode), dR, the disparity plane, the mask.
+    .out_base_i ({cfg_mask_q, cfg_out_q, cfg_dr_q, lr_q ? cfg_dl_q : cfg_out_q}),
+    .out_size_i ({size_q, out_size_q, size_q, out_size_q}),
+    .outs_i ({lr_q, lr_q, lr_q, 1'b1})
+  );
+
+  logic          rect_req, rect_we, rect_busy_unused;
+  logic [3:0]    rect_be;
+  logic [AW-1:0] rect_addr;
+  logic [2:0]    rect_len;
+  logic [31:0]   rect_wdata;
+  mcadsw_rect #(.CW(CW)) u_rect (
+    .clk_i, .rst_ni, .start_i (rect_start),
+    .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
+    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .tiled_i (tile_q != '0),
+    .raw_stride_i (raw_stride_q), .stride_i (tile_q != '0 ? tile_q : stride_q),
+    .raw_base_i ({raw_rv_q, raw_ru_q, raw_ry_q, raw_lv_q, raw_lu_q, raw_ly_q}),
+    .base_i ({cfg_rv_q, cfg_ru_q, cfg_ry_q, cfg_lv_q, cfg_lu_q, cfg_ly_q}),
+    .planes_i (rect_planes),
+    .mesh_base_i ({mesh_r_q, mesh_l_q}), .valid_base_i ({valid_r_q, valid_l_q}),
+    .busy_o (rect_busy_unused), .done_o (rect_done), .err_o (rect_err),
+    .mem_req_o (rect_req), .mem_gnt_i (mem_gnt_i && rect_sel), .mem_we_o (rect_we),
+    .mem_be_o (rect_be), .mem_addr_o (rect_addr), .mem_len_o (rect_len),
+    .mem_wdata_o (rect_wdata), .mem_rvalid_i (mem_rvalid_i && rect_sel), .mem_rdata_i
+  );
+
+  // The mark step (docs/algorithm.md 13.4), by phase: 0 (LR, before the post stage)
+  // 255 into dR at the right view's invalid pixels, so that the check fails there
+  // (|dL - 255| > T); 1 (idem) a flag into dL at the left view's, which the check
+  // fails (mcadsw_post_check); 2 (after the pass, or the post stage) the invalid code
+  // into the output at the base view's invalid pixels.
+  logic          mark_req, mark_we, mark_busy_unused;
+  logic [3:0]    mark_be;
+  logic [AW-1:0] mark_addr;
+  logic [2:0]    mark_len;
+  logic [31:0]   mark_wdata;
+  logic [AW-1:0] mark_valid, mark_base, mark_stride;
+  logic          mark_half;
+  logic [15:0]   mark_value;
+  always_comb begin
+    case (mark_phase)
+      2'd0: begin
+        mark_valid = valid_r_q; mark_base = cfg_dr_q; mark_stride = stride_q; mark_half = 1'b0;
+        mark_value = 16'(mcadsw_rect_pkg::RECT_INVALID_D8);
+      end
+      2'd1: begin
+        mark_valid = valid_l_q; mark_base = cfg_dl_q; mark_stride = out_stride_q; mark_half = cfg_sub_q;
+        mark_value = cfg_sub_q ? 16'(mcadsw_rect_pkg::RECT_FLAG_D16) : 16'(mcadsw_rect_pkg::RECT_FLAG_D8);
+      end
+      default: begin
+        mark_valid = cfg_right_q ? valid_r_q : valid_l_q; mark_base = cfg_out_q;
+        mark_stride = out_stride_q; mark_half = cfg_sub_q;
+        mark_value = cfg_sub_q ? 16'(mcadsw_rect_pkg::RECT_INVALID_D16) : 16'(mcadsw_rect_pkg::RECT_INVALID_D8);
+      end
+    endcase
+  end
+  mcadsw_rect_mark #(.CW(CW)) u_rect_mark (
+    .clk_i, .rst_ni, .start_i (mark_start), .width_i (width_q), .height_i (height_q),
+    .valid_base_i (mark_valid), .base_i (mark_base), .stride_i (mark_stride), .half_i (mark_half),
+    .value_i (mark_value),
+    .busy_o (mark_busy_unused), .done_o (mark_done),
+    .mem_req_o (mark_req), .mem_gnt_i (mem_gnt_i && mark_sel), .mem_we_o (mark_we),
+    .mem_be_o (mark_be), .mem_addr_o (mark_addr), .mem_len_o (mark_len),
+    .mem_wdata_o (mark_wdata), .mem_rvalid_i (mem_rvalid_i && mark_sel), .mem_rdata_i
+  );
+
+  // The port's owner: the rectify pass, the mark step, the post stage, or the passes.
+  logic eng_sel;
+  assign eng_sel = !rect_sel && !mark_sel && !post_sel;
+  assign mem_req_o   = rect_sel ? rect_req : mark_sel ? mark_req : post_sel ? post_req : eng_req;
+  assign mem_we_o    = rect_sel ? rect_we : mark_sel ? mark_we : post_sel ? post_we : eng_we;
+  assign mem_be_o    = rect_sel ? rect_be : mark_sel ? mark_be : post_sel ? post_be : eng_be;
+  assign mem_addr_o  = rect_sel ? rect_addr : mark_sel ? mark_addr : post_sel ? post_addr : eng_addr;
+  assign mem_len_o   = rect_sel ? {1'b0, rect_len} : mark_sel ? {1'b0, mark_len} : post_sel ? 4'd0 : eng_len;
+  assign mem_wdata_o = rect_sel ? rect_wdata : mark_sel ? mark_wdata : post_sel ? post_wdata : eng_wdata;
+  assign eng_gnt     = mem_gnt_i && eng_sel;
+  assign eng_rvalid  = mem_rvalid_i && eng_sel;
 
   logic        lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
   logic [31:0] lpix, rpix, wpix;
@@ -476,7 +629,8 @@ module mcadsw_engine #(
   assign unused_status = ^{lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
                         hrd_row_unused, sub_busy_unused, sub_row_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
-                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy};
+                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy,
+                        rchk_busy_unused, rect_busy_unused, mark_busy_unused};
 
   for (genvar m = 0; m < HAGG; m++) begin : g_disp_wide
     logic [4:0] off8;                  // offset + 8 (0 .. 16)
@@ -503,7 +657,10 @@ module mcadsw_engine #(
   // The memory port has one owner: the post stage from the end of the LR mode's
   // second pass until the next start, the memory controller otherwise.
   `MCADSW_ASSERT(PortOwnedByPostStage, !post_req || post_sel)
-  `MCADSW_ASSERT(PortOwnedByPasses, !eng_req || !post_sel)
+  `MCADSW_ASSERT(PortOwnedByPasses, !eng_req || eng_sel)
+  `MCADSW_ASSERT(PortOwnedByRectifier, !rect_req || rect_sel)
+  `MCADSW_ASSERT(PortOwnedByMarkStep, !mark_req || mark_sel)
+  `MCADSW_ASSERT(OnePortOwner, !(rect_sel && mark_sel))
   // Blocks are prepared and rows aggregated only while the frame runs.
   `MCADSW_ASSERT(WorkOnlyWhenBusy, !(prep_start || job_valid) || busy_o)
 

@@ -41,7 +41,7 @@ package mcadsw_pkg;
   localparam int REG_SPAN = 256;  // bytes decoded
   localparam logic [31:0] ID_VALUE = 32'h4D434144;
   localparam int VERSION_MAJOR = 1;
-  localparam int VERSION_MINOR = 1;
+  localparam int VERSION_MINOR = 2;
   // Byte offsets
   localparam int REG_ID             = 'h00;  // RO identification, "MCAD"
   localparam int REG_VERSION        = 'h04;  // RO register map version
@@ -77,26 +77,48 @@ package mcadsw_pkg;
   localparam int REG_WORDS_READ     = 'h84;  // RO memory words read in the last frame
   localparam int REG_WORDS_WRITTEN  = 'h88;  // RO memory words written in the last frame
   localparam int REG_STALLS         = 'h8C;  // RO cycles with a memory request not granted
+  localparam int REG_RECT_CTRL      = 'h90;  // RW rectification: enable and mesh step
+  localparam int REG_RAW_SIZE       = 'h94;  // RW rectification: raw views' width and height
+  localparam int REG_RAW_STRIDE     = 'h98;  // RW rectification: bytes a row of the raw planes; with TILE_STRIDE not 0, bytes from one 4-pixel column to the next
+  localparam int REG_RAW_LY         = 'h9C;  // RW rectification: raw left Y plane
+  localparam int REG_RAW_LU         = 'hA0;  // RW rectification: raw left U plane
+  localparam int REG_RAW_LV         = 'hA4;  // RW rectification: raw left V plane
+  localparam int REG_RAW_RY         = 'hA8;  // RW rectification: raw right Y plane
+  localparam int REG_RAW_RU         = 'hAC;  // RW rectification: raw right U plane (right view as base)
+  localparam int REG_RAW_RV         = 'hB0;  // RW rectification: raw right V plane (idem)
+  localparam int REG_MESH_L         = 'hB4;  // RW rectification: the left view's mesh (docs/algorithm.md 13.1)
+  localparam int REG_MESH_R         = 'hB8;  // RW rectification: the right view's mesh
+  localparam int REG_MESH_NODES     = 'hBC;  // RW rectification: mesh nodes a row and a column
+  localparam int REG_VALID_L        = 'hC0;  // RW rectification: the left view's validity bitmap (written)
+  localparam int REG_VALID_R        = 'hC4;  // RW rectification: the right view's validity bitmap (written)
   // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,
-  // 13..15 a frame ended early
-  localparam int ERR_BITS = 4;
+  // 13..15 a frame ended early, 16..23 rectification (docs/registers.md)
+  localparam int ERR_BITS = 5;
   typedef enum logic [ERR_BITS-1:0] {
-    ErrNone          = 4'd0,
-    ErrWidth         = 4'd1,
-    ErrHeight        = 4'd2,
-    ErrDisp          = 4'd3,
-    ErrStride        = 4'd4,
-    ErrAlign         = 4'd5,
-    ErrOverlap       = 4'd6,
-    ErrOutStride     = 4'd7,
-    ErrMode          = 4'd8,
-    ErrBeyond        = 4'd9,
-    ErrLrTolerance   = 4'd10,
-    ErrLrWidth       = 4'd11,
-    ErrLrColour      = 4'd12,
-    ErrReadResponse  = 4'd13,
-    ErrWriteResponse = 4'd14,
-    ErrAborted       = 4'd15
+    ErrNone          = 5'd0,
+    ErrWidth         = 5'd1,
+    ErrHeight        = 5'd2,
+    ErrDisp          = 5'd3,
+    ErrStride        = 5'd4,
+    ErrAlign         = 5'd5,
+    ErrOverlap       = 5'd6,
+    ErrOutStride     = 5'd7,
+    ErrMode          = 5'd8,
+    ErrBeyond        = 5'd9,
+    ErrLrTolerance   = 5'd10,
+    ErrLrWidth       = 5'd11,
+    ErrLrColour      = 5'd12,
+    ErrReadResponse  = 5'd13,
+    ErrWriteResponse = 5'd14,
+    ErrAborted       = 5'd15,
+    ErrRectStep      = 5'd16,
+    ErrRawSize       = 5'd17,
+    ErrMeshSize      = 5'd18,
+    ErrRectAlign     = 5'd19,
+    ErrRectOverlap   = 5'd20,
+    ErrRectBeyond    = 5'd21,
+    ErrMeshRange     = 5'd22,
+    ErrRectFootprint = 5'd23
   } err_e;
   // Fields: <register>_<field>_LSB and _W
   localparam int ID_VALUE_LSB           = 0;
@@ -122,7 +144,7 @@ package mcadsw_pkg;
   localparam int STATUS_ERROR_LSB       = 2;
   localparam int STATUS_ERROR_W         = 1;
   localparam int STATUS_ERROR_CODE_LSB  = 4;
-  localparam int STATUS_ERROR_CODE_W    = 4;
+  localparam int STATUS_ERROR_CODE_W    = 8;
   localparam int IRQ_ENABLE_DONE_LSB    = 0;
   localparam int IRQ_ENABLE_DONE_W      = 1;
   localparam int IRQ_ENABLE_ERROR_LSB   = 1;
@@ -139,4 +161,16 @@ package mcadsw_pkg;
   localparam int DISP_D_W               = 8;
   localparam int LR_T_T_LSB             = 0;
   localparam int LR_T_T_W               = 8;
+  localparam int RECT_CTRL_ENABLE_LSB   = 0;
+  localparam int RECT_CTRL_ENABLE_W     = 1;
+  localparam int RECT_CTRL_STEP_LOG2_LSB = 4;
+  localparam int RECT_CTRL_STEP_LOG2_W  = 3;
+  localparam int RAW_SIZE_WIDTH_LSB     = 0;
+  localparam int RAW_SIZE_WIDTH_W       = 12;
+  localparam int RAW_SIZE_HEIGHT_LSB    = 16;
+  localparam int RAW_SIZE_HEIGHT_W      = 12;
+  localparam int MESH_NODES_NX_LSB      = 0;
+  localparam int MESH_NODES_NX_W        = 12;
+  localparam int MESH_NODES_NY_LSB      = 16;
+  localparam int MESH_NODES_NY_W        = 12;
 endpackage

@@ -1,7 +1,8 @@
 // Post stage, phase RD of a row (docs/algorithm.md 12.2-12.3, docs/architecture.md
 // section 3.9): reads the row's dR words into the dR row buffer, then its dL words
 // (at most FD requested and not yet used), and takes one pixel of dL a cycle:
-//   the LR check  valid(x) = x >= d && |d - dR(x - d)| <= T
+//   the LR check  valid(x) = x >= d && |d - dR(x - d)| <= T (and dL not flagged
+//                 by the rectifier's mark step: docs/algorithm.md 13.4)
 //   the forward fill: the pixel's entry of the row buffer vrow holds
 //   {valid, has a value, value}: its own value when valid, else the nearest valid
 //   value to its left (and whether there is one).
@@ -98,6 +99,11 @@ module mcadsw_post_check #(
   assign value = wide_i ? VB'({half[DB-1:0], 4'b0000}) + VB'(half[DB+4:DB]) - VB'(8) : VB'(d);
   logic [15-DB-5:0] half_unused;
   assign half_unused = half[15:DB+5];
+  // A pixel the rectifier's mark step flagged (invalid in the left view after
+  // rectification, docs/algorithm.md 13.4): bit 7 of its byte, bit 15 of its
+  // halfword (d <= 127 and the scratch format leave both 0 otherwise). It fails the check.
+  logic          flag;
+  assign flag = wide_i ? half[15] : d[7];
   logic [CW:0]   match_x;                      // x - d
   assign match_x = {1'b0, x_q} - (CW + 1)'(d);
 
@@ -164,7 +170,7 @@ module mcadsw_post_check #(
 
       s2_valid_q <= take;
       if (take) begin
-        s2_inside_q <= !match_x[CW];
+        s2_inside_q <= !match_x[CW] && !flag;
         x_q         <= x_q + CW'(1);
         slot_q      <= slot_q + 2'd1;
         if (row_last) word_valid_q <= 1'b0;

@@ -72,13 +72,24 @@ module mcadsw_regs #(
   output logic [CW-1:0]       cfg_height_o,
   output logic [NB-1:0]       cfg_disp_o,      // 0 (error code 3) when DISP.D > DMAX
   output logic [NTHR*DCB-1:0] cfg_thr_o,
+  // Rectification (register map 1.2)
+  output logic                cfg_rect_en_o,
+  output logic [2:0]          cfg_rect_step_o,
+  output logic [CW-1:0]       cfg_raw_width_o,
+  output logic [CW-1:0]       cfg_raw_height_o,
+  output logic [AW-1:0]       cfg_raw_stride_o,
+  output logic [6*AW-1:0]     cfg_raw_base_o,  // RAW_LY .. RAW_RV, plane p at AW p
+  output logic [2*AW-1:0]     cfg_mesh_o,      // MESH_L, MESH_R
+  output logic [CW-1:0]       cfg_mesh_nx_o,
+  output logic [CW-1:0]       cfg_mesh_ny_o,
+  output logic [2*AW-1:0]     cfg_valid_o,     // VALID_L, VALID_R
   output logic                start_o,
   output logic                abort_o,         // CTRL.ABORT written 1 (a pulse)
   // Engine status
   input  logic                busy_i,
   input  logic                done_i,
   input  logic                error_i,
-  input  logic [3:0]          error_code_i,
+  input  logic [7:0]          error_code_i,
   input  logic [31:0]         cnt_cycles_i,
   input  logic [31:0]         cnt_words_read_i,
   input  logic [31:0]         cnt_words_written_i,
@@ -106,6 +117,12 @@ module mcadsw_regs #(
   localparam int S_RD     = mcadsw_pkg::REG_WORDS_READ / 4;
   localparam int S_WR     = mcadsw_pkg::REG_WORDS_WRITTEN / 4;
   localparam int S_STALL  = mcadsw_pkg::REG_STALLS / 4;
+  localparam int S_RCTRL  = mcadsw_pkg::REG_RECT_CTRL / 4;
+  localparam int S_RSIZE  = mcadsw_pkg::REG_RAW_SIZE / 4;
+  localparam int S_RAW0   = mcadsw_pkg::REG_RAW_STRIDE / 4;  // RAW_STRIDE, RAW_LY .. RAW_RV, MESH_L, MESH_R
+  localparam int NRAW     = 9;
+  localparam int S_NODES  = mcadsw_pkg::REG_MESH_NODES / 4;
+  localparam int S_VAL0   = mcadsw_pkg::REG_VALID_L / 4;     // VALID_L, VALID_R
   localparam int NBASE    = 10;
   localparam int F_START  = mcadsw_pkg::CTRL_START_LSB;
   localparam int F_ABORT  = mcadsw_pkg::CTRL_ABORT_LSB;
@@ -121,13 +138,23 @@ module mcadsw_regs #(
   localparam int F_D      = mcadsw_pkg::DISP_D_LSB;
   localparam int DW       = mcadsw_pkg::DISP_D_W;
   localparam int F_T      = mcadsw_pkg::LR_T_T_LSB;
+  localparam int F_REN    = mcadsw_pkg::RECT_CTRL_ENABLE_LSB;
+  localparam int F_RSTEP  = mcadsw_pkg::RECT_CTRL_STEP_LOG2_LSB;
+  localparam int F_RW     = mcadsw_pkg::RAW_SIZE_WIDTH_LSB;
+  localparam int F_RH     = mcadsw_pkg::RAW_SIZE_HEIGHT_LSB;
+  localparam int F_NX     = mcadsw_pkg::MESH_NODES_NX_LSB;
+  localparam int F_NY     = mcadsw_pkg::MESH_NODES_NY_LSB;
 
   if (AW != 32 || CW != mcadsw_pkg::SIZE_WIDTH_W || CW != mcadsw_pkg::SIZE_HEIGHT_W ||
       DMAX > (1 << DW) - 1 || NTHR != 7 || DCB > 32 || mcadsw_pkg::CTRL_MODE_W != 3 ||
       mcadsw_pkg::LR_T_T_W != 8 || S_BASE0 + NBASE - 1 != mcadsw_pkg::REG_BASE_MASK / 4 ||
       S_THR0 + NTHR - 1 != mcadsw_pkg::REG_THR6 / 4 ||
       F_IDONE != mcadsw_pkg::IRQ_STATUS_DONE_LSB ||
-      F_IERR != mcadsw_pkg::IRQ_STATUS_ERROR_LSB) begin : g_bad_param
+      F_IERR != mcadsw_pkg::IRQ_STATUS_ERROR_LSB ||
+      S_RAW0 + NRAW - 1 != mcadsw_pkg::REG_MESH_R / 4 || S_VAL0 + 1 != mcadsw_pkg::REG_VALID_R / 4 ||
+      mcadsw_pkg::RECT_CTRL_STEP_LOG2_W != 3 || mcadsw_pkg::RAW_SIZE_WIDTH_W != CW ||
+      mcadsw_pkg::RAW_SIZE_HEIGHT_W != CW || mcadsw_pkg::MESH_NODES_NX_W != CW ||
+      mcadsw_pkg::MESH_NODES_NY_W != CW || mcadsw_pkg::STATUS_ERROR_CODE_W != 8) begin : g_bad_param
     mcadsw_error_regs_geometry u_error ();
   end
 
@@ -137,7 +164,8 @@ module mcadsw_regs #(
                   s == S_IRQEN || s == S_IRQST || (s >= S_BASE0 && s < S_BASE0 + NBASE) ||
                   s == S_STRIDE || s == S_OSTR || s == S_SIZE || s == S_DISP || s == S_LRT || s == S_TILE ||
                   (s >= S_THR0 && s < S_THR0 + NTHR) || s == S_CYC || s == S_RD || s == S_WR ||
-                  s == S_STALL;
+                  s == S_STALL || s == S_RCTRL || s == S_RSIZE || (s >= S_RAW0 && s < S_RAW0 + NRAW) ||
+                  s == S_NODES || s == S_VAL0 || s == S_VAL0 + 1;
   endfunction
 
   // ---- Register file ---------------------------------------------------------------
@@ -148,6 +176,11 @@ module mcadsw_regs #(
   logic [DW-1:0]         disp_q;
   logic [7:0]            lr_t_q;
   logic [NTHR*DCB-1:0]   thr_q;      // threshold i at DCB i
+  logic [NRAW*32-1:0]    raw_q;      // RAW_STRIDE, RAW_LY .. RAW_RV, MESH_L, MESH_R
+  logic [2*32-1:0]       valid_q;    // VALID_L, VALID_R
+  logic                  rect_en_q;
+  logic [2:0]            rect_step_q;
+  logic [CW-1:0]         raw_w_q, raw_h_q, nx_q, ny_q;
   logic                  done_q, error_q;      // STATUS sticky bits
   logic [1:0]            irq_en_q;             // bit 0 done, bit 1 error
   logic                  start_q, abort_q;
@@ -226,6 +259,18 @@ module mcadsw_regs #(
       else if (hit[S_BASE0 + i]) base_q[i*32 +: 32] <= wnew;
     end
   end
+  for (genvar i = 0; i < NRAW; i++) begin : g_raw
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) raw_q[i*32 +: 32] <= '0;
+      else if (hit[S_RAW0 + i]) raw_q[i*32 +: 32] <= wnew;
+    end
+  end
+  for (genvar i = 0; i < 2; i++) begin : g_valid
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) valid_q[i*32 +: 32] <= '0;
+      else if (hit[S_VAL0 + i]) valid_q[i*32 +: 32] <= wnew;
+    end
+  end
   for (genvar i = 0; i < NTHR; i++) begin : g_thr
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) thr_q[i*DCB +: DCB] <= '0;
@@ -250,6 +295,9 @@ module mcadsw_regs #(
       height_q     <= '0;
       disp_q       <= '0;
       lr_t_q       <= '0;
+      rect_en_q    <= 1'b0;
+      rect_step_q  <= '0;
+      {raw_w_q, raw_h_q, nx_q, ny_q} <= '0;
       irq_en_q     <= '0;
       start_q      <= 1'b0;
       abort_q      <= 1'b0;
@@ -267,6 +315,18 @@ module mcadsw_regs #(
       end
       if (hit[S_DISP]) disp_q <= wnew[F_D +: DW];
       if (hit[S_LRT]) lr_t_q <= wnew[F_T +: 8];
+      if (hit[S_RCTRL]) begin
+        rect_en_q   <= wnew[F_REN];
+        rect_step_q <= wnew[F_RSTEP +: 3];
+      end
+      if (hit[S_RSIZE]) begin
+        raw_w_q <= wnew[F_RW +: CW];
+        raw_h_q <= wnew[F_RH +: CW];
+      end
+      if (hit[S_NODES]) begin
+        nx_q <= wnew[F_NX +: CW];
+        ny_q <= wnew[F_NY +: CW];
+      end
       if (hit[S_IRQEN]) irq_en_q <= {wnew[F_IERR], wnew[F_IDONE]};
       if (hit[S_CTRL]) mode_q <= wnew[F_MODE +: 3];
       start_q   <= start;
@@ -312,6 +372,11 @@ module mcadsw_regs #(
   for (genvar i = 0; i < NTHR; i++) begin : g_thr_rd
     assign cur[(S_THR0 + i)*32 +: 32] = 32'(thr_q[i*DCB +: DCB]);
   end
+  assign cur[S_RCTRL*32 +: 32]  = (32'(rect_en_q) << F_REN) | (32'(rect_step_q) << F_RSTEP);
+  assign cur[S_RSIZE*32 +: 32]  = (32'(raw_w_q) << F_RW) | (32'(raw_h_q) << F_RH);
+  assign cur[S_RAW0*32 +: NRAW*32] = raw_q;
+  assign cur[S_NODES*32 +: 32]  = (32'(nx_q) << F_NX) | (32'(ny_q) << F_NY);
+  assign cur[S_VAL0*32 +: 64]   = valid_q;
   assign cur[S_CYC*32 +: 32]    = cnt_cycles_i;
   assign cur[S_RD*32 +: 32]     = cnt_words_read_i;
   assign cur[S_WR*32 +: 32]     = cnt_words_written_i;
@@ -364,6 +429,16 @@ module mcadsw_regs #(
   assign cfg_height_o     = height_q;
   assign cfg_disp_o       = (32'(disp_q) > DMAX) ? '0 : NB'(disp_q);
   assign cfg_thr_o        = thr_q;
+  assign cfg_rect_en_o    = rect_en_q;
+  assign cfg_rect_step_o  = rect_step_q;
+  assign cfg_raw_width_o  = raw_w_q;
+  assign cfg_raw_height_o = raw_h_q;
+  assign cfg_raw_stride_o = raw_q[0 +: 32];
+  assign cfg_raw_base_o   = raw_q[32 +: 6*32];
+  assign cfg_mesh_o       = raw_q[7*32 +: 2*32];
+  assign cfg_mesh_nx_o    = nx_q;
+  assign cfg_mesh_ny_o    = ny_q;
+  assign cfg_valid_o      = valid_q;
   assign start_o          = start_q;
   assign abort_o          = abort_q;
 

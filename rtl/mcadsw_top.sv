@@ -79,9 +79,15 @@ module mcadsw_top #(
   logic [NB-1:0]       disp;
   logic [NTHR*DCB-1:0] thr;
   logic                start, abort, busy, done, error;
-  logic [3:0]          error_code;
+  logic [7:0]          error_code;
   logic                eng_busy, eng_done, eng_error;
-  logic [3:0]          eng_code;
+  logic [7:0]          eng_code;
+  logic                rect_en;
+  logic [2:0]          rect_step;
+  logic [CW-1:0]       raw_w, raw_h, mesh_nx, mesh_ny;
+  logic [AW-1:0]       raw_stride;
+  logic [6*AW-1:0]     raw_base;
+  logic [2*AW-1:0]     mesh, valid;
   logic [31:0]         cnt_cycles, cnt_words_read, cnt_words_written, cnt_stall;
 
   mcadsw_regs #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NB(NB), .NTHR(NTHR), .DCB(DCB),
@@ -96,7 +102,11 @@ module mcadsw_top #(
     .cfg_base_mask_o (base_mask), .cfg_stride_o (stride), .cfg_out_stride_o (out_stride),
     .cfg_tile_stride_o (tile_stride),
     .cfg_mode_o (mode), .cfg_lr_t_o (lr_t), .cfg_width_o (width), .cfg_height_o (height),
-    .cfg_disp_o (disp), .cfg_thr_o (thr), .start_o (start), .abort_o (abort),
+    .cfg_disp_o (disp), .cfg_thr_o (thr),
+    .cfg_rect_en_o (rect_en), .cfg_rect_step_o (rect_step), .cfg_raw_width_o (raw_w),
+    .cfg_raw_height_o (raw_h), .cfg_raw_stride_o (raw_stride), .cfg_raw_base_o (raw_base),
+    .cfg_mesh_o (mesh), .cfg_mesh_nx_o (mesh_nx), .cfg_mesh_ny_o (mesh_ny), .cfg_valid_o (valid),
+    .start_o (start), .abort_o (abort),
     .busy_i (busy), .done_i (done), .error_i (error), .error_code_i (error_code),
     .cnt_cycles_i (cnt_cycles), .cnt_words_read_i (cnt_words_read),
     .cnt_words_written_i (cnt_words_written), .cnt_stall_i (cnt_stall)
@@ -104,7 +114,7 @@ module mcadsw_top #(
 
   // ---- Early end: a response error or an abort ---------------------------------------------
   logic       drain_q, ended_q, bus_idle, wr_idle, rd_err, wr_err, eng_rst_n;
-  logic [3:0] end_code_q;
+  logic [mcadsw_pkg::ERR_BITS-1:0] end_code_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       drain_q    <= 1'b0;
@@ -127,7 +137,7 @@ module mcadsw_top #(
   assign busy       = eng_busy || drain_q;
   assign done       = eng_done || ended_q;
   assign error      = eng_error || ended_q;
-  assign error_code = ended_q ? end_code_q : eng_code;
+  assign error_code = ended_q ? 8'(end_code_q) : eng_code;
 
   logic          mem_req, mem_gnt, mem_we, mem_rvalid;
   logic [3:0]    mem_be, mem_len;
@@ -142,7 +152,16 @@ module mcadsw_top #(
     .cfg_base_mask_i (base_mask), .cfg_stride_i (stride), .cfg_out_stride_i (out_stride),
     .cfg_tile_stride_i (tile_stride),
     .cfg_mode_i (mode), .cfg_lr_t_i (lr_t), .cfg_width_i (width), .cfg_height_i (height),
-    .cfg_disp_i (disp), .cfg_thr_i (thr), .start_i (start),
+    .cfg_disp_i (disp), .cfg_thr_i (thr),
+    .cfg_rect_en_i (rect_en), .cfg_rect_step_i (rect_step), .cfg_raw_width_i (raw_w),
+    .cfg_raw_height_i (raw_h), .cfg_raw_stride_i (raw_stride),
+    .cfg_raw_ly_i (raw_base[0*AW +: AW]), .cfg_raw_lu_i (raw_base[1*AW +: AW]),
+    .cfg_raw_lv_i (raw_base[2*AW +: AW]), .cfg_raw_ry_i (raw_base[3*AW +: AW]),
+    .cfg_raw_ru_i (raw_base[4*AW +: AW]), .cfg_raw_rv_i (raw_base[5*AW +: AW]),
+    .cfg_mesh_l_i (mesh[0 +: AW]), .cfg_mesh_r_i (mesh[AW +: AW]),
+    .cfg_mesh_nx_i (mesh_nx), .cfg_mesh_ny_i (mesh_ny),
+    .cfg_valid_l_i (valid[0 +: AW]), .cfg_valid_r_i (valid[AW +: AW]),
+    .start_i (start),
     .busy_o (eng_busy), .done_o (eng_done), .error_o (eng_error), .error_code_o (eng_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_words_read),
     .cnt_words_written_o (cnt_words_written), .cnt_stall_o (cnt_stall),

@@ -9,6 +9,8 @@
 #   scripts/formal.sh [BUILD_DIR]            all checks; BUILD_DIR/formal/summary.json
 #   scripts/formal.sh [BUILD_DIR] --selftest each check against a mutant of its block
 #                                            that breaks one property: must FAIL
+#   ONLY="frame_ctrl ..." scripts/formal.sh ...  only these checks (names below); no
+#                                            summary.json is written
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}; mode=${2:-}
@@ -42,8 +44,13 @@ run_check() {  # name "rtl_files" depth [mutant_sed]
 }
 
 rows=(); status=0
+only=${ONLY:-}
+for o in $only; do
+  printf '%s\n' "${checks[@]}" | grep -q "^$o|" || { echo "formal: no check named '$o'" >&2; exit 2; }
+done
 for c in "${checks[@]}"; do
   IFS='|' read -r name file depth mut <<<"$c"
+  [ -z "$only" ] || [[ " $only " == *" $name "* ]] || continue
   t0=$(date +%s)
   if [ "$mode" = --selftest ]; then
     if run_check "$name" "$file" "$depth" "$mut"; then
@@ -59,7 +66,7 @@ for c in "${checks[@]}"; do
   echo "formal: $name: $res for every trace of $depth cycles from reset ($checks_n assertion checks, assertions x cycles; $secs s; log $out/$name.log)"
   rows+=("$name	$res	$depth	$checks_n	$secs")
 done
-if [ "$mode" != --selftest ]; then
+if [ "$mode" != --selftest ] && [ -z "$only" ]; then
   printf '%s\n' "${rows[@]}" | python3 -c '
 import json, sys
 keys = ("check", "result", "bmc_depth", "assertion_checks", "seconds")

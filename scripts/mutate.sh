@@ -9,8 +9,17 @@
 #                                       test); the other results of the last run are kept
 #   REPORT_ONLY=1                       the summary of the last run again (after editing
 #                                       tests/mutate/survivors.txt)
+#   NO_RECT=1                           leave the rectifier out of the mutant list: no mutant
+#                                       in the cells under u_engine.u_rect, u_engine.u_rect_mark
+#                                       and u_engine.u_rect_check (the mcadsw_rect* modules and
+#                                       the FIFOs inside them); the N mutants are spread over the
+#                                       rest. Default 0 (the whole design). An environment
+#                                       variable: `make mutate NO_RECT=1` passes it on too.
+#                                       (A few cells that Yosys's optimisation makes after
+#                                       flattening carry no instance path and stay in the list.)
 #
-# Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS), elaborates mcadsw_top
+# Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS, -Irtl for the `include of
+# rtl/mcadsw_assert.svh in rtl/rect/), elaborates mcadsw_top
 # (the engine, its register block and AXI4 master: every RTL module), flattens it and
 # applies every mutant of the list behind a select (`mutate -ctrl mutsel W k`: mutant
 # k is active when mutsel == k, 0 is the design as written; the port becomes a variable
@@ -60,6 +69,7 @@ seed=${SEED:-1}
 sample=${SAMPLE:-0}
 jobs=${JOBS:-$(nproc)}
 stage_timeout=${TIMEOUT:-300}
+no_rect=${NO_RECT:-0}
 build=${BUILD_DIR:-$root/build}
 out=$build/mutate
 listfile=$root/tests/mutate/survivors.txt
@@ -69,6 +79,7 @@ die() { echo "mutate: $*" >&2; exit 1; }
 [[ "$seed" =~ ^[0-9]+$ ]] || die "SEED must be a number, not '$seed'"
 [[ "$sample" =~ ^[0-9]+$ ]] && [ "$sample" -le "$n" ] || die "SAMPLE must be 0 (all) to N, not '$sample'"
 [[ "$jobs" =~ ^[0-9]+$ ]] && [ "$jobs" -ge 1 ] || die "JOBS must be 1 or more, not '$jobs'"
+[[ "$no_rect" =~ ^[01]$ ]] || die "NO_RECT must be 0 or 1, not '$no_rect'"
 [ -f "$listfile" ] || die "no list of survivors at $listfile"
 mkdir -p "$out"
 start_all=$(date +%s)
@@ -76,28 +87,49 @@ start_all=$(date +%s)
 if [ "${REPORT_ONLY:-0}" = 1 ]; then
   [ -d "$out/results" ] && [ -f "$out/mutants.tsv" ] || die "no results in $out: run make mutate first"
   elapsed=$(cat "$out/run_seconds" 2>/dev/null || echo 0)
+  no_rect=$(cat "$out/no_rect" 2>/dev/null || echo 0)    # as the last run had it
 else
-  # 1. The mutant design (regenerated when the RTL, N, SEED or Yosys change).
+  # 1. The mutant design (regenerated when the RTL, N, SEED, NO_RECT or Yosys change).
   mods=$(scripts/rtl_files.sh --no-pkg rtl | tr '\n' ' ')
+  pkgs=" rtl/mcadsw_pkg.sv rtl/rect/mcadsw_rect_pkg.sv "    # packages: no instances
   width=1
   while [ $(( (1 << width) - 1 )) -lt "$n" ]; do width=$((width + 1)); done
-  stamp=$( { cat rtl/mcadsw_pkg.sv $mods; echo "$n $seed $width"; yosys -V; } | sha1sum | cut -d' ' -f1)
+  stamp=$( { cat rtl/mcadsw_pkg.sv rtl/mcadsw_assert.svh $mods; echo "$n $seed $width $no_rect"; yosys -V; } |
+          sha1sum | cut -d' ' -f1)
   design=$out/mutants_n${n}_s${seed}.v
+  [ "$no_rect" = 0 ] || design=$out/mutants_n${n}_s${seed}_norect.v
+  # NO_RECT=1: the mutant list is drawn from every cell but those of the rectifier's
+  # instances (flattened names $flatten\u_engine.\u_rect.* and u_engine.u_rect.*, the
+  # same for u_rect_mark and u_rect_check).
+  mut_sel=""
+  if [ "$no_rect" = 1 ]; then
+    for i in u_rect u_rect_mark u_rect_check; do
+      mut_sel+=" c:\$flatten\\u_engine.\\$i.* c:u_engine.$i.*"
+    done
+    mut_sel="select -del$mut_sel;"
+  fi
   if [ ! -f "$design" ] || [ "$(cat "$out/design.stamp" 2>/dev/null)" != "$stamp" ]; then
-    echo "mutate: Yosys: elaborating mcadsw_top, $n mutants (seed $seed) behind mutsel[$((width - 1)):0]"
+    echo "mutate: Yosys: elaborating mcadsw_top, $n mutants (seed $seed${mut_sel:+, not in the rectifier}) behind mutsel[$((width - 1)):0]"
     rm -f "$out/instances.txt" "$out/design.stamp"
-    # Instance name -> module, for the per-module counts.
+    # Instance name -> module, for the per-module counts. The type exactly m (a
+    # pattern t:*m* would also count the instances of every module whose name
+    # contains m: mcadsw_rect those of all mcadsw_rect_*): the module itself, or a
+    # parameterised copy, $paramod\m\PARAM=... or $paramod$<hash>\m.
     inst_cmds=""
     for f in $mods; do
+      [[ "$pkgs" == *" $f "* ]] && continue
       m=$(basename "$f" .sv)
-      inst_cmds+="tee -q -a $out/instances.txt log -- module $m; tee -q -a $out/instances.txt select -list t:*$m*; "
+      inst_cmds+="tee -q -a $out/instances.txt log -- module $m; "
+      inst_cmds+="tee -q -a $out/instances.txt select -list t:$m t:\$paramod\\$m\\* t:\$paramod\$*\\$m; "
     done
     t0=$(date +%s)
-    yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS rtl/mcadsw_pkg.sv $mods
+    yosys -q -l "$out/yosys.log" -p "read_verilog -sv -DSYNTHESIS -Irtl rtl/mcadsw_pkg.sv $mods
       hierarchy -check -top mcadsw_top
       $inst_cmds
       prep -flatten -top mcadsw_top
+      $mut_sel
       mutate -list $n -seed $seed -ctrl mutsel $width 1 -o $out/list.ys
+      select -clear
       script $out/list.ys
       opt_clean
       write_verilog -noattr $design.tmp" > /dev/null || die "Yosys failed (log: $out/yosys.log)"
@@ -112,6 +144,9 @@ else
     [ "$(grep -c 'mcadsw_mutant=' "$design")" = 1 ] && ! grep -q 'input .*mutsel' "$design" ||
       die "could not turn the mutsel port of $design into a plusarg"
     [ "$(grep -c '^mutate ' "$out/list.ys")" = "$n" ] || die "Yosys listed $(grep -c '^mutate ' "$out/list.ys") mutants, not $n"
+    if [ "$no_rect" = 1 ] && grep -qE -- '-cell (\$flatten\\)?u_engine\.\\?u_rect(_mark|_check)?\.' "$out/list.ys"; then
+      die "NO_RECT=1 but Yosys listed a mutant in the rectifier ($out/list.ys)"
+    fi
     echo "$stamp" > "$out/design.stamp"
     echo "mutate: design written in $(( $(date +%s) - t0 )) s ($design)"
   fi
@@ -225,6 +260,7 @@ else
     picks=$(seq 1 "$n" | tr '\n' ' ')
   fi
   npicks=$(wc -w <<< "$picks")
+  echo "$no_rect" > "$out/no_rect"
 
   # Module of each mutant: the innermost instance on its cell's path.
   awk -v OFS='\t' '
@@ -265,6 +301,6 @@ cat "$out/results"/* | sort -n > "$out/outcomes.tsv"
 [ "${REPORT_ONLY:-0}" = 1 ] || echo "mutate: $(( $(date +%s) - start_all )) s in all, $elapsed s running mutants"
 rc=0
 python3 "$root/scripts/mutate_summary.py" --out "$out" --list "$listfile" --list-name "${listfile#$root/}" \
-  --n "$n" --seed "$seed" --sample "$sample" --seconds "$elapsed" --jobs "$jobs" || rc=$?
+  --n "$n" --seed "$seed" --sample "$sample" --seconds "$elapsed" --jobs "$jobs" --no-rect "$no_rect" || rc=$?
 echo "mutate: $out/summary.json"
 exit $rc

@@ -22,6 +22,8 @@ def main():
     ap.add_argument("--list-name", required=True, help="the list's path as printed")
     for k in ("n", "seed", "sample", "seconds", "jobs"):
         ap.add_argument(f"--{k}", type=int, required=True)
+    ap.add_argument("--no-rect", type=int, default=0,
+                    help="1: the rectifier was left out of the mutant list (NO_RECT=1)")
     a = ap.parse_args()
     out = Path(a.out)
 
@@ -78,6 +80,7 @@ def main():
     total = len(rows)
     score = 100.0 * killed / (total - equivalent) if total > equivalent else 100.0
     summary = {"n": a.n, "seed": a.seed, "sample": a.sample, "jobs": a.jobs, "seconds": a.seconds,
+               "rectifier_excluded": bool(a.no_rect),
                "total": total, "killed": killed, "survived": open_ + unlisted, "equivalent": equivalent,
                "open": open_, "unlisted": unlisted, "score_percent": round(score, 1),
                "per_module": dict(sorted(per_module.items())), "survivors": survivors,
@@ -86,6 +89,8 @@ def main():
 
     print(f"mutate: {total} mutants: {killed} killed, {equivalent} equivalent, {open_} open (listed), "
           f"{unlisted} unlisted survivors; score {score:.1f} % (killed / non-equivalent; target >= 95 %)")
+    if a.no_rect:
+        print("mutate: the rectifier (u_engine.u_rect, u_rect_mark, u_rect_check) was left out (NO_RECT=1)")
     print("mutate: per module (total killed survived equivalent):")
     for name, m in sorted(per_module.items()):
         print(f"  {name:<20s} {m['total']:4d} {m['killed']:4d} {m['survived']:4d} {m['equivalent']:4d}")

@@ -9,29 +9,28 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root/rtl"
 pkg=mcadsw_pkg.sv
+# The packages, read in this order before the modules and never linted as a top: the
+# engine's, then the rectifier's (it imports the engine's). rtl/mcadsw.f lists both first.
+pkgs=("$pkg" rect/mcadsw_rect_pkg.sv)
 list=$("$root/scripts/rtl_files.sh" --no-pkg .) || { echo "rtl_check: scripts/rtl_files.sh failed" >&2; exit 1; }
-mapfile -t mods <<< "${list//.\//}"
-# The list is the one every tool reads: a source file it does not name is an error.
-for f in *.sv; do
-  printf '%s\n' "$pkg" "${mods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
+mapfile -t listed <<< "${list//.\//}"
+mods=()
+for f in "${listed[@]}"; do
+  [ -n "$f" ] || continue
+  printf '%s\n' "${pkgs[@]}" | grep -qx "$f" || mods+=("$f")
 done
-# The rectifier, beside the engine until its pass goes in (rtl/rect/rect.f: its package
-# first); checked like the engine's modules, with the engine's files.
-rpkg=rect/mcadsw_rect_pkg.sv
-rmods=()
-while IFS= read -r line || [ -n "$line" ]; do    # bash alone, as scripts/rtl_files.sh
-  line=${line%%//*}
-  line=${line%"${line##*[![:space:]]}"}
-  [ -n "$line" ] && [ "rect/$line" != "$rpkg" ] && rmods+=("rect/$line")
-done < rect/rect.f
-for f in rect/*.sv; do
-  printf '%s\n' "$rpkg" "${rmods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/rect/rect.f" >&2; exit 1; }
+for p in "${pkgs[@]:1}"; do
+  printf '%s\n' "${listed[@]}" | grep -qx "$p" || { echo "rtl_check: rtl/$p is not in rtl/mcadsw.f" >&2; exit 1; }
+done
+# The list is the one every tool reads: a source file it does not name is an error
+# (rtl/rect/rect.f, the rectifier's own list for its block tests, is not read here).
+for f in *.sv rect/*.sv; do
+  printf '%s\n' "${pkgs[@]}" "${mods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 waivers=()
 [ -f lint_waivers.vlt ] && waivers=(lint_waivers.vlt)
 if [ ${#mods[@]} -eq 0 ]; then echo "rtl_check: no RTL modules"; exit 0; fi
-files=("$pkg" "$rpkg" "${mods[@]}" "${rmods[@]}")
-mods+=("${rmods[@]}")
+files=("${pkgs[@]}" "${mods[@]}")
 
 run_lint() {
   for f in "${mods[@]}"; do

@@ -61,6 +61,18 @@ cases=(
   "cif_x2_cones_dDMAX|cif_x2|cones|DMAX|2|"
   # VGA (640x480, data/vga_x2): cycles and frame rate of the wider frames.
   "vga_x2_teddy_dDMAX|vga_x2|teddy|DMAX|2|"
+  # Raw camera frames rectified by the engine (issue 32, docs/architecture.md 3.10; data/raw:
+  # cameras A, B, C made from the pairs above, their calibration files): the rectified planes,
+  # validity bitmaps and depth compared; no error figure (the invalid code is no disparity).
+  # B at zero latency is the speed bar's case (2.70 M cycles), tiled with the DDR-like memory
+  # the second bar (2.95 M); C has invalid strips (sub-pixel: 0xFFFF there); the LR mode
+  # with its marks (dR 255, dL flagged before the post stage; the code after it).
+  "cif_teddy_rect_b|raw/B/cif|teddy|64|4|"
+  "cif_teddy_rect_b_tiled_ddr|raw/B/cif|teddy|64|4|--tiled --latency 30 --ar-interval 8"
+  "cif_teddy_rect_c_sub|raw/C/cif|teddy|64|4|--subpixel --step 8"
+  "teddy_rect_a_right_s32|raw/A/middlebury|teddy|60|4|--right --step 32 --random-latency 7"
+  "cif_teddy_rect_b_lr|raw/B/cif|teddy|64|4|--lr"
+  "cif_teddy_rect_c_lr_sub|raw/C/cif|teddy|64|4|--lr --subpixel --random-latency 8"
 )
 # The build's DMAX (CMake MCADSW_DMAX), for the cases above that run at it.
 dmax=$(awk -F= '/^MCADSW_DMAX:/ {print $2}' "$build/CMakeCache.txt" 2>/dev/null)
@@ -86,6 +98,8 @@ run_case() {
   if [ "$waves" = 1 ]; then wave_opt=(--waves "$out/$name.fst"); fi
   gt_opt=(--gt "$dir/gt.png" --scale "$scale" --masks "$dir")
   case " $extra " in *" --right "*) gt_opt=() ;; esac
+  # A raw camera pair (data/raw/<camera>/<set>/<pair>): rectified with its calibration.
+  case $set in raw/*) gt_opt=(--calib "$dir/calib.yml") ;; esac
   # shellcheck disable=SC2086
   "$bin" "$dir/left.png" "$dir/right.png" -d "$d" --name "$name" "${gt_opt[@]}" \
     --out "$out/$name.png" --json "$out/$name.json" "${wave_opt[@]}" $extra \

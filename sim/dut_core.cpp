@@ -72,6 +72,30 @@ class PortBus : public driver::RegisterBus {
         break;
       case regs::kDisp: t.cfg_disp_i = v & ((2u << kDispBits) - 1); break;  // NB = DISP_BITS + 1 bits
       case regs::kLrT: t.cfg_lr_t_i = field(v, 0, regs::kLrTBits); break;
+      // Rectification (register map 1.2)
+      case regs::kRectCtrl:
+        t.cfg_rect_en_i = field(v, regs::kRectEnableLsb, 1);
+        t.cfg_rect_step_i = field(v, regs::kRectStepLsb, regs::kRectStepWidth);
+        break;
+      case regs::kRawSize:
+        t.cfg_raw_width_i = field(v, regs::kSizeWidthLsb, regs::kSizeBits);
+        t.cfg_raw_height_i = field(v, regs::kSizeHeightLsb, regs::kSizeBits);
+        break;
+      case regs::kRawStride: t.cfg_raw_stride_i = v; break;
+      case regs::kRawLy + 0: t.cfg_raw_ly_i = v; break;
+      case regs::kRawLy + 4: t.cfg_raw_lu_i = v; break;
+      case regs::kRawLy + 8: t.cfg_raw_lv_i = v; break;
+      case regs::kRawLy + 12: t.cfg_raw_ry_i = v; break;
+      case regs::kRawLy + 16: t.cfg_raw_ru_i = v; break;
+      case regs::kRawLy + 20: t.cfg_raw_rv_i = v; break;
+      case regs::kMeshL: t.cfg_mesh_l_i = v; break;
+      case regs::kMeshR: t.cfg_mesh_r_i = v; break;
+      case regs::kMeshNodes:
+        t.cfg_mesh_nx_i = field(v, regs::kMeshNxLsb, regs::kSizeBits);
+        t.cfg_mesh_ny_i = field(v, regs::kMeshNyLsb, regs::kSizeBits);
+        break;
+      case regs::kValidL: t.cfg_valid_l_i = v; break;
+      case regs::kValidR: t.cfg_valid_r_i = v; break;
       case regs::kCtrl:
         t.cfg_mode_i = field(v, regs::kCtrlModeLsb, regs::kCtrlModeWidth);
         if (v >> regs::kCtrlAbortLsb & 1)
@@ -146,6 +170,23 @@ class PortRecorder {
     scalar("cfg_height_i", regs::kSizeBits, true, t.cfg_height_i);
     scalar("cfg_disp_i", kDispBits + 1, true, t.cfg_disp_i);
     wide("cfg_thr_i", kWeightThresholds * kColorDistBits, true, t.cfg_thr_i);
+    scalar("cfg_rect_en_i", 1, true, t.cfg_rect_en_i);
+    scalar("cfg_rect_step_i", regs::kRectStepWidth, true, t.cfg_rect_step_i);
+    scalar("cfg_raw_width_i", regs::kSizeBits, true, t.cfg_raw_width_i);
+    scalar("cfg_raw_height_i", regs::kSizeBits, true, t.cfg_raw_height_i);
+    scalar("cfg_raw_stride_i", 32, true, t.cfg_raw_stride_i);
+    scalar("cfg_raw_ly_i", 32, true, t.cfg_raw_ly_i);
+    scalar("cfg_raw_lu_i", 32, true, t.cfg_raw_lu_i);
+    scalar("cfg_raw_lv_i", 32, true, t.cfg_raw_lv_i);
+    scalar("cfg_raw_ry_i", 32, true, t.cfg_raw_ry_i);
+    scalar("cfg_raw_ru_i", 32, true, t.cfg_raw_ru_i);
+    scalar("cfg_raw_rv_i", 32, true, t.cfg_raw_rv_i);
+    scalar("cfg_mesh_l_i", 32, true, t.cfg_mesh_l_i);
+    scalar("cfg_mesh_r_i", 32, true, t.cfg_mesh_r_i);
+    scalar("cfg_mesh_nx_i", regs::kSizeBits, true, t.cfg_mesh_nx_i);
+    scalar("cfg_mesh_ny_i", regs::kSizeBits, true, t.cfg_mesh_ny_i);
+    scalar("cfg_valid_l_i", 32, true, t.cfg_valid_l_i);
+    scalar("cfg_valid_r_i", 32, true, t.cfg_valid_r_i);
     scalar("mem_gnt_i", 1, true, t.mem_gnt_i);
     scalar("mem_rvalid_i", 1, true, t.mem_rvalid_i);
     scalar("mem_rdata_i", 32, true, t.mem_rdata_i);
@@ -153,7 +194,7 @@ class PortRecorder {
     scalar("busy_o", 1, false, t.busy_o);
     scalar("done_o", 1, false, t.done_o);
     scalar("error_o", 1, false, t.error_o);
-    scalar("error_code_o", 4, false, t.error_code_o);
+    scalar("error_code_o", regs::kStatusCodeWidth, false, t.error_code_o);
     scalar("cnt_cycles_o", 32, false, t.cnt_cycles_o);
     scalar("cnt_words_read_o", 32, false, t.cnt_words_read_o);
     scalar("cnt_words_written_o", 32, false, t.cnt_words_written_o);

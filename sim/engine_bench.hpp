@@ -3,14 +3,17 @@
 // and scoreboard (every disparity against the reference, both ways).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "axi_memory.hpp"
 #include "memory_model.hpp"
+#include "mcadsw/rectify.hpp"
 #include "mcadsw/ref.hpp"
 
 namespace mcadsw::sim {
@@ -18,6 +21,17 @@ namespace mcadsw::sim {
 // Clock period the waves are written with: 95 MHz, the paper's clock and
 // constraints/mcadsw.sdc's `period` (a test checks they agree).
 constexpr uint64_t kClockPeriodPs = 10526;
+
+// Rectification by the engine (register map 1.2; docs/architecture.md 3.10,
+// docs/algorithm.md 13): the images given to run_engine / run_frames are then the
+// raw views (Wr x Hr, 1 .. 2048 each, the two of one size), and the frame is the
+// meshes' out_width x out_height.
+struct Rectification {
+  Mesh left, right;           // the views' meshes: one step, one rectified size (the frame)
+  // Bytes a row of the raw planes (raster), or from one 4-pixel column to the next
+  // (EngineOptions::tiled); 0: the raw width rounded up to 4, or 4 x the raw height.
+  uint32_t raw_stride = 0;
+};
 
 struct EngineOptions {
   MemoryModel::Latency latency;  // memory latency and back-pressure (sim/axi_memory.hpp)
@@ -53,6 +67,14 @@ struct EngineOptions {
   // Directory for the second simulator (tests/icarus): the memory image and
   // configuration before the run, the disparity plane and counters after it.
   std::string dump_dir;
+  // The engine rectifies the raw views first (RECT_CTRL.ENABLE): besides the planes
+  // above, which it then writes (the rectified planes) and reads, memory holds the
+  // raw planes (raster, or column-tiled with `tiled`), both meshes' memory images
+  // and the two validity bitmaps the engine writes. The expected output: each view
+  // through mcadsw::rectify, the usual reference on the rectified pair, then the
+  // invalid code at every invalid base pixel (mcadsw::mark_rect_invalid); the
+  // rectified planes the mode reads and the bitmaps are compared too.
+  std::optional<Rectification> rect;
 };
 
 struct EngineResult {
@@ -61,6 +83,10 @@ struct EngineResult {
   long words_read = 0, words_written = 0, stall_cycles = 0;
   long read_bursts = 0, write_bursts = 0;  // AXI4 bursts the memory model served in the frame
   long mismatches = 0;           // pixels differing from the reference (incl. never written)
+  // Rectification: of `mismatches`, the rectified planes' pixels and validity
+  // bitmaps' bits that differ (or were not written once); 0 without it.
+  long rect_mismatches = 0;
+  Plane rect_valid;              // rectification: the base view's validity (nonzero valid); otherwise empty
   MemoryModel::Violations bus;   // port and address checks of the memory model
   bool timed_out = false;
   bool error = false;            // engine rejected the configuration
@@ -81,7 +107,8 @@ struct EngineResult {
 
 // Bytes of memory a frame of w x h pixels takes with these options (its planes,
 // padding and guards, from EngineOptions::origin); throws std::invalid_argument
-// for an illegal stride or a layout that does not fit in the 32-bit space.
+// for an illegal stride or a layout that does not fit in the 32-bit space. With
+// EngineOptions::rect, w x h is the raw views' size (the images run_engine takes).
 uint64_t frame_bytes(int w, int h, const EngineOptions& opt);
 
 // Runs one frame. Throws std::runtime_error for harness failures (memory
@@ -114,6 +141,14 @@ struct RawConfig {
   uint32_t base_dl = 0, base_dr = 0, base_mask = 0;  // LR mode's scratch and mask planes
   uint32_t tile_stride = 0;  // input planes column-tiled: bytes per 4-pixel column; 0: raster
   int lr_t = kLrToleranceDefault;
+  // Rectification (register map 1.2): RECT_CTRL, RAW_*, MESH_*, VALID_*; all 0: off.
+  bool rect = false;
+  int rect_step = 0;  // STEP_LOG2
+  int raw_width = 0, raw_height = 0;
+  uint32_t raw_stride = 0;
+  std::array<uint32_t, 6> raw_base{};  // LY LU LV RY RU RV
+  std::array<uint32_t, 2> mesh_base{}, valid_base{};  // left, right
+  int mesh_nx = 0, mesh_ny = 0;
 };
 enum class Fault { kNone, kResetMidFrame, kStartWhileBusy, kAbort };
 struct FaultSpec {
@@ -127,7 +162,11 @@ std::vector<EngineResult> run_frames(const std::vector<Frame>& frames, const Eng
 // Runs one frame with a raw configuration and reports the engine's status,
 // without comparing (fault tests: rejected configurations); any write is
 // counted in bus.bad_writes. STATUS is read again three times (status_changes).
-EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles);
+// `readable`: byte ranges (base, bytes) loaded into memory first, which the frame
+// may read (a rectifier's meshes: its check phase reads them, then may end the
+// frame with code 22 or 23); nothing may be written anywhere.
+EngineResult run_raw(const RawConfig& raw, const EngineOptions& opt, long cycles,
+                     const std::vector<std::pair<uint32_t, std::vector<uint8_t>>>& readable = {});
 
 // The SoC's AXI4-Lite register port (mcadsw_top, engine idle after reset),
 // for register-level tests: write and read return or report the response (0

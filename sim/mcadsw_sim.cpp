@@ -5,6 +5,7 @@
 //              [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]
 //              [--subpixel] [--right] [--out-stride N] [--tiled] [--tile-stride N]
 //              [--origin ADDR] [--packed] [--record-ports FILE]
+//              [--calib CALIB.yml | --mesh MESH.bin] [--step S]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,8 @@
 #include "mcadsw/eval.hpp"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/parse.hpp"
+#include "mcadsw/rectify.hpp"
+#include "mcadsw/regs.hpp"
 #include <opencv2/imgcodecs.hpp>
 
 namespace {
@@ -27,6 +30,7 @@ const char* kUsage =
     "                  [--json FILE] [--waves FILE.fst] [--crop X,Y,W,H] [--stride N] [--dump DIR]\n"
     "                  [--subpixel] [--right] [--lr [-T T]] [--out-stride N] [--ar-interval N]\n"
     "                  [--tiled] [--tile-stride N] [--origin ADDR] [--packed] [--record-ports FILE]\n"
+    "                  [--calib CALIB.yml | --mesh MESH.bin] [--step S]\n"
     "  --latency N     AXI4 memory: N wait states before each burst's first R beat and each B\n"
     "  --random-latency SEED  AXI4 memory: 0..8 more wait states a burst, READY 70 % of the time\n"
     "  --ar-interval N AXI4 memory: an AR accepted at most once in N clocks (default 1)\n"
@@ -53,10 +57,38 @@ const char* kUsage =
     "                  (2 x the width with --subpixel); default: that rounded up to 4\n"
     "  --dump DIR      memory image, configuration and result for tests/icarus/run.sh\n"
     "  --record-ports FILE  the engine core's ports every cycle (mcadsw_sim_core only; make\n"
-    "                  power replays them on the netlist: sim/activity/netlist_activity.cpp)\n";
+    "                  power replays them on the netlist: sim/activity/netlist_activity.cpp)\n"
+    "  --calib CALIB.yml  the engine rectifies first (docs/algorithm.md 13, register map 1.2):\n"
+    "                  LEFT and RIGHT are raw camera views of the calibration's image size\n"
+    "                  (OpenCV YAML or XML: K1 D1 R1 P1 K2 D2 R2 P2, or K1 D1 K2 D2 R T), the\n"
+    "                  rectified frame is of that size; the rectified planes and validity\n"
+    "                  bitmaps are compared too, and an invalid base pixel's output is the\n"
+    "                  invalid code (255; 0xFFFF with --subpixel); --gt counts only valid pixels\n"
+    "  --mesh MESH.bin the same from a mesh memory image (mcadsw mesh: left, then right),\n"
+    "                  for a rectified frame of the raw views' size\n"
+    "  --step S        the mesh step with --calib or --mesh: 8, 16 or 32 (default 16)\n"
+    "                  With rectification, --crop X,Y,W,H takes that region of the rectified\n"
+    "                  frame (X and Y multiples of S; the raw views stay whole). With --lr,\n"
+    "                  dR is 255 and dL flagged at invalid pixels before the post stage\n"
+    "                  (compared too), and the output's invalid left pixels get the code\n";
 
 // The clock of the waves and of constraints/mcadsw.sdc: the paper's 95 MHz (Table III).
 constexpr double kClockMHz = 1e6 / double(mcadsw::sim::kClockPeriodPs);
+
+// The part of a mesh over the region (x, y, w, h) of its frame, x and y multiples of
+// its step: the same nodes, so every pixel's source position is the whole frame's.
+mcadsw::Mesh crop_mesh(const mcadsw::Mesh& m, const cv::Rect& r) {
+  mcadsw::Mesh c = mcadsw::make_mesh(r.width, r.height, m.step_log2);
+  const int i0 = r.x >> m.step_log2, j0 = r.y >> m.step_log2;
+  for (int j = 0; j < c.ny; ++j)
+    for (int i = 0; i < c.nx; ++i) {
+      const size_t from = size_t(j0 + j) * size_t(m.nx) + size_t(i0 + i), to = size_t(j) * size_t(c.nx) + size_t(i);
+      c.u[to] = m.u[from];
+      c.v[to] = m.v[from];
+    }
+  mcadsw::check_mesh(c);
+  return c;
+}
 
 }  // namespace
 
@@ -64,7 +96,8 @@ int main(int argc, char** argv) {
   // A failing RTL assertion prints on stdout and aborts: keep stdout line-buffered
   // so its message is not lost in a pipe's buffer.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  std::string left, right, name, gt, masks, out, json, waves;
+  std::string left, right, name, gt, masks, out, json, waves, calib, mesh;
+  int step = 0;  // --step: 0 not given
   cv::Rect crop;
   constexpr int kNoD = -1000000;
   int d = kNoD;
@@ -115,6 +148,12 @@ int main(int argc, char** argv) {
       else if (a == "--lr") opt.lr = true;
       else if (a == "-T") opt.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
       else if (a == "--out-stride") opt.out_stride = stride(val(), "output stride");
+      else if (a == "--calib") calib = val();
+      else if (a == "--mesh") mesh = val();
+      else if (a == "--step") {
+        step = int(mcadsw::parse_long(val(), "step"));
+        if (step != 8 && step != 16 && step != 32) throw std::invalid_argument("--step must be 8, 16 or 32");
+      }
       else if (a == "--crop") {
         if (std::sscanf(val().c_str(), "%d,%d,%d,%d", &crop.x, &crop.y, &crop.width, &crop.height) != 4)
           throw std::invalid_argument("--crop takes X,Y,W,H");
@@ -138,6 +177,12 @@ int main(int argc, char** argv) {
     mcadsw::check_lr_tolerance(opt.lr_tolerance);
     if (!gt.empty() && (masks.empty() || !(scale > 0)))
       throw std::invalid_argument("--gt needs --scale S > 0 and --masks DIR");
+    if (!calib.empty() && !mesh.empty()) throw std::invalid_argument("--calib and --mesh do not combine");
+    if (step && calib.empty() && mesh.empty()) throw std::invalid_argument("--step needs --calib or --mesh");
+    if (!step) step = 16;
+    if ((!calib.empty() || !mesh.empty()) && crop.area() > 0 && (crop.x % step != 0 || crop.y % step != 0))
+      throw std::invalid_argument("--crop with rectification: X and Y must be multiples of the mesh step " +
+                                  std::to_string(step) + " (a region of the rectified frame on whole mesh cells)");
   } catch (const std::exception& e) {
     std::cerr << "mcadsw_sim: " << e.what() << "\n" << kUsage;
     return 2;
@@ -145,10 +190,12 @@ int main(int argc, char** argv) {
   opt.waves = waves;
   if (name.empty()) name = left;
 
+  const bool rect = !calib.empty() || !mesh.empty();
+  const int step_log2 = step == 8 ? 3 : step == 16 ? 4 : 5;
   try {
     auto load = [&](const std::string& path) {
       cv::Mat img = mcadsw::read_color_image(path);
-      if (crop.area() > 0) {
+      if (crop.area() > 0 && !rect) {  // rectification: a region of the rectified frame (below)
         if ((crop & cv::Rect(0, 0, img.cols, img.rows)) != crop)
           throw std::runtime_error("--crop region is not inside " + path);
         img = img(crop).clone();
@@ -161,21 +208,46 @@ int main(int argc, char** argv) {
                                std::to_string(l.width()) + "x" + std::to_string(l.height()) +
                                " vs " + std::to_string(r.width()) + "x" +
                                std::to_string(r.height()) + ")");
+    // The frame: the images, or with rectification the rectified frame (the raw
+    // views' size, or the --crop region of it).
+    int fw = l.width(), fh = l.height();
+    if (rect) {
+      std::pair<mcadsw::Mesh, mcadsw::Mesh> meshes;
+      if (!calib.empty()) {
+        const mcadsw::StereoRectification cal = mcadsw::read_calibration(calib);
+        if (cal.size.width != l.width() || cal.size.height != l.height())
+          throw std::runtime_error("the raw views are " + std::to_string(l.width()) + "x" +
+                                   std::to_string(l.height()) + ", the calibration's images (" + calib + ") " +
+                                   std::to_string(cal.size.width) + "x" + std::to_string(cal.size.height));
+        meshes = mcadsw::meshes_from_rectification(cal, l.width(), l.height(), step_log2);
+      } else {
+        meshes = mcadsw::read_meshes(mesh, l.width(), l.height(), step_log2);
+      }
+      if (crop.area() > 0) {
+        if ((crop & cv::Rect(0, 0, l.width(), l.height())) != crop)
+          throw std::runtime_error("--crop region is not inside the rectified frame (" + std::to_string(l.width()) +
+                                   "x" + std::to_string(l.height()) + ")");
+        meshes = {crop_mesh(meshes.first, crop), crop_mesh(meshes.second, crop)};
+      }
+      fw = meshes.first.out_width;
+      fh = meshes.first.out_height;
+      opt.rect = mcadsw::sim::Rectification{std::move(meshes.first), std::move(meshes.second)};
+    }
     mcadsw::Config cfg;
     cfg.disparities = d;
     cfg.table = mcadsw::make_weight_table(gamma);
-    mcadsw::check_config(cfg, l.width(), l.height());
-    if (opt.lr && l.width() > mcadsw::kPostMaxWidth)
+    mcadsw::check_config(cfg, fw, fh);
+    if (opt.lr && fw > mcadsw::kPostMaxWidth)
       throw std::invalid_argument("the LR mode takes widths up to " +
                                   std::to_string(mcadsw::kPostMaxWidth) + ", not " +
-                                  std::to_string(l.width()));
-    if (opt.tile_stride && opt.tile_stride < 4 * uint32_t(l.height()))
+                                  std::to_string(fw));
+    if (opt.tile_stride && opt.tile_stride < 4 * uint32_t(fh))
       throw std::invalid_argument("tile stride " + std::to_string(opt.tile_stride) +
-                                  " is below 4 x the height " + std::to_string(l.height()));
-    if (opt.stride && opt.stride < uint32_t(l.width()))
+                                  " is below 4 x the height " + std::to_string(fh));
+    if (opt.stride && opt.stride < uint32_t(fw))
       throw std::invalid_argument("stride " + std::to_string(opt.stride) + " is below the width " +
-                                  std::to_string(l.width()));
-    const int out_row = l.width() * (opt.subpixel ? 2 : 1);
+                                  std::to_string(fw));
+    const int out_row = fw * (opt.subpixel ? 2 : 1);
     if (opt.out_stride && opt.out_stride < uint32_t(out_row))
       throw std::invalid_argument("output stride " + std::to_string(opt.out_stride) +
                                   " is below the output row of " + std::to_string(out_row) +
@@ -193,11 +265,22 @@ int main(int argc, char** argv) {
         cv::Mat m = cv::imread(p, cv::IMREAD_UNCHANGED);
         return crop.area() > 0 && !m.empty() ? cv::Mat(m(crop)) : m;
       };
+      // Rectification: the pixels valid after it (the base view's), as
+      // docs/algorithm.md 13.7 counts them.
+      const cv::Mat invalid = rect ? cv::Mat(mcadsw::to_mat(res.rect_valid) == 0) : cv::Mat();
+      const auto rd_mask = [&](const std::string& p) {
+        cv::Mat m = rd(p);
+        if (!invalid.empty() && !m.empty() && m.size() == invalid.size()) {
+          m = m.clone();
+          m.setTo(0, invalid);
+        }
+        return m;
+      };
       mcadsw::EvalOptions eo;
       if (opt.subpixel) eo.disp_scale = mcadsw::kSubpixelScale;
       const cv::Mat map = opt.subpixel ? mcadsw::to_mat(res.disparity16) : mcadsw::to_mat(res.disparity);
-      err_all = mcadsw::evaluate(map, rd(gt), scale, rd(masks + "/nonocc.png"), rd(masks + "/all.png"),
-                                 rd(masks + "/disc.png"), eo)
+      err_all = mcadsw::evaluate(map, rd(gt), scale, rd_mask(masks + "/nonocc.png"), rd_mask(masks + "/all.png"),
+                                 rd_mask(masks + "/disc.png"), eo)
                     .all;
     }
     if (!out.empty()) {
@@ -208,16 +291,19 @@ int main(int argc, char** argv) {
     }
     const double pixels = double(res.width) * res.height;
     const bool ok = res.clean();
-    std::printf("%-16s %4dx%-4d D=%-2d%s%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
+    std::printf("%-16s %4dx%-4d D=%-2d%s%s%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
                 "reads/px %5.2f  stalls %7ld  rbursts %7ld  wbursts %6ld  %s",
                 name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "",
-                opt.right ? " right" : opt.lr ? " lr" : "", opt.tiled ? " tiled" : "", res.cycles, kClockMHz * 1e6 / res.cycles,
+                opt.right ? " right" : opt.lr ? " lr" : "", opt.tiled ? " tiled" : "",
+                rect ? (" rect S=" + std::to_string(step)).c_str() : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
                 res.read_bursts, res.write_bursts, ok ? "BIT-EXACT" : "FAILED");
     if (err_all >= 0) std::printf("  all %.2f%%", err_all);
     std::printf("  (%.1f s, %.0f kcycles/s)\n", res.sim_seconds, res.cycles / res.sim_seconds / 1e3);
     if (res.timed_out) std::printf("  TIMEOUT: the engine did not finish\n");
-    if (res.error) std::printf("  engine rejected the configuration, error code %d\n", res.error_code);
+    if (res.error)
+      std::printf("  engine rejected the configuration or ended the frame, error code %d: %s\n", res.error_code,
+                  mcadsw::regs::error_text(res.error_code));
     std::fputs(res.report.c_str(), stdout);
     if (!json.empty()) {
       std::ofstream j(json);
@@ -226,6 +312,10 @@ int main(int argc, char** argv) {
         << ", \"right\": " << (opt.right ? "true" : "false")
         << ", \"lr\": " << (opt.lr ? "true" : "false")
         << ", \"tiled\": " << (opt.tiled ? "true" : "false")
+        << ", \"rect\": " << (rect ? "true" : "false")
+        << ", \"rect_step\": " << (rect ? std::to_string(step) : "null")
+        << ", \"rect_mismatches\": " << res.rect_mismatches
+        << ", \"error_code\": " << res.error_code
         << ", \"cycles\": " << res.cycles
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
         << ", \"stall_cycles\": " << res.stall_cycles << ", \"read_bursts\": " << res.read_bursts

@@ -13,6 +13,14 @@
 // same case run again on the same engine, without a reset, must be exact.
 // Each case lies somewhere in the 32-bit address space (place(): origin, packed
 // planes, strides padded by up to 2^30 bytes).
+// One case in four is rectified by the engine first (issue 32, register map 1.2):
+// its images are then raw views of 0.6 .. 1.6 times the frame each way (at least
+// 8 x 4), made as above, and two random smooth meshes at S = 8, 16 or 32 (some
+// reaching outside the raw views: invalid pixels; in a third of them the right
+// view's mesh is the left's) rectify them to the frame; the raw planes' stride is
+// padded like the others. That draw and the meshes come from a generator of their
+// own, so a seed's other cases are those of earlier versions; every mode, layout,
+// latency and interruption above combines with it.
 // Every pixel is compared; a failing case prints the one command that reruns it
 // alone.
 // Exit status: 0 all cases bit-exact, 1 a mismatch or harness error, 2 usage.
@@ -27,7 +35,9 @@
 #include "engine_bench.hpp"
 #include "mcadsw/parse.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/rectify.hpp"
 #include "mcadsw/regs.hpp"
+#include "random_mesh.hpp"
 
 namespace {
 
@@ -41,11 +51,14 @@ enum class Interrupt { kNone, kRead, kWrite, kAbort };
 
 struct Case {
   std::string pattern;
-  YuvImage left, right;
+  YuvImage left, right;  // rectified (opt.rect): the raw views
   Config cfg;
   sim::EngineOptions opt;
   Interrupt interrupt = Interrupt::kNone;
   long abort_at = 0;  // kAbort: cycles after the start
+  // The frame: the images' size, or the meshes' rectified size.
+  int width() const { return opt.rect ? opt.rect->left.out_width : left.width(); }
+  int height() const { return opt.rect ? opt.rect->left.out_height : left.height(); }
 };
 
 Plane pattern_plane(const std::string& kind, int w, int h, std::mt19937& rng) {
@@ -89,10 +102,14 @@ YuvImage right_view(const YuvImage& l, std::mt19937& rng) {
 // are packed at 4-byte alignment in every other case; the origin is 0 in a
 // third of the cases, the highest that fits in a third, anywhere in the rest.
 // An interrupted case runs two frames, one after the other in memory.
+// Rectified, the raw planes' stride is padded too (drawn after the others, so
+// only rectified cases' later draws move).
 void place(Case& c, uint32_t seed, int k) {
   std::seed_seq seq{seed, uint32_t(k), 0x706c6163u};
   std::mt19937 rng(seq);
-  const int w = c.left.width(), h = c.left.height();
+  const int w = c.width(), h = c.height();                      // the frame
+  const int iw = c.left.width(), ih = c.left.height();          // the images (rectified: raw)
+  const uint32_t raw_row = c.opt.tiled ? 4 * uint32_t(ih) : uint32_t(iw);  // least raw stride
   const uint64_t frames = c.interrupt == Interrupt::kNone ? 1 : 2;
   if (rng() % 3 == 0) {
     const auto pad = [&rng](uint32_t& stride, uint32_t row) {
@@ -103,9 +120,10 @@ void place(Case& c, uint32_t seed, int k) {
     pad(c.opt.stride, uint32_t(w));
     pad(c.opt.out_stride, row);
     if (c.opt.tiled) pad(c.opt.tile_stride, 4 * uint32_t(h));
+    if (c.opt.rect) pad(c.opt.rect->raw_stride, raw_row);
     const auto fits = [&] {
       try {
-        return frames * sim::frame_bytes(w, h, c.opt) <= (uint64_t(1) << 32);
+        return frames * sim::frame_bytes(iw, ih, c.opt) <= (uint64_t(1) << 32);
       } catch (const std::invalid_argument&) {
         return false;
       }
@@ -116,12 +134,13 @@ void place(Case& c, uint32_t seed, int k) {
       uint32_t min = (uint32_t(w) + 3) / 4 * 4;
       if (c.opt.out_stride > *s) s = &c.opt.out_stride, min = (row + 3) / 4 * 4;
       if (c.opt.tiled && c.opt.tile_stride > *s) s = &c.opt.tile_stride, min = 4 * uint32_t(h);
+      if (c.opt.rect && c.opt.rect->raw_stride > *s) s = &c.opt.rect->raw_stride, min = (raw_row + 3) / 4 * 4;
       if (*s - min < 8) throw std::logic_error("place: case " + std::to_string(k) + " does not fit below 2^32");
       *s = min + (*s - min) / 8 * 4;
     }
   }
   c.opt.packed = rng() % 2;
-  const uint64_t room = (uint64_t(1) << 32) - frames * sim::frame_bytes(w, h, c.opt);
+  const uint64_t room = (uint64_t(1) << 32) - frames * sim::frame_bytes(iw, ih, c.opt);
   const int where = int(rng() % 3);
   c.opt.origin = where == 0 ? 0u
                  : where == 1 ? uint32_t(room / 4096 * 4096)
@@ -131,6 +150,11 @@ void place(Case& c, uint32_t seed, int k) {
 Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvImage>>& real) {
   std::seed_seq seq{seed, uint32_t(k), 0x6d636164u};
   std::mt19937 rng(seq);
+  // Rectification in one case out of four, from a generator of its own (the
+  // draws of rng stay those of earlier versions in the other cases).
+  std::seed_seq rect_seq{seed, uint32_t(k), 0x72656374u};
+  std::mt19937 rect_rng(rect_seq);
+  const bool rect = rect_rng() % 4 == 0;
   Case c;
   // Size: mostly small, some smaller than the 31x31 window, a few wide strips
   // up to the maximum width (kept short so a case stays fast).
@@ -146,20 +170,28 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
     w = std::uniform_int_distribution<int>(8, 110)(rng);
     h = std::uniform_int_distribution<int>(8, 60)(rng);
   }
+  // Rectified: the images are the raw views, iw x ih, 0.6 .. 1.6 times the frame
+  // (w x h, the meshes' size) each way, at least 8 x 4.
+  int iw = w, ih = h;
+  if (rect) {
+    std::uniform_real_distribution<double> ratio(0.6, 1.6);
+    iw = std::clamp(int(std::lround(w * ratio(rect_rng))), 8, kMaxWidth);
+    ih = std::clamp(int(std::lround(h * ratio(rect_rng))), 4, kMaxHeight);
+  }
   static const char* kPatterns[] = {"noise", "flat", "stripes", "gradient", "real"};
   c.pattern = kPatterns[std::uniform_int_distribution<int>(0, real.empty() ? 3 : 4)(rng)];
   if (c.pattern == "real") {
     const auto& pair = real[rng() % real.size()];
-    const int x0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.width() - w))(rng);
-    const int y0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.height() - h))(rng);
-    c.left = crop(pair.first, x0, y0, w, h);
-    c.right = crop(pair.second, x0, y0, w, h);
+    const int x0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.width() - iw))(rng);
+    const int y0 = std::uniform_int_distribution<int>(0, std::max(0, pair.first.height() - ih))(rng);
+    c.left = crop(pair.first, x0, y0, iw, ih);
+    c.right = crop(pair.second, x0, y0, iw, ih);
   } else {
-    c.left = YuvImage{pattern_plane(c.pattern, w, h, rng), pattern_plane(c.pattern, w, h, rng),
-                      pattern_plane(c.pattern, w, h, rng)};
+    c.left = YuvImage{pattern_plane(c.pattern, iw, ih, rng), pattern_plane(c.pattern, iw, ih, rng),
+                      pattern_plane(c.pattern, iw, ih, rng)};
     if (rng() % 4 == 0) {
-      c.right = YuvImage{pattern_plane("noise", w, h, rng), pattern_plane("noise", w, h, rng),
-                         pattern_plane("noise", w, h, rng)};
+      c.right = YuvImage{pattern_plane("noise", iw, ih, rng), pattern_plane("noise", iw, ih, rng),
+                         pattern_plane("noise", iw, ih, rng)};
     } else {
       c.right = right_view(c.left, rng);
     }
@@ -209,7 +241,8 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
   }
   // An interruption in one case out of eight (drawn last). The burst numbers
   // stay inside the first frame: it reads more than a word a pixel (tiled: more
-  // than a burst in 8 pixels) and writes at least a burst a block row.
+  // than a burst in 8 pixels) and writes at least a burst a block row (rectified:
+  // more of both, the rectify pass's before).
   if (rng() % 8 == 0) {
     const int kind = int(rng() % 3);
     const int resp = 2 + int(rng() % 2);
@@ -225,6 +258,20 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
       c.interrupt = Interrupt::kAbort;
       c.abort_at = std::uniform_int_distribution<long>(1, 20000)(rng);
     }
+  }
+  // The meshes (rect_rng): S = 8, 16 or 32; the right view's the left's in a
+  // third of the cases (the pair's own disparity), else one of its own. The raw
+  // planes' stride: default (raw width rounded up to 4, tiled 4 x the raw height)
+  // in a quarter of the cases, else up to 4 KiB (tiled: 1200 bytes) more.
+  if (rect) {
+    const int s = 3 + int(rect_rng() % 3);
+    sim::Rectification r;
+    r.left = sim::random_fitting_mesh(w, h, s, iw, ih, rect_rng);
+    r.right = rect_rng() % 3 == 0 ? r.left : sim::random_fitting_mesh(w, h, s, iw, ih, rect_rng);
+    if (rect_rng() % 4 != 0)
+      r.raw_stride = c.opt.tiled ? uint32_t(4 * ih + 4 * std::uniform_int_distribution<int>(1, 300)(rect_rng))
+                                 : uint32_t((iw + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 1024)(rect_rng));
+    c.opt.rect = std::move(r);
   }
   place(c, seed, k);
   return c;
@@ -278,12 +325,19 @@ int main(int argc, char** argv) {
   const int first = only >= 0 ? only : 0, last = only >= 0 ? only : cases - 1;
   long failures = 0, run = 0, cycles = 0;
   for (int k = first; k <= last; ++k) {
-    const Case c = make_case(seed, k, real);
-    sim::EngineResult r;
+    Case c;
     std::string err;
+    try {
+      c = make_case(seed, k, real);
+    } catch (const std::exception& e) {
+      err = std::string("making the case: ") + e.what();
+    }
+    sim::EngineResult r;
     std::string ended;  // the interrupted frame's fault, if any
     try {
-      if (c.interrupt == Interrupt::kNone) {
+      if (!err.empty()) {
+        // the case could not be made: reported below
+      } else if (c.interrupt == Interrupt::kNone) {
         r = sim::run_engine(c.left, c.right, c.cfg, c.opt);
       } else {
         const sim::Frame f{c.left, c.right, c.cfg};
@@ -299,7 +353,8 @@ int main(int argc, char** argv) {
         else if (!late_abort && (!first.error || first.error_code != code))
           ended = "the interrupted frame ended with code " + std::to_string(first.error_code) +
                   ", expected " + std::to_string(code);
-        else if (first.bus.protocol + first.bus.bad_reads + first.bus.bad_writes + first.bus.double_writes)
+        else if (first.bus.protocol + first.bus.bad_reads + first.bus.bad_writes + first.bus.double_writes +
+                 first.bus.early_reads)
           ended = "the interrupted frame broke a bus rule:\n" + first.bus.describe();
         r = res[1];
       }
@@ -311,15 +366,24 @@ int main(int argc, char** argv) {
     const bool ok = err.empty() && ended.empty() && r.clean();
     static const char* kInterrupt[] = {"", "  after a read error", "  after a write error",
                                        "  after an abort"};
-    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s at 0x%08x%s  %s latency  %8ld cycles  %s%s\n", k,
-                c.pattern.c_str(), c.left.width(), c.left.height(), c.cfg.disparities,
+    // Rectified: the step, the raw views' size and the raw planes' stride.
+    std::string rect;
+    if (c.opt.rect) {
+      const uint32_t rs = c.opt.rect->raw_stride ? c.opt.rect->raw_stride
+                          : c.opt.tiled ? 4u * unsigned(c.left.height())
+                                        : unsigned((c.left.width() + 3) / 4 * 4);
+      rect = " rect S=" + std::to_string(c.opt.rect->left.step()) + " raw " + std::to_string(c.left.width()) + "x" +
+             std::to_string(c.left.height()) + " (stride " + std::to_string(rs) + ")";
+    }
+    std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s at 0x%08x%s%s  %s latency  %8ld cycles  %s%s\n", k,
+                c.pattern.c_str(), c.width(), c.height(), c.cfg.disparities,
                 c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
-                c.opt.stride ? c.opt.stride : unsigned((c.left.width() + 3) / 4 * 4),
+                c.opt.stride ? c.opt.stride : unsigned((c.width() + 3) / 4 * 4),
                 c.opt.tiled ? (" tile " + std::to_string(c.opt.tile_stride ? c.opt.tile_stride
-                                                                         : 4u * unsigned(c.left.height())))
+                                                                         : 4u * unsigned(c.height())))
                                   .c_str()
                             : "",
-                unsigned(c.opt.origin), c.opt.packed ? " packed" : "",
+                unsigned(c.opt.origin), c.opt.packed ? " packed" : "", rect.c_str(),
                 c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED", kInterrupt[int(c.interrupt)]);
     if (!ok) {
@@ -328,8 +392,10 @@ int main(int argc, char** argv) {
       if (!ended.empty()) std::printf("  %s\n", ended.c_str());
       if (r.timed_out) std::printf("  the engine did not finish\n");
       if (r.error) std::printf("  configuration rejected, code %d\n", r.error_code);
-      std::printf("  %ld mismatches, %ld memory-port violations\n%s", r.mismatches, r.bus.total(),
-                  r.report.c_str());
+      std::printf("  %ld mismatches%s, %ld memory-port violations\n%s", r.mismatches,
+                  c.opt.rect ? (" (" + std::to_string(r.rect_mismatches) + " in the rectified planes and bitmaps)").c_str()
+                             : "",
+                  r.bus.total(), r.report.c_str());
       std::printf("  reproduce: %s --seed %u --case %d\n", argv[0], seed, k);
     }
     std::fflush(stdout);

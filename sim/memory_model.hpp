@@ -15,6 +15,11 @@
 //   - the LR mode writes three more planes (dR, the output, the mask) and reads
 //     back the two scratch planes: `more_outs`, each written at most once a
 //     byte, read only where marked readable.
+//   - rectification (issue 32) adds areas of their own geometry (`areas`): raw
+//     planes and meshes read only, rectified planes and validity bitmaps written
+//     at most once a byte and read back only where already written (a read
+//     overtaking the write of what it reads); the output pixels of invalid base
+//     pixels may be written twice (`out_rewrite`: the pass, then the mark step).
 // Violations are counted, the first of each kind described; a word address
 // outside the modelled range or misaligned is a harness error (exception).
 //
@@ -56,6 +61,22 @@ class MemoryModel {
     uint32_t base = 0, stride = 0;
     int bpp = 1;
     bool readable = false;    // read back by the frame (the LR mode's scratch planes)
+    // Per pixel (y * width + x): nonzero where it may be written twice (the LR mode's
+    // planes with rectification: the pass or post stage, then the mark step); empty: once.
+    std::vector<uint8_t> rewrite{};
+  };
+  // A plane or byte range of its own size and layout (the rectifier's, issue 32):
+  // pixel (x, y) of width x height at base + y * stride + x (raster), or with
+  // tile != 0 at base + (x / 4) * tile + 4 * y + x % 4; a byte range of n bytes is
+  // a plane of n x 1, stride n.
+  struct Area {
+    std::string name;         // for the messages: "raw plane LY", "mesh L", ...
+    uint32_t base = 0;
+    int width = 0, height = 0;
+    uint32_t stride = 0, tile = 0;
+    bool writable = false;    // written by the frame, each byte at most once
+    bool readable = true;
+    bool written_first = false;  // readable only where the frame wrote it before
   };
   struct Regions {
     std::vector<uint32_t> inputs;
@@ -66,6 +87,10 @@ class MemoryModel {
     bool out_readable = false;
     std::vector<OutPlane> more_outs;
     uint32_t tile = 0;        // input planes column-tiled: bytes per 4-pixel column
+    std::vector<Area> areas{};  // further planes (rectification)
+    // Per output pixel (y * width + x): nonzero where it may be written twice (the
+    // rectifier's mark step after the pass); empty: once everywhere.
+    std::vector<uint8_t> out_rewrite{};
   };
 
   // What the checks found (counts since the last set_regions()).
@@ -75,9 +100,11 @@ class MemoryModel {
     long double_writes = 0;      // output bytes written a second time
     long unstable_requests = 0;  // stalled requests changed or withdrawn before their grant
     long protocol = 0;           // AXI4 rules broken (sim/axi_memory.hpp)
+    long early_reads = 0;        // reads of a byte the frame writes, before its write landed
     std::string first_bad_read, first_bad_write, first_double_write, first_unstable, first_protocol;
+    std::string first_early_read;
     long total() const {
-      return bad_reads + bad_writes + double_writes + unstable_requests + protocol;
+      return bad_reads + bad_writes + double_writes + unstable_requests + protocol + early_reads;
     }
     std::string describe() const;
   };
@@ -113,12 +140,28 @@ class MemoryModel {
     if (regions_.out_stride == 0) regions_.out_stride = regions_.stride;
     outs_ = {{regions_.out, regions_.out_stride, r.out_bpp, r.out_readable}};
     outs_.insert(outs_.end(), r.more_outs.begin(), r.more_outs.end());
-    written_.assign(outs_.size(), {});
+    written_.assign(outs_.size() + r.areas.size(), {});
     for (size_t k = 0; k < outs_.size(); ++k)
       written_[k].assign(size_t(r.width) * size_t(outs_[k].bpp) * size_t(r.height), 0);
+    for (size_t k = 0; k < r.areas.size(); ++k)
+      if (r.areas[k].writable)
+        written_[outs_.size() + k].assign(size_t(r.areas[k].width) * size_t(r.areas[k].height), 0);
     v_ = Violations{};
   }
   const Violations& violations() const { return v_; }
+  // Times byte `a` was written since set_regions(), or -1 when it belongs to no
+  // plane the frame writes (the scoreboard's "never written" with rectification,
+  // where the output's "never written" fill is a legal value).
+  int times_written(uint32_t a) const {
+    int x, y;
+    for (size_t k = 0; k < outs_.size(); ++k)
+      if (pixel_of(outs_[k].base, outs_[k].stride, uint32_t(regions_.width * outs_[k].bpp), a, x, y))
+        return written_[k][size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x)];
+    for (size_t k = 0; k < regions_.areas.size(); ++k)
+      if (regions_.areas[k].writable && area_pixel(regions_.areas[k], a, x, y))
+        return written_[outs_.size() + k][size_t(y) * size_t(regions_.areas[k].width) + size_t(x)];
+    return -1;
+  }
 
   // Drives rvalid/rdata for this cycle, and gnt low until serve() decides it;
   // call before evaluating the cycle.
@@ -246,6 +289,24 @@ class MemoryModel {
     return x < r.width && y < r.height;
   }
 
+  // Byte `a` of an area: its pixel (x, y), or false.
+  static bool area_pixel(const Area& r, uint32_t a, int& x, int& y) {
+    if (r.width <= 0 || r.height <= 0 || a < r.base) return false;
+    const uint32_t off = a - r.base;
+    if (r.tile == 0) {
+      if (r.stride == 0 || off / r.stride >= uint32_t(r.height) || off % r.stride >= uint32_t(r.width))
+        return false;
+      x = int(off % r.stride);
+      y = int(off / r.stride);
+      return true;
+    }
+    const uint32_t col = off / r.tile, in = off % r.tile;
+    if (uint64_t(col) * 4 >= uint64_t(r.width)) return false;
+    x = int(4 * col + in % 4);
+    y = int(in / 4);
+    return x < r.width && y < r.height;
+  }
+
   void access(const Request& q) {
     if (q.we) {
       write_word(q.addr, q.be, q.wdata);
@@ -283,6 +344,21 @@ class MemoryModel {
         int x, y;
         inside = pixel_of(o.base, o.stride, uint32_t(regions_.width * o.bpp), addr + b, x, y);
       }
+    // The rectification's areas: a byte the frame writes must have been written
+    // before it is read (each byte of the word that is a pixel of such an area).
+    for (size_t k = 0; k < regions_.areas.size(); ++k) {
+      const Area& ar = regions_.areas[k];
+      if (!ar.readable) continue;
+      for (int b = 0; b < 4; ++b) {
+        int x, y;
+        if (!area_pixel(ar, addr + b, x, y)) continue;
+        inside = true;
+        if (ar.written_first && ar.writable &&
+            written_[outs_.size() + k][size_t(y) * size_t(ar.width) + size_t(x)] == 0 && v_.early_reads++ == 0)
+          v_.first_early_read = "cycle " + std::to_string(cycle_) + ": read of 0x" + hex(addr) + ", " + ar.name +
+                                " (" + std::to_string(x) + "," + std::to_string(y) + ") not written yet";
+      }
+    }
     if (!inside && v_.bad_reads++ == 0)
       v_.first_bad_read = "read of 0x" + hex(addr) + ", no pixel of an input plane";
   }
@@ -317,13 +393,29 @@ inline void MemoryModel::write_word(uint32_t addr, unsigned be, uint32_t wdata) 
                      addr + b, x, y))
       ++k;
     if (k == outs_.size()) {
-      if (v_.bad_writes++ == 0) v_.first_bad_write = "byte write to 0x" + hex(addr + b);
-    } else if (written_[k][size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x)]++ &&
-               v_.double_writes++ == 0) {
-      v_.first_double_write = "pixel (" + std::to_string(x / outs_[k].bpp) + "," +
-                              std::to_string(y) + ") of output plane " + std::to_string(k) +
-                              " written again (word 0x" + hex(addr) + ", be " + std::to_string(be) +
-                              ")";
+      // The rectification's areas (none without it): a writable one, once a byte.
+      size_t a = 0;
+      while (a < regions_.areas.size() && !area_pixel(regions_.areas[a], addr + b, x, y)) ++a;
+      if (a == regions_.areas.size() || !regions_.areas[a].writable) {
+        if (v_.bad_writes++ == 0)
+          v_.first_bad_write = "byte write to 0x" + hex(addr + b) +
+                               (a == regions_.areas.size() ? "" : " (" + regions_.areas[a].name + ", read only)");
+      } else if (written_[outs_.size() + a][size_t(y) * size_t(regions_.areas[a].width) + size_t(x)]++ &&
+                 v_.double_writes++ == 0) {
+        v_.first_double_write = regions_.areas[a].name + " byte (" + std::to_string(x) + "," + std::to_string(y) +
+                                ") written again (word 0x" + hex(addr) + ", be " + std::to_string(be) + ")";
+      }
+    } else {
+      // The output pixels the mark step rewrites (out_rewrite) may be written twice.
+      const size_t i = size_t(y) * size_t(regions_.width * outs_[k].bpp) + size_t(x);
+      const size_t px = size_t(y) * size_t(regions_.width) + size_t(x / outs_[k].bpp);
+      const std::vector<uint8_t>& rw = k == 0 ? regions_.out_rewrite : outs_[k].rewrite;
+      const int allowed = 1 + (px < rw.size() && rw[px] != 0);
+      if (written_[k][i]++ >= allowed && v_.double_writes++ == 0)
+        v_.first_double_write = "pixel (" + std::to_string(x / outs_[k].bpp) + "," +
+                                std::to_string(y) + ") of output plane " + std::to_string(k) +
+                                " written again (word 0x" + hex(addr) + ", be " + std::to_string(be) +
+                                ")";
     }
     byte(uint64_t(addr) + b) = uint8_t(wdata >> (8 * b));
   }
@@ -339,6 +431,7 @@ inline std::string MemoryModel::Violations::describe() const {
   line(double_writes, "output bytes written twice", first_double_write);
   line(unstable_requests, "stalled requests changed before their grant", first_unstable);
   line(protocol, "AXI4 protocol violations", first_protocol);
+  line(early_reads, "reads of bytes the frame writes before their write landed", first_early_read);
   return s;
 }
 

@@ -9,4 +9,8 @@ package mcadsw_rect_pkg;
   localparam int RECT_BUF_H       = 32;  // rectifier tile buffer: source rows
   localparam int RECT_INVALID_Y   = 0;  // an invalid rectified pixel: Y
   localparam int RECT_INVALID_UV  = 128;  // an invalid rectified pixel: U and V
+  localparam int RECT_INVALID_D8  = 255;  // the depth of an invalid base pixel, 8-bit output
+  localparam int RECT_INVALID_D16 = 65535;  // the depth of an invalid base pixel, 16-bit output
+  localparam int RECT_FLAG_D8     = 128;  // LR: dL of an invalid left pixel, bytes (the post check fails it)
+  localparam int RECT_FLAG_D16    = 32768;  // LR: dL of an invalid left pixel, scratch halfwords
 endpackage

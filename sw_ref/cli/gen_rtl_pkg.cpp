@@ -46,7 +46,7 @@ void print_regs_pkg() {
   // Icarus 11 crashes on a variable of a package enum type (docs/architecture.md,
   // tool support), so the RTL carries codes as logic [ERR_BITS-1:0] named by these.
   std::printf("  // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,\n");
-  std::printf("  // 13..15 a frame ended early\n");
+  std::printf("  // 13..15 a frame ended early, 16..23 rectification (docs/registers.md)\n");
   std::printf("  localparam int ERR_BITS = %d;\n", kErrCodeBits);
   std::printf("  typedef enum logic [ERR_BITS-1:0] {\n");
   const int nerr = int(sizeof(kErrors) / sizeof(kErrors[0]));
@@ -85,7 +85,9 @@ int print_regs_doc() {
                   access_name(f.access), f.doc);
   }
   std::printf("\nError codes (STATUS.ERROR_CODE): 1 to 12 reject a start (the configuration check,\n");
-  std::printf("in this order of priority; nothing is read or written), 13 to 15 end a frame early.\n");
+  std::printf("in this order of priority; nothing is read or written), 13 to 15 end a frame early;\n");
+  std::printf("with RECT_CTRL.ENABLE, 16 to 21 reject a start after 1 to 12, and 22, 23 end it in the\n");
+  std::printf("rectify pass's check phase (nothing written either way).\n");
   std::printf("The RTL names them `mcadsw_pkg::Err<Name>`.\n\n");
   std::printf("| code | name | meaning |\n|---|---|---|\n");
   for (const Error& e : kErrors) std::printf("| %d | %s | %s |\n", e.code, e.name, e.doc);
@@ -124,6 +126,10 @@ int print_rect_pkg() {
   p("RECT_BUF_H", kRectBufH, "rectifier tile buffer: source rows");
   p("RECT_INVALID_Y", kRectInvalidY, "an invalid rectified pixel: Y");
   p("RECT_INVALID_UV", kRectInvalidUV, "an invalid rectified pixel: U and V");
+  p("RECT_INVALID_D8", kRectInvalidDisp8, "the depth of an invalid base pixel, 8-bit output");
+  p("RECT_INVALID_D16", kRectInvalidDisp16, "the depth of an invalid base pixel, 16-bit output");
+  p("RECT_FLAG_D8", kRectFlagDisp8, "LR: dL of an invalid left pixel, bytes (the post check fails it)");
+  p("RECT_FLAG_D16", kRectFlagDisp16, "LR: dL of an invalid left pixel, scratch halfwords");
   std::printf("endpackage\n");
   return 0;
 }

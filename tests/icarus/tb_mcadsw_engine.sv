@@ -3,7 +3,8 @@
 // harness dumped (mcadsw_sim --dump DIR), programmed by replaying the register
 // writes the C++ driver made for that frame (DIR/regs.txt, "offset value" in hex;
 // reg_write below maps each register of docs/registers.md onto the engine's
-// configuration ports, CTRL.START onto a start pulse), with a zero-latency AXI4 memory timed
+// configuration ports, CTRL.START onto a start pulse; the rectification inputs are
+// tied to 0: a frame with RECT_CTRL.ENABLE set fails), with a zero-latency AXI4 memory timed
 // as the C++ model's (sim/axi_memory.hpp, latency 0): always ready, an R beat
 // the cycle after its AR, a burst written and answered (B) the cycle after its
 // AW and last W beat are both in. Checks that no output is X or Z after reset,
@@ -32,7 +33,7 @@ module tb_mcadsw_engine;
   logic [NTHR*DCB-1:0] cfg_thr;
   logic start = 1'b0;
   logic busy, done, error;
-  logic [3:0] error_code;
+  logic [7:0] error_code;                  // STATUS.ERROR_CODE: 0 .. 24
   logic [31:0] cnt_cycles, cnt_rd, cnt_wr, cnt_stall;
   logic mem_req, mem_gnt, mem_we, mem_rvalid, wr_idle, bus_idle, rd_err, wr_err;
   logic [3:0] mem_be, mem_len;
@@ -54,7 +55,14 @@ module tb_mcadsw_engine;
     .cfg_base_dl_i (cfg_base_dl), .cfg_base_dr_i (cfg_base_dr), .cfg_base_mask_i (cfg_base_mask),
     .cfg_lr_t_i (cfg_lr_t),
     .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
-    .cfg_thr_i (cfg_thr), .start_i (start),
+    .cfg_thr_i (cfg_thr),
+    // The rectifier (RECT_CTRL and the registers after it): off, every input 0.
+    .cfg_rect_en_i (1'b0), .cfg_rect_step_i (3'd0), .cfg_raw_width_i (12'd0), .cfg_raw_height_i (12'd0),
+    .cfg_raw_stride_i (32'd0), .cfg_raw_ly_i (32'd0), .cfg_raw_lu_i (32'd0), .cfg_raw_lv_i (32'd0),
+    .cfg_raw_ry_i (32'd0), .cfg_raw_ru_i (32'd0), .cfg_raw_rv_i (32'd0),
+    .cfg_mesh_l_i (32'd0), .cfg_mesh_r_i (32'd0), .cfg_mesh_nx_i (12'd0), .cfg_mesh_ny_i (12'd0),
+    .cfg_valid_l_i (32'd0), .cfg_valid_r_i (32'd0),
+    .start_i (start),
     .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_rd), .cnt_words_written_o (cnt_wr),
     .cnt_stall_o (cnt_stall),
@@ -137,7 +145,7 @@ module tb_mcadsw_engine;
   end
 
   // No X or Z on any output once reset is released.
-  logic [127:0] outs;
+  logic [3 + $bits(error_code) + 4 * 32 + 5 - 1:0] outs;   // every bit of the concatenation below
   assign outs = {busy, done, error, error_code, cnt_cycles, cnt_rd, cnt_wr, cnt_stall, arvalid,
                  awvalid, wvalid, rready, bready};
   longint xchecks = 0;
@@ -206,6 +214,17 @@ module tb_mcadsw_engine;
         end
       end
       mcadsw_pkg::REG_STATUS, mcadsw_pkg::REG_IRQ_ENABLE: ;  // no register block, no interrupt
+      // Rectification: the engine's inputs are tied to 0 above, so only a frame
+      // without it (ENABLE 0; the driver writes the other registers all the same).
+      mcadsw_pkg::REG_RECT_CTRL:
+        if (v[mcadsw_pkg::RECT_CTRL_ENABLE_LSB]) begin
+          $display("FAIL: RECT_CTRL.ENABLE set: this bench ties the rectification inputs to 0");
+          $finish;
+        end
+      mcadsw_pkg::REG_RAW_SIZE, mcadsw_pkg::REG_RAW_STRIDE, mcadsw_pkg::REG_RAW_LY,
+      mcadsw_pkg::REG_RAW_LU, mcadsw_pkg::REG_RAW_LV, mcadsw_pkg::REG_RAW_RY, mcadsw_pkg::REG_RAW_RU,
+      mcadsw_pkg::REG_RAW_RV, mcadsw_pkg::REG_MESH_L, mcadsw_pkg::REG_MESH_R,
+      mcadsw_pkg::REG_MESH_NODES, mcadsw_pkg::REG_VALID_L, mcadsw_pkg::REG_VALID_R: ;
       default:
         if (off >= mcadsw_pkg::REG_THR0 && off < mcadsw_pkg::REG_THR0 + 4 * NTHR)
           cfg_thr[(off - mcadsw_pkg::REG_THR0) / 4 * DCB +: DCB] = DCB'(v);

@@ -14,7 +14,10 @@
 #include "engine_bench.hpp"
 #include "engine_expect.hpp"
 #include "mcadsw/image_io.hpp"
+#include "mcadsw/rectify.hpp"
 #include "mcadsw/ref.hpp"
+#include "mcadsw/regs.hpp"
+#include "random_mesh.hpp"
 #include "test_util.hpp"
 
 namespace mcadsw {
@@ -489,6 +492,174 @@ TEST(Engine, LrModeFaultsAndBackToBackFrames) {
   expect_exact(r);
   EXPECT_EQ(r.cycles, frame0) << "a start while busy changed the frame";
   EXPECT_EQ(r.words_written, clean.at(0).words_written);
+}
+
+// ---- Rectification (issue 32, docs/architecture.md 3.10) ----------------------------------
+// A raw pair: crops of camera B's raw Teddy views (real texture), of raw_w x raw_h.
+std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng) {
+  const std::string dir = std::string(MCADSW_DATA_DIR) + "/raw/B/cif/teddy/";
+  const YuvImage l = load_yuv(dir + "left.png"), r = load_yuv(dir + "right.png");
+  const int x = std::uniform_int_distribution<int>(0, l.width() - raw_w)(rng);
+  const int y = std::uniform_int_distribution<int>(0, l.height() - raw_h)(rng);
+  return {crop(l, x, y, raw_w, raw_h), crop(r, x, y, raw_w, raw_h)};
+}
+
+// The engine rectifies random raw pairs through random smooth meshes (some reaching
+// outside the raw views: invalid pixels), then matches: the rectified planes, both
+// validity bitmaps and every output pixel (the invalid code at invalid base pixels)
+// equal the reference's, in the raw, sub-pixel, right-view and LR modes, raster and
+// tiled, at S = 8, 16, 32, with random memory timing.
+TEST(Engine, RectifiedFramesMatchReference) {
+  std::mt19937 rng(32);
+  for (int k = 0; k < 8; ++k) {
+    std::uniform_int_distribution<int> wd(12, 90), hd(6, 50);
+    const int w = wd(rng), h = hd(rng), s = 3 + k % 3;
+    const int rw = std::max(8, int(w * std::uniform_real_distribution<double>(0.7, 1.4)(rng)));
+    const int rh = std::max(4, int(h * std::uniform_real_distribution<double>(0.7, 1.4)(rng)));
+    const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
+    EngineOptions opt;
+    opt.rect = sim::Rectification{sim::random_fitting_mesh(w, h, s, rw, rh, rng),
+                                  sim::random_fitting_mesh(w, h, s, rw, rh, rng)};
+    opt.subpixel = k % 2 == 1;
+    opt.lr = k >= 6;  // dR 255 and dL flagged at invalid pixels before the post stage
+    opt.right = !opt.lr && k % 3 == 2;
+    opt.tiled = k >= 3 && k != 6;
+    opt.latency.random = k % 2 == 0;
+    opt.latency.seed = uint32_t(40 + k);
+    Config cfg;
+    cfg.disparities = std::uniform_int_distribution<int>(2, std::min(24, kDmax))(rng);
+    SCOPED_TRACE("frame " + std::to_string(k) + ": " + std::to_string(w) + "x" + std::to_string(h) + " from " +
+                 std::to_string(rw) + "x" + std::to_string(rh) + ", S = " + std::to_string(1 << s) +
+                 (opt.subpixel ? ", sub-pixel" : "") + (opt.right ? ", right view as base" : "") +
+                 (opt.lr ? ", LR" : "") +
+                 (opt.tiled ? ", tiled" : ""));
+    const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+    expect_exact(r);
+    EXPECT_EQ(r.rect_mismatches, 0);
+  }
+}
+
+// Faults in the rectify pass: a reset and a CTRL.ABORT while it runs, then clean
+// frames (the rectifier's state starts again; nothing of the aborted frame leaks).
+TEST(Engine, RectifyPassFaults) {
+  std::mt19937 rng(33);
+  std::vector<sim::Frame> frames;
+  EngineOptions opt;
+  const int w = 40, h = 24, rw = 44, rh = 28;
+  const auto [l0, r0] = raw_crops(rw, rh, rng);
+  const auto [l1, r1] = raw_crops(rw, rh, rng);
+  opt.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 4, rw, rh, rng, 0.3),
+                                sim::random_fitting_mesh(w, h, 4, rw, rh, rng, 0.3)};
+  Config cfg;
+  cfg.disparities = 9;
+  frames.push_back({l0, r0, cfg});
+  frames.push_back({l1, r1, cfg});
+  const std::vector<EngineResult> clean = sim::run_frames(frames, opt);
+  for (const EngineResult& r : clean) expect_exact(r);
+  // The rectify pass comes first: 4 planes of 40 x 24 pixels, about 4 000 cycles.
+  for (long at : {300L, 2500L}) {
+    SCOPED_TRACE("fault after " + std::to_string(at) + " cycles");
+    for (const EngineResult& r : sim::run_frames(frames, opt, {sim::Fault::kResetMidFrame, at})) expect_exact(r);
+    const auto res = sim::run_frames(frames, opt, {sim::Fault::kAbort, at});
+    EXPECT_TRUE(res[0].error);
+    EXPECT_EQ(res[0].error_code, regs::kErrAborted);
+    expect_exact(res[1]);
+  }
+}
+
+// The rectification's configuration errors (register map 1.2, codes 16 .. 23): each
+// rejected with its code, DONE and ERROR set, and nothing written; 16 .. 21
+// before anything is read, 22 and 23 after the check phase read the meshes.
+TEST(Engine, RejectsBadRectificationAndWritesNothing) {
+  // A valid frame: 64 x 40 from raw views of 80 x 50 at S = 16 (5 x 4 nodes a view).
+  sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
+  good.rect = true;
+  good.rect_step = 4;
+  good.raw_width = 80;
+  good.raw_height = 50;
+  good.raw_stride = 80;
+  good.raw_base = {0x10000, 0x11000, 0x12000, 0x13000, 0x14000, 0x15000};
+  good.mesh_base = {0x20000, 0x21000};
+  good.valid_base = {0x22000, 0x23000};
+  good.mesh_nx = 5;
+  good.mesh_ny = 4;
+  struct Bad {
+    const char* what;
+    sim::RawConfig cfg;
+    int code;
+  };
+  std::vector<Bad> bad;
+  auto with = [&](const char* what, int code, auto change) {
+    sim::RawConfig c = good;
+    change(c);
+    bad.push_back({what, c, code});
+  };
+  with("step 2", 16, [](auto& c) { c.rect_step = 2; });
+  with("step 6", 16, [](auto& c) { c.rect_step = 6; });
+  with("raw width 0", 17, [](auto& c) { c.raw_width = 0; });
+  with("raw height above 2048", 17, [](auto& c) { c.raw_height = 2049; });
+  with("raw stride below the raw width", 17, [](auto& c) { c.raw_stride = 76; });
+  with("raw stride not a multiple of 4", 17, [](auto& c) { c.raw_stride = 82; });
+  with("mesh a node short in x", 18, [](auto& c) { c.mesh_nx = 4; });
+  with("mesh for another step", 18, [](auto& c) { c.mesh_ny = 7; });
+  with("misaligned raw RY", 19, [](auto& c) { c.raw_base[3] = 0x13002; });
+  with("misaligned mesh R", 19, [](auto& c) { c.mesh_base[1] = 0x21001; });
+  with("misaligned bitmap L", 19, [](auto& c) { c.valid_base[0] = 0x22002; });
+  with("raw LY overlaps the output", 20, [](auto& c) { c.raw_base[0] = 0x5000 + 64; });
+  with("mesh L overlaps the rectified LU", 20, [](auto& c) { c.mesh_base[0] = 0x2000 + 100; });
+  with("bitmap R overlaps raw RY", 20, [](auto& c) { c.valid_base[1] = 0x13000 + 40; });
+  with("bitmap L overlaps bitmap R", 20, [](auto& c) { c.valid_base[0] = 0x23000 - 8; });
+  with("raw LV beyond 4 GiB", 21, [](auto& c) { c.raw_base[2] = 0xfffff800u; });  // 80 x 50 bytes
+  // The engine's own codes come first.
+  with("width 0 and step 2", 1, [](auto& c) {
+    c.width = 0;
+    c.rect_step = 2;
+  });
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.what);
+    const sim::EngineResult r = sim::run_raw(b.cfg, {}, 3000);
+    EXPECT_FALSE(r.timed_out);
+    EXPECT_TRUE(r.error);
+    EXPECT_TRUE(r.done) << "STATUS.DONE not set by the rejected start";
+    EXPECT_EQ(r.error_code, b.code) << regs::error_text(r.error_code);
+    EXPECT_EQ(r.status_changes, 0) << "STATUS changed between reads";
+    EXPECT_EQ(r.bus.bad_writes, 0) << "the engine wrote to memory";
+    EXPECT_EQ(r.bus.bad_reads, 0) << "the engine read memory";
+  }
+  // Codes 22 and 23: meshes in memory (each node u then v, 32-bit little-endian), all
+  // nodes in range and small tiles but one: a node beyond 4096 pixels, or a tile whose
+  // source is 3 times too wide. The check phase reads nodes, then ends the frame.
+  const auto mesh_bytes = [](const Mesh& m) {
+    std::vector<uint8_t> b;
+    for (size_t i = 0; i < m.u.size(); ++i)
+      for (const int32_t v : {m.u[i], m.v[i]})
+        for (int k = 0; k < 4; ++k) b.push_back(uint8_t(uint32_t(v) >> (8 * k)));
+    return b;
+  };
+  Mesh ident = make_mesh(64, 40, 4);
+  for (int j = 0; j < ident.ny; ++j)
+    for (int i = 0; i < ident.nx; ++i) {
+      ident.u[size_t(j * ident.nx + i)] = std::min(i * 16, 79) * 32;
+      ident.v[size_t(j * ident.nx + i)] = std::min(j * 16, 49) * 32;
+    }
+  for (int v = 0; v < 2; ++v)
+    for (const int code : {22, 23}) {
+      SCOPED_TRACE(std::string(code == 22 ? "a node out of range" : "a tile too wide") + " in the " +
+                   (v ? "right" : "left") + " mesh");
+      Mesh bad_mesh = ident;
+      if (code == 22) bad_mesh.u[7] = 4096 * 32 + 5;
+      else bad_mesh.u[7] = bad_mesh.u[6] + 3 * 32 * 32;
+      const Mesh& ml = v ? ident : bad_mesh;
+      const Mesh& mr = v ? bad_mesh : ident;
+      const sim::EngineResult r =
+          sim::run_raw(good, {}, 20000, {{good.mesh_base[0], mesh_bytes(ml)}, {good.mesh_base[1], mesh_bytes(mr)}});
+      EXPECT_FALSE(r.timed_out);
+      EXPECT_TRUE(r.error);
+      EXPECT_TRUE(r.done);
+      EXPECT_EQ(r.error_code, code) << regs::error_text(r.error_code);
+      EXPECT_EQ(r.bus.bad_writes, 0) << "the engine wrote to memory";
+      EXPECT_EQ(r.bus.bad_reads, 0) << r.bus.describe();
+    }
 }
 
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,

@@ -4,7 +4,8 @@
 # run behind as if it were the new result. No synthesis runs: the cases stop at
 # the configuration check (gen_rtl_pkg), the tool checks, at elaboration (a few
 # seconds) or at the first block (Yosys replaced by a stub that fails block runs).
-# Then `make synth-check`'s checker on summaries within and over a budget.
+# Then `make synth-check`'s checker on summaries within and over a budget, and the
+# reading of the engine's endpoint slacks per instance (the rectifier's worst slack).
 #   tests/synth/bad_input.sh [GEN_RTL_PKG]   (about 30 s; needs yosys, sta, the OSU018
 #                                            liberty and gen_rtl_pkg, default build/bin/)
 set -uo pipefail
@@ -169,6 +170,37 @@ for bad in '"rect_nand2_eq": 59000/"rect_nand2_eq": 60001/rectifier gates' \
     echo "ok   synth_check $what over budget (exit 1)"
   else echo "FAIL synth_check $what over budget (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
 done
+# The rectifier's slack is null when the engine's STA had no endpoint of one of its
+# instances (flow/synth.py warns): an error (exit 2), not a pass.
+sed 's|"rect_worst_slack_ns": 0.1|"rect_worst_slack_ns": null|' "$work/rect_within.json" > "$work/rect_null.json"
+rc=0; "$py" "$driver" check --budget $work/budget_rect.json --summary $work/rect_null.json > "$work/check.out" 2>&1 || rc=$?
+if [ "$rc" = 2 ] && grep -q "rect_worst_slack_ns' missing" "$work/check.out"; then
+  echo "ok   synth_check rectifier slack null (exit 2)"
+else echo "FAIL synth_check rectifier slack null (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
+
+# The rectifier's worst slack is read from the engine's sta_endpoints.log (flow/sta.py
+# endpoint_slack): every endpoint whose flattened name starts with the instance and a
+# dot, u_rect not taking u_rect_mark's; the violating ones per block instance.
+cat > "$work/sta_endpoints.log" <<'LOG'
+max_delay/setup group clk
+
+                                     Required   Actual
+Endpoint                                Delay    Delay    Slack
+---------------------------------------------------------------
+u_rect_mark._7_/D (DFFPOSX1)            10.050   10.150   -0.100 (VIOLATED)
+u_rect._100_/D (DFFPOSX1)               10.050    8.847    1.203 (MET)
+u_rect.banks_0/WR_DATA[3] (MCADSW_RAM_S256_W16_A8_SYNC_WE)   10.000    3.000    7.000 (MET)
+u_post._15412_/D (DFFPOSX1)             10.050   10.250   -0.200 (VIOLATED)
+_2023_/D (DFFSR)                        10.180   10.490   -0.310 (VIOLATED)
+mem_addr_o[31] (output)                  8.170    7.220    0.950 (MET)
+u_rect_mark.clock_gate_0_and/B (AND2X2) 10.280    5.450    4.830 (MET)
+LOG
+got=$(cd "$root/flow" && "$py" -B -c 'import sys, sta
+viol, inst = sta.endpoint_slack(sys.argv[1], ["u_rect", "u_rect_mark", "u_rect_check"])
+print(sorted(viol.items()), sorted(inst.items()))' "$work/sta_endpoints.log" 2>&1)
+want="[('top', (1, -0.31)), ('u_post', (1, -0.2)), ('u_rect_mark', (1, -0.1))] [('u_rect', (2, 1.203)), ('u_rect_check', (0, None)), ('u_rect_mark', (2, -0.1))]"
+if [ "$got" = "$want" ]; then echo "ok   sta endpoint_slack per instance (the rectifier's worst slack)"
+else echo "FAIL sta endpoint_slack per instance: got $got, wanted $want"; fails=$((fails + 1)); fi
 
 if [ "$fails" -ne 0 ]; then echo "bad_input: $fails case(s) failed"; exit 1; fi
 echo "bad_input: all cases passed"

@@ -44,6 +44,22 @@ struct FrameConfig {
   int lr_tolerance = kLrToleranceDefault;  // T, 0 .. 63
   // The weight table as its thresholds (docs/algorithm.md; mcadsw::weight_thresholds()).
   std::array<uint32_t, kWeightThresholds> thresholds{};
+  // Rectification (register map 1.2; docs/architecture.md 3.10, docs/algorithm.md 13):
+  // with `rect` the engine first resamples the raw planes through the meshes into the
+  // planes above (base_ly ..., in their layout: raster with `stride`, or column-tiled
+  // with `tile_stride`) and writes one validity bitmap a view; the matching passes then
+  // read those planes, and the output of a base pixel outside its raw view is the
+  // invalid code (255, 0xFFFF sub-pixel). configure() writes these registers always:
+  // a frame without rectification writes RECT_CTRL = 0 (with the defaults below).
+  bool rect = false;
+  int rect_step_log2 = 0;     // RECT_CTRL.STEP_LOG2: 3, 4 or 5 (mesh step S = 8, 16, 32)
+  int raw_width = 0, raw_height = 0;  // the raw views, 1 .. 2048 (the frame: width x height)
+  uint32_t raw_stride = 0;    // raw planes' bytes a row; column-tiled (tile_stride != 0):
+                              // bytes from one 4-pixel column to the next
+  std::array<uint32_t, 6> raw_base{};    // raw planes LY LU LV RY RU RV (the planes the mode reads)
+  std::array<uint32_t, 2> mesh_base{};   // left, right: nx x ny nodes, u then v, 8 bytes a node
+  int mesh_nx = 0, mesh_ny = 0;          // ((width - 1) >> s) + 2, ((height - 1) >> s) + 2
+  std::array<uint32_t, 2> valid_base{};  // left, right validity bitmaps (written by the engine)
 };
 
 struct Identity {
@@ -108,6 +124,18 @@ class Engine {
     bus_.write(regs::kLrT, put(uint32_t(c.lr_tolerance), 0, regs::kLrTBits));
     for (int i = 0; i < kWeightThresholds; ++i)
       bus_.write(regs::kThr0 + 4 * uint32_t(i), put(c.thresholds[size_t(i)], 0, regs::kThrBits));
+    bus_.write(regs::kRectCtrl, put(uint32_t(c.rect), regs::kRectEnableLsb, 1) |
+                                    put(uint32_t(c.rect_step_log2), regs::kRectStepLsb, regs::kRectStepWidth));
+    bus_.write(regs::kRawSize, put(uint32_t(c.raw_width), regs::kSizeWidthLsb, regs::kSizeBits) |
+                                   put(uint32_t(c.raw_height), regs::kSizeHeightLsb, regs::kSizeBits));
+    bus_.write(regs::kRawStride, c.raw_stride);
+    for (size_t p = 0; p < c.raw_base.size(); ++p) bus_.write(regs::kRawLy + 4 * uint32_t(p), c.raw_base[p]);
+    bus_.write(regs::kMeshL, c.mesh_base[0]);
+    bus_.write(regs::kMeshR, c.mesh_base[1]);
+    bus_.write(regs::kMeshNodes, put(uint32_t(c.mesh_nx), regs::kMeshNxLsb, regs::kSizeBits) |
+                                     put(uint32_t(c.mesh_ny), regs::kMeshNyLsb, regs::kSizeBits));
+    bus_.write(regs::kValidL, c.valid_base[0]);
+    bus_.write(regs::kValidR, c.valid_base[1]);
     const uint32_t mode = uint32_t(c.subpixel) | uint32_t(c.lr) << 1 | uint32_t(c.right) << 2;
     bus_.write(regs::kCtrl, mode << regs::kCtrlModeLsb);
   }

@@ -129,6 +129,11 @@ inline constexpr int kRectBufW = 64;             // a tile's source rectangle: a
 inline constexpr int kRectBufH = 32;
 inline constexpr int kRectInvalidDisp16 = 0xFFFF;  // the depth of an invalid base pixel (13.4)
 inline constexpr int kRectInvalidDisp8 = 255;
+// The LR mode's scratch maps at invalid pixels after rectification (docs/algorithm.md
+// 13.4, docs/architecture.md 3.10.1): dR holds kRectInvalidDisp8 (|dL - 255| > T), dL a
+// flag the post stage's check fails: bit 7 of a byte, bit 15 of a scratch halfword.
+inline constexpr int kRectFlagDisp8 = 0x80;
+inline constexpr int kRectFlagDisp16 = 0x8000;
 static_assert(kSubpixelScale * (kDmax - 1) + kSubpixelOffsetMax < kRectInvalidDisp16 && kDmax - 1 < kRectInvalidDisp8,
               "the invalid codes lie above every disparity");
 

@@ -62,12 +62,22 @@ inline constexpr uint32_t kCycles = 0x80;
 inline constexpr uint32_t kWordsRead = 0x84;
 inline constexpr uint32_t kWordsWritten = 0x88;
 inline constexpr uint32_t kStalls = 0x8C;
+// Rectification (register map 1.2, docs/architecture.md 3.10.2, docs/algorithm.md 13)
+inline constexpr uint32_t kRectCtrl = 0x90;
+inline constexpr uint32_t kRawSize = 0x94;
+inline constexpr uint32_t kRawStride = 0x98;
+inline constexpr uint32_t kRawLy = 0x9C;  // RAW_LY .. RAW_RV at kRawLy + 4 p
+inline constexpr uint32_t kMeshL = 0xB4;
+inline constexpr uint32_t kMeshR = 0xB8;
+inline constexpr uint32_t kMeshNodes = 0xBC;
+inline constexpr uint32_t kValidL = 0xC0;
+inline constexpr uint32_t kValidR = 0xC4;
 inline constexpr uint32_t kSpan = 0x100;  // address bits decoded: offsets 0 .. kSpan - 4
 
 // ---- Constants read from ID and VERSION ---------------------------------------------------
 inline constexpr uint32_t kIdValue = 0x4D434144;  // "MCAD"
 inline constexpr uint32_t kVersionMajor = 1;
-inline constexpr uint32_t kVersionMinor = 1;  // 1: TILE_STRIDE
+inline constexpr uint32_t kVersionMinor = 2;  // 1: TILE_STRIDE; 2: rectification
 
 // ---- Fields (lsb, width) ---------------------------------------------------------------
 inline constexpr int kVersionMinorLsb = 0, kVersionMajorLsb = 8;
@@ -78,12 +88,15 @@ inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
 inline constexpr int kStatusBusyLsb = 0;
 inline constexpr int kStatusDoneLsb = 1;
 inline constexpr int kStatusErrorLsb = 2;
-inline constexpr int kStatusCodeLsb = 4, kStatusCodeWidth = 4;
+inline constexpr int kStatusCodeLsb = 4, kStatusCodeWidth = 8;
 inline constexpr int kIrqDoneLsb = 0;
 inline constexpr int kIrqErrorLsb = 1;
 inline constexpr int kSizeWidthLsb = 0, kSizeHeightLsb = 16, kSizeBits = 12;
 inline constexpr int kDispBitsReg = 8;  // D, whatever DMAX (<= 128); D > DMAX is error code 3
 inline constexpr int kLrTBits = 8;
+inline constexpr int kRectEnableLsb = 0;
+inline constexpr int kRectStepLsb = 4, kRectStepWidth = 3;
+inline constexpr int kMeshNxLsb = 0, kMeshNyLsb = 16;  // 12 bits each (kSizeBits), as SIZE
 inline constexpr int kThrBits = kColorDistBits;
 
 // ---- Error codes (STATUS.ERROR_CODE) ---------------------------------------------------------
@@ -97,7 +110,7 @@ struct Error {
   const char* name;  // the enum constant's name after "Err" (UpperCamelCase)
   const char* doc;
 };
-inline constexpr int kErrCodeBits = 4;
+inline constexpr int kErrCodeBits = 5;  // the codes the RTL carries (STATUS.ERROR_CODE: 8 bits)
 inline constexpr int kErrReadResponse = 13;   // an AXI4 read answered SLVERR or DECERR
 inline constexpr int kErrWriteResponse = 14;  // an AXI4 write answered SLVERR or DECERR
 inline constexpr int kErrAborted = 15;        // CTRL.ABORT written while busy
@@ -130,6 +143,24 @@ inline constexpr Error kErrors[] = {
     {kErrWriteResponse, "WriteResponse",
      "the frame ended: an AXI4 write burst was answered SLVERR or DECERR"},
     {kErrAborted, "Aborted", "the frame ended: CTRL.ABORT was written while busy"},
+    // 16..21: RECT_CTRL.ENABLE set, checked after 1..12 (rtl/rect/mcadsw_rect_check.sv),
+    // nothing read or written; 22, 23: found by the rectify pass's check phase (nodes
+    // read), nothing written.
+    {16, "RectStep", "rectification: RECT_CTRL.STEP_LOG2 not 3, 4 or 5 (S = 8, 16, 32)"},
+    {17, "RawSize",
+     "rectification: raw width or height 0 or above 2048; RAW_STRIDE below the raw width "
+     "(raster) or 4 x the raw height (column-tiled), or not a multiple of 4"},
+    {18, "MeshSize",
+     "rectification: MESH_NODES not ((W - 1) >> s) + 2 by ((H - 1) >> s) + 2 for the frame's W x H"},
+    {19, "RectAlign", "rectification: a raw plane, mesh or validity bitmap base not a multiple of 4"},
+    {20, "RectOverlap",
+     "rectification: a raw plane or mesh overlaps a plane the frame writes (rectified planes, "
+     "bitmaps, outputs), or a bitmap overlaps another plane the frame reads or writes"},
+    {21, "RectBeyond", "rectification: a raw plane, mesh or bitmap reaches beyond the 32-bit address space"},
+    {22, "MeshRange", "rectification: a mesh node beyond -4096 .. 4096 pixels; nothing written"},
+    {23, "RectFootprint",
+     "rectification: a tile's source rectangle beyond the 64 x 32 tile buffer (docs/algorithm.md "
+     "13.8); nothing written"},
 };
 
 // The text of an error code (STATUS.ERROR_CODE), for messages.
@@ -139,14 +170,15 @@ constexpr const char* error_text(int code) {
   return "unknown error code";
 }
 
-// Codes 0 .. 2^kErrCodeBits - 1 each once, in order.
+// Codes 0 .. n - 1 each once, in order, in kErrCodeBits, which STATUS.ERROR_CODE holds.
 constexpr bool errors_valid() {
   const int n = int(sizeof(kErrors) / sizeof(kErrors[0]));
   for (int i = 0; i < n; ++i)
     if (kErrors[i].code != i) return false;
-  return n == (1 << kErrCodeBits);
+  return n <= (1 << kErrCodeBits) && n > (1 << (kErrCodeBits - 1)) && kErrCodeBits <= kStatusCodeWidth;
 }
-static_assert(errors_valid(), "error codes must be 0 .. 15, each once, in order");
+inline constexpr int kErrCount = int(sizeof(kErrors) / sizeof(kErrors[0]));
+static_assert(errors_valid(), "error codes must be 0 .. n - 1, each once, in order, in kErrCodeBits");
 
 inline constexpr Reg kRegs[] = {
     {"ID", kId, Access::kRO, "identification, \"MCAD\""},
@@ -184,6 +216,21 @@ inline constexpr Reg kRegs[] = {
     {"WORDS_READ", kWordsRead, Access::kRO, "memory words read in the last frame"},
     {"WORDS_WRITTEN", kWordsWritten, Access::kRO, "memory words written in the last frame"},
     {"STALLS", kStalls, Access::kRO, "cycles with a memory request not granted"},
+    {"RECT_CTRL", kRectCtrl, Access::kRW, "rectification: enable and mesh step"},
+    {"RAW_SIZE", kRawSize, Access::kRW, "rectification: raw views' width and height"},
+    {"RAW_STRIDE", kRawStride, Access::kRW,
+     "rectification: bytes a row of the raw planes; with TILE_STRIDE not 0, bytes from one 4-pixel column to the next"},
+    {"RAW_LY", kRawLy + 0, Access::kRW, "rectification: raw left Y plane"},
+    {"RAW_LU", kRawLy + 4, Access::kRW, "rectification: raw left U plane"},
+    {"RAW_LV", kRawLy + 8, Access::kRW, "rectification: raw left V plane"},
+    {"RAW_RY", kRawLy + 12, Access::kRW, "rectification: raw right Y plane"},
+    {"RAW_RU", kRawLy + 16, Access::kRW, "rectification: raw right U plane (right view as base)"},
+    {"RAW_RV", kRawLy + 20, Access::kRW, "rectification: raw right V plane (idem)"},
+    {"MESH_L", kMeshL, Access::kRW, "rectification: the left view's mesh (docs/algorithm.md 13.1)"},
+    {"MESH_R", kMeshR, Access::kRW, "rectification: the right view's mesh"},
+    {"MESH_NODES", kMeshNodes, Access::kRW, "rectification: mesh nodes a row and a column"},
+    {"VALID_L", kValidL, Access::kRW, "rectification: the left view's validity bitmap (written)"},
+    {"VALID_R", kValidR, Access::kRW, "rectification: the right view's validity bitmap (written)"},
 };
 
 inline constexpr Field kFields[] = {
@@ -216,6 +263,13 @@ inline constexpr Field kFields[] = {
     {"SIZE", "HEIGHT", kSizeHeightLsb, kSizeBits, Access::kRW, "height in pixels"},
     {"DISP", "D", 0, kDispBitsReg, Access::kRW, "1 .. DMAX"},
     {"LR_T", "T", 0, kLrTBits, Access::kRW, "0 .. 63"},
+    {"RECT_CTRL", "ENABLE", kRectEnableLsb, 1, Access::kRW,
+     "rectify the raw planes before matching (docs/architecture.md 3.10)"},
+    {"RECT_CTRL", "STEP_LOG2", kRectStepLsb, kRectStepWidth, Access::kRW, "mesh step S = 2^STEP_LOG2: 3, 4 or 5"},
+    {"RAW_SIZE", "WIDTH", kSizeWidthLsb, kSizeBits, Access::kRW, "raw width in pixels"},
+    {"RAW_SIZE", "HEIGHT", kSizeHeightLsb, kSizeBits, Access::kRW, "raw height in pixels"},
+    {"MESH_NODES", "NX", kMeshNxLsb, kSizeBits, Access::kRW, "nodes a row: ((W - 1) >> STEP_LOG2) + 2"},
+    {"MESH_NODES", "NY", kMeshNyLsb, kSizeBits, Access::kRW, "nodes a column: ((H - 1) >> STEP_LOG2) + 2"},
 };
 
 // Every offset word-aligned, inside the decoded span, and unique.
