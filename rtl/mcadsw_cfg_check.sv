@@ -1,7 +1,8 @@
 // Configuration check of a frame (docs/registers.md, error codes 1-12): the
 // configuration the engine registered at the start, checked in the cycle after it.
-// Combinational: the frame controller samples err_o in its Check state; a non-zero
-// code rejects the start before anything is read or written.
+// Combinational: the engine registers err_o and ok_o at the end of that cycle, and the
+// frame controller samples them in its Check state; a non-zero code rejects the start
+// before anything is read or written.
 //
 // Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
 // address space. The planes a mode reads and writes (docs/memory_map.md):

@@ -189,11 +189,26 @@ module mcadsw_engine #(
   logic [mcadsw_pkg::ERR_BITS-1:0] error_code;
   assign error_code_o = 8'(error_code);
 
+  // The check's result, registered: the configuration (registered at the start) settles
+  // through the check's multipliers and comparators in the frame controller's StSettle;
+  // the controller's branch on it starts from flip-flops (timing).
+  logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err_q;
+  logic                            cfg_ok_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      cfg_err_q <= mcadsw_pkg::ErrNone;
+      cfg_ok_q  <= 1'b1;
+    end else begin
+      cfg_err_q <= cfg_err;
+      cfg_ok_q  <= cfg_ok;
+    end
+  end
+
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
     .start_i,
-    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .cfg_rect_i (rect_q), .err_i (cfg_err),
-    .ok_i (cfg_ok),
+    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .cfg_rect_i (rect_q), .err_i (cfg_err_q),
+    .ok_i (cfg_ok_q),
     .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
     .rect_start_o (rect_start), .rect_done_i (rect_done), .rect_err_i (rect_err),

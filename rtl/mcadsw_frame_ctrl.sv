@@ -3,7 +3,7 @@
 // other, and owns busy, done, the error code and the frame's counters
 // (docs/architecture.md, frame controller and 3.10; docs/memory_map.md, status).
 //
-//   StIdle ── start ──> StCheck ──(error)──────────────────────────────> StIdle, done + error
+//   StIdle ── start ──> StSettle ──> StCheck ──(error)──────────────────> StIdle, done + error
 //                          │ ok, rectification (RECT_CTRL.ENABLE):
 //                          │   StRectCheck (codes 16..21) -> StRect (the rectify pass;
 //                          │   codes 22, 23) -> StRectDrain (its writes answered) ──┐
@@ -42,7 +42,8 @@ module mcadsw_frame_ctrl (
   input  logic        cfg_lr_i,             // LR mode: left map, right map, post stage
   input  logic        cfg_right_i,          // the right view as base
   input  logic        cfg_rect_i,           // rectify the raw planes first
-  input  logic [mcadsw_pkg::ERR_BITS-1:0] err_i,   // valid in StCheck
+  input  logic [mcadsw_pkg::ERR_BITS-1:0] err_i,   // valid in StCheck (the check's result registered:
+                                            // the configuration settles through it in StSettle)
   input  logic        ok_i,                 // err_i == ErrNone (the check's flat verdict)
   output logic        accept_o,             // register the configuration now
   // Rectification: the check of its registers, the rectify pass, the mark step
@@ -86,7 +87,7 @@ module mcadsw_frame_ctrl (
 
   typedef enum logic [3:0] {
     StIdle, StCheck, StLeftPass, StRightPass, StDrain, StPost, StDone,
-    StRectCheck, StRect, StRectDrain, StMarkWait, StMark
+    StRectCheck, StRect, StRectDrain, StMarkWait, StMark, StSettle
   } state_e;
   // The pass whose planes the engine uses (held after the frame until the next start).
   typedef enum logic [1:0] { PassFirst, PassSecond, PassPost } pass_e;
@@ -132,12 +133,13 @@ module mcadsw_frame_ctrl (
     mphase_d = mphase_q;
     case (state_q)
       StIdle: if (start_i) begin
-        state_d = StCheck;
+        state_d = StSettle;
         pass_d  = PassFirst;
         done_d  = 1'b0;
         error_d = 1'b0;
         code_d  = mcadsw_pkg::ErrNone;
       end
+      StSettle: state_d = StCheck;                  // the check's result registered at its end
       StCheck: begin
         code_d = err_i;
         if (!ok_i) begin
@@ -253,7 +255,7 @@ module mcadsw_frame_ctrl (
   // check to the mark step's end, and while the last writes are answered.
   logic count;
   assign count = sched_busy_i || state_q == StDone ||
-                 (cfg_lr_i && state_q != StIdle && state_q != StCheck) ||
+                 (cfg_lr_i && state_q != StIdle && state_q != StSettle && state_q != StCheck) ||
                  state_q == StRectCheck || state_q == StRect || state_q == StRectDrain ||
                  state_q == StMarkWait || state_q == StMark;
   logic [31:0] cycles_d, rd_d, wr_d, stall_d;

@@ -30,7 +30,7 @@ data=$root/data
 names=("engine tests (faults, invalid configurations)"
        "$n random cases (seed 2026)"
        "AXI tests (bursts, response errors, abort, the register window)"
-       "Tsukuba D=16 with random latency, CIF Teddy crop D=64")
+       "Tsukuba D=16 with random latency, CIF Teddy crop D=64, camera C's raw Teddy rectified (LR)")
 logs=(engine_test random axi_test pairs)
 stimulus() {
   case $1 in
@@ -39,7 +39,9 @@ stimulus() {
     2) "$build/bin/rtl_axi_test" ;;
     3) "$build/bin/mcadsw_sim" "$data/middlebury/tsukuba/left.png" "$data/middlebury/tsukuba/right.png" -d 16 \
          --random-latency 3 &&
-       "$build/bin/mcadsw_sim" "$data/cif/teddy/left.png" "$data/cif/teddy/right.png" -d 64 --crop 60,40,120,60 ;;
+       "$build/bin/mcadsw_sim" "$data/cif/teddy/left.png" "$data/cif/teddy/right.png" -d 64 --crop 60,40,120,60 &&
+       "$build/bin/mcadsw_sim" "$data/raw/C/cif/teddy/left.png" "$data/raw/C/cif/teddy/right.png" -d 24 \
+         --calib "$data/raw/C/cif/teddy/calib.yml" --step 8 --crop 16,16,96,48 --lr --subpixel ;;
   esac
 }
 par=$(nproc)

@@ -3,8 +3,10 @@
 # `make synth` (flow/synth.py) runs in the same Verilator harness as the RTL (models of the
 # cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)
 # on small crops of Teddy, in the raw mode, in the LR mode and with the right view as base and
-# sub-pixel output; every disparity is compared with the reference (the
-# harness's scoreboard) and the disparity map with the RTL's, byte for byte.
+# sub-pixel output, and on a rectified crop (register map 1.2: camera C's raw Teddy views through
+# its calibration's step-8 meshes, with invalid pixels); every disparity is compared with the
+# reference (the harness's scoreboard; with rectification the rectified planes and validity
+# bitmaps too) and the disparity map with the RTL's, byte for byte.
 #
 #   scripts/gls.sh            the netlist of `make synth` (DMAX = 64, build/synth)
 #   DMAX=16 scripts/gls.sh    a reduced configuration (build/synth_dmax16; the harness is
@@ -49,13 +51,15 @@ left=$root/data/cif/teddy/left.png
 right=$root/data/cif/teddy/right.png
 # gls_vs_rtl NAME CROP WHAT FLAGS...: the crop at D in one mode through the netlist
 # and the RTL (each checked against the reference by the harness); their maps
-# must be identical.
+# must be identical. pair_left=... pair_right=... before it: another pair than
+# the bundled Teddy.
 gls_vs_rtl() {
   local name=$1 crop=$2 what=$3; shift 3
+  local l=${pair_left:-$left} r=${pair_right:-$right}
   echo "gls: Teddy crop $crop at D = $d, $what, netlist vs reference"
-  "$gls_build/bin/mcadsw_sim_gls" "$left" "$right" -d "$d" --crop "$crop" "$@" \
+  "$gls_build/bin/mcadsw_sim_gls" "$l" "$r" -d "$d" --crop "$crop" "$@" \
       --name "gls_$name" --out "$out/gls_$name.png" --json "$out/gls_$name.json"
-  "$gls_build/bin/mcadsw_sim" "$left" "$right" -d "$d" --crop "$crop" "$@" \
+  "$gls_build/bin/mcadsw_sim" "$l" "$r" -d "$d" --crop "$crop" "$@" \
       --name "rtl_$name" --out "$out/rtl_$name.png" --json "$out/rtl_$name.json"
   if cmp -s "$out/gls_$name.png" "$out/rtl_$name.png"; then
     echo "gls: netlist and RTL maps ($what) are identical; both equal the reference"
@@ -71,6 +75,13 @@ gls_vs_rtl raw "$crop" "raw mode"
 # plane with the reference too), sub-pixel, a width with W % 4 = 3.
 gls_vs_rtl right_sub 100,100,42,24 "right view as base, sub-pixel" --right --subpixel
 gls_vs_rtl lr_sub 100,100,43,20 "LR mode, sub-pixel, T = 2" --lr --subpixel -T 2
+# The rectifier at gate level: camera C's raw views (data/raw/C/cif/teddy), step-8
+# meshes, a 48x24 crop at 16,8 of the rectified frame that takes in the left view's
+# invalid strips (left columns, top rows: invalid codes in the map, about 15k cycles).
+raw_c=$root/data/raw/C/cif/teddy
+pair_left=$raw_c/left.png pair_right=$raw_c/right.png \
+  gls_vs_rtl rect_c 16,8,48,24 "rectified (camera C, step 8, invalid strips)" \
+  --calib "$raw_c/calib.yml" --step 8
 if [ "${FRAME:-0}" = 1 ]; then
   echo "gls: whole frame, Tsukuba 384x288 at D = 16, netlist vs reference (about 6 min)"
   mb=$root/data/middlebury/tsukuba

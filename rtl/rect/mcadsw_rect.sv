@@ -65,7 +65,7 @@ module mcadsw_rect #(
   // held from the start on, so from the cycle after the start these are the frame's. The
   // first use is two cycles after the start (nx, at the first node read); registered, the
   // tile counters' enables start from flip-flops (a path from width_i through the
-  // comparisons into their clock gates missed half a period, flow/rect.py).
+  // comparisons into their clock gates missed half a period when it was timed alone).
   logic [2:0]    s;
   assign s = step_log2_i;
   logic [CW-1:0] nx;                                      // nodes a row: (W - 1) >> s + 2

@@ -214,14 +214,22 @@ module mcadsw_rect_check #(
     end
   end
 
+  // The first failing check, registered with done_o (in the engine the frame controller
+  // branches on it into clock-gate enables: from the configuration through these
+  // comparisons it missed half a period).
+  logic [2:0] err_c;
   always_comb begin
-    err_o = 3'd0;
-    if (fail_end_q) err_o = 3'd6;
-    if (fail_ovl_q) err_o = 3'd5;
-    if (align_bad)  err_o = 3'd4;
-    if (mesh_bad)   err_o = 3'd3;
-    if (raw_bad)    err_o = 3'd2;
-    if (step_bad)   err_o = 3'd1;
+    err_c = 3'd0;
+    if (fail_end_q) err_c = 3'd6;
+    if (fail_ovl_q) err_c = 3'd5;
+    if (align_bad)  err_c = 3'd4;
+    if (mesh_bad)   err_c = 3'd3;
+    if (raw_bad)    err_c = 3'd2;
+    if (step_bad)   err_c = 3'd1;
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) err_o <= 3'd0;
+    else if (st_q == StDone) err_o <= err_c;
   end
   assign busy_o = st_q != StIdle;
 

@@ -48,7 +48,7 @@ module mcadsw_rect_mark #(
   // Registered from the configuration every cycle (no reset, no enable): the inputs are held
   // from the start on, and the first use is the cycle after it. Registered, the marker's
   // enables start from flip-flops (from width_i / height_i through the masks they missed
-  // half a period into their clock gates, flow/rect.py).
+  // half a period into their clock gates when it was timed alone).
   logic [CW-1:0] last_k, last_g;                          // the last strip column and 8-row group
   logic [3:0]    last_colmask;                            // the last strip column's columns
   logic [7:0]    last_rowmask;                            // the last group's rows

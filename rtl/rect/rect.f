@@ -1,6 +1,6 @@
-// The rectifier (issue 32, docs/architecture.md 3.10), built and block-tested beside the
-// engine until its pass goes in: then these files join rtl/mcadsw.f. Relative to rtl/rect/,
-// its package first; the engine's package (rtl/mcadsw_pkg.sv) is read before it.
+// The rectifier's files (issue 32, docs/architecture.md 3.10) for its block benches
+// (tests/rtl/CMakeLists.txt); the engine reads them through rtl/mcadsw.f. Relative to
+// rtl/rect/, its package first; the engine's package (rtl/mcadsw_pkg.sv) is read before it.
 mcadsw_rect_pkg.sv
 mcadsw_rect_load.sv
 mcadsw_rect_nodes.sv

@@ -3,9 +3,10 @@
 // harness dumped (mcadsw_sim --dump DIR), programmed by replaying the register
 // writes the C++ driver made for that frame (DIR/regs.txt, "offset value" in hex;
 // reg_write below maps each register of docs/registers.md onto the engine's
-// configuration ports, CTRL.START onto a start pulse; the rectification inputs are
-// tied to 0: a frame with RECT_CTRL.ENABLE set fails), with a zero-latency AXI4 memory timed
-// as the C++ model's (sim/axi_memory.hpp, latency 0): always ready, an R beat
+// configuration ports, CTRL.START onto a start pulse; the rectification registers
+// of register map 1.2, RECT_CTRL .. VALID_R, onto the rectifier's ports), with a
+// zero-latency AXI4 memory timed as the C++ model's (sim/axi_memory.hpp,
+// latency 0): always ready, an R beat
 // the cycle after its AR, a burst written and answered (B) the cycle after its
 // AW and last W beat are both in. Checks that no output is X or Z after reset,
 // writes the disparity plane and the counters for tests/icarus/run.sh to
@@ -31,6 +32,13 @@ module tb_mcadsw_engine;
   logic [11:0] cfg_width, cfg_height;
   logic [6:0]  cfg_disp;
   logic [NTHR*DCB-1:0] cfg_thr;
+  // Rectification (RECT_CTRL .. VALID_R): 0 until the driver writes them, as after reset.
+  logic        cfg_rect_en = 1'b0;
+  logic [2:0]  cfg_rect_step = '0;
+  logic [11:0] cfg_raw_width = '0, cfg_raw_height = '0, cfg_mesh_nx = '0, cfg_mesh_ny = '0;
+  logic [31:0] cfg_raw_stride = '0, cfg_raw_ly = '0, cfg_raw_lu = '0, cfg_raw_lv = '0;
+  logic [31:0] cfg_raw_ry = '0, cfg_raw_ru = '0, cfg_raw_rv = '0;
+  logic [31:0] cfg_mesh_l = '0, cfg_mesh_r = '0, cfg_valid_l = '0, cfg_valid_r = '0;
   logic start = 1'b0;
   logic busy, done, error;
   logic [7:0] error_code;                  // STATUS.ERROR_CODE: 0 .. 24
@@ -56,12 +64,14 @@ module tb_mcadsw_engine;
     .cfg_lr_t_i (cfg_lr_t),
     .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
     .cfg_thr_i (cfg_thr),
-    // The rectifier (RECT_CTRL and the registers after it): off, every input 0.
-    .cfg_rect_en_i (1'b0), .cfg_rect_step_i (3'd0), .cfg_raw_width_i (12'd0), .cfg_raw_height_i (12'd0),
-    .cfg_raw_stride_i (32'd0), .cfg_raw_ly_i (32'd0), .cfg_raw_lu_i (32'd0), .cfg_raw_lv_i (32'd0),
-    .cfg_raw_ry_i (32'd0), .cfg_raw_ru_i (32'd0), .cfg_raw_rv_i (32'd0),
-    .cfg_mesh_l_i (32'd0), .cfg_mesh_r_i (32'd0), .cfg_mesh_nx_i (12'd0), .cfg_mesh_ny_i (12'd0),
-    .cfg_valid_l_i (32'd0), .cfg_valid_r_i (32'd0),
+    // The rectifier (RECT_CTRL and the registers after it).
+    .cfg_rect_en_i (cfg_rect_en), .cfg_rect_step_i (cfg_rect_step),
+    .cfg_raw_width_i (cfg_raw_width), .cfg_raw_height_i (cfg_raw_height),
+    .cfg_raw_stride_i (cfg_raw_stride), .cfg_raw_ly_i (cfg_raw_ly), .cfg_raw_lu_i (cfg_raw_lu),
+    .cfg_raw_lv_i (cfg_raw_lv), .cfg_raw_ry_i (cfg_raw_ry), .cfg_raw_ru_i (cfg_raw_ru),
+    .cfg_raw_rv_i (cfg_raw_rv), .cfg_mesh_l_i (cfg_mesh_l), .cfg_mesh_r_i (cfg_mesh_r),
+    .cfg_mesh_nx_i (cfg_mesh_nx), .cfg_mesh_ny_i (cfg_mesh_ny),
+    .cfg_valid_l_i (cfg_valid_l), .cfg_valid_r_i (cfg_valid_r),
     .start_i (start),
     .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_rd), .cnt_words_written_o (cnt_wr),
@@ -214,17 +224,31 @@ module tb_mcadsw_engine;
         end
       end
       mcadsw_pkg::REG_STATUS, mcadsw_pkg::REG_IRQ_ENABLE: ;  // no register block, no interrupt
-      // Rectification: the engine's inputs are tied to 0 above, so only a frame
-      // without it (ENABLE 0; the driver writes the other registers all the same).
-      mcadsw_pkg::REG_RECT_CTRL:
-        if (v[mcadsw_pkg::RECT_CTRL_ENABLE_LSB]) begin
-          $display("FAIL: RECT_CTRL.ENABLE set: this bench ties the rectification inputs to 0");
-          $finish;
-        end
-      mcadsw_pkg::REG_RAW_SIZE, mcadsw_pkg::REG_RAW_STRIDE, mcadsw_pkg::REG_RAW_LY,
-      mcadsw_pkg::REG_RAW_LU, mcadsw_pkg::REG_RAW_LV, mcadsw_pkg::REG_RAW_RY, mcadsw_pkg::REG_RAW_RU,
-      mcadsw_pkg::REG_RAW_RV, mcadsw_pkg::REG_MESH_L, mcadsw_pkg::REG_MESH_R,
-      mcadsw_pkg::REG_MESH_NODES, mcadsw_pkg::REG_VALID_L, mcadsw_pkg::REG_VALID_R: ;
+      // Rectification (register map 1.2; the driver writes them for every frame,
+      // ENABLE 0 without it), as mcadsw_regs: the fields, the addresses whole.
+      mcadsw_pkg::REG_RECT_CTRL: begin
+        cfg_rect_en   = v[mcadsw_pkg::RECT_CTRL_ENABLE_LSB];
+        cfg_rect_step = v[mcadsw_pkg::RECT_CTRL_STEP_LOG2_LSB +: mcadsw_pkg::RECT_CTRL_STEP_LOG2_W];
+      end
+      mcadsw_pkg::REG_RAW_SIZE: begin
+        cfg_raw_width  = v[mcadsw_pkg::RAW_SIZE_WIDTH_LSB +: mcadsw_pkg::RAW_SIZE_WIDTH_W];
+        cfg_raw_height = v[mcadsw_pkg::RAW_SIZE_HEIGHT_LSB +: mcadsw_pkg::RAW_SIZE_HEIGHT_W];
+      end
+      mcadsw_pkg::REG_RAW_STRIDE: cfg_raw_stride = v;
+      mcadsw_pkg::REG_RAW_LY: cfg_raw_ly = v;
+      mcadsw_pkg::REG_RAW_LU: cfg_raw_lu = v;
+      mcadsw_pkg::REG_RAW_LV: cfg_raw_lv = v;
+      mcadsw_pkg::REG_RAW_RY: cfg_raw_ry = v;
+      mcadsw_pkg::REG_RAW_RU: cfg_raw_ru = v;
+      mcadsw_pkg::REG_RAW_RV: cfg_raw_rv = v;
+      mcadsw_pkg::REG_MESH_L: cfg_mesh_l = v;
+      mcadsw_pkg::REG_MESH_R: cfg_mesh_r = v;
+      mcadsw_pkg::REG_MESH_NODES: begin
+        cfg_mesh_nx = v[mcadsw_pkg::MESH_NODES_NX_LSB +: mcadsw_pkg::MESH_NODES_NX_W];
+        cfg_mesh_ny = v[mcadsw_pkg::MESH_NODES_NY_LSB +: mcadsw_pkg::MESH_NODES_NY_W];
+      end
+      mcadsw_pkg::REG_VALID_L: cfg_valid_l = v;
+      mcadsw_pkg::REG_VALID_R: cfg_valid_r = v;
       default:
         if (off >= mcadsw_pkg::REG_THR0 && off < mcadsw_pkg::REG_THR0 + 4 * NTHR)
           cfg_thr[(off - mcadsw_pkg::REG_THR0) / 4 * DCB +: DCB] = DCB'(v);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core/persistence.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <cmath>
 #include <iterator>
@@ -181,6 +182,52 @@ TEST_F(SimCli, BadLrOptions) {
   const std::string l = (dir_ / "wl.png").string(), rr = (dir_ / "wr.png").string();
   ASSERT_TRUE(cv::imwrite(l, wide) && cv::imwrite(rr, wide));
   expect_failure(run(l + " " + rr + " -d 16 --lr" + outputs()), "the LR mode takes widths up to 1024");
+}
+
+// Rectification (issue 32): raw camera views and their calibration; a region of the
+// rectified frame on whole mesh cells; the rectified planes and bitmaps compared too.
+std::string raw_view(const char* camera, const char* side) {
+  return (kData / "raw" / camera / "cif" / "teddy" / side).string();
+}
+std::string raw_pair(const char* camera) { return raw_view(camera, "left.png") + " " + raw_view(camera, "right.png"); }
+
+TEST_F(SimCli, RectifiedCropRunsBitExact) {
+  const CliRun r = run(raw_pair("C") + " -d 8 --calib " + raw_view("C", "calib.yml") +
+                       " --step 8 --crop 16,8,32,16 --lr" + outputs());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has_word(r.output, "BIT-EXACT")) << r.output;
+  EXPECT_NE(r.output.find("rect S=8"), std::string::npos) << r.output;
+  std::ifstream j(dir_ / "r.json");
+  const std::string json((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"rect\": true"), std::string::npos) << json;
+}
+
+// Bad rectification input: a clear message, the engine never started.
+TEST_F(SimCli, BadRectificationInput) {
+  const std::string calib = raw_view("B", "calib.yml");
+  expect_failure(run(raw_pair("B") + " -d 16 --calib " + calib + " --step 7" + outputs()), "--step must be 8, 16 or 32");
+  expect_failure(run(raw_pair("B") + " -d 16 --step 8" + outputs()), "--step needs --calib or --mesh");
+  expect_failure(run(raw_pair("B") + " -d 16 --calib " + calib + " --mesh m.bin" + outputs()),
+                 "--calib and --mesh do not combine");
+  expect_failure(run(raw_pair("B") + " -d 16 --calib " + calib + " --crop 4,0,32,16" + outputs()),
+                 "multiples of the mesh step");
+  expect_failure(run(raw_pair("B") + " -d 16 --calib " + (dir_ / "none.yml").string() + outputs()), "calibration");
+  // A calibration without P2.
+  const fs::path partial = dir_ / "partial.yml";
+  {
+    cv::FileStorage in(calib, cv::FileStorage::READ), out(partial.string(), cv::FileStorage::WRITE);
+    for (const char* k : {"image_width", "image_height"}) out << k << int(in[k]);
+    for (const char* k : {"K1", "D1", "R1", "P1", "K2", "D2", "R2"}) out << k << in[k].mat();
+  }
+  expect_failure(run(raw_pair("B") + " -d 16 --calib " + partial.string() + outputs()), "no key");
+  // The calibration's image size is not the raw views'.
+  expect_failure(run(view("tsukuba", "left.png") + " " + view("tsukuba", "right.png") + " -d 16 --calib " + calib +
+                     outputs()),
+                 "the calibration's images");
+  // A mesh image of the wrong size (a few bytes).
+  const fs::path mesh = dir_ / "short.bin";
+  std::ofstream(mesh, std::ios::binary) << "0123456789";
+  expect_failure(run(raw_pair("B") + " -d 16 --mesh " + mesh.string() + outputs()), "bytes");
 }
 
 TEST_F(SimCli, BadArguments) {
