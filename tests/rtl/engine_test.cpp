@@ -610,6 +610,13 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
   with("bitmap R overlaps raw RY", 20, [](auto& c) { c.valid_base[1] = 0x13000 + 40; });
   with("bitmap L overlaps bitmap R", 20, [](auto& c) { c.valid_base[0] = 0x23000 - 8; });
   with("raw LV beyond 4 GiB", 21, [](auto& c) { c.raw_base[2] = 0xfffff800u; });  // 80 x 50 bytes
+  // A raw plane of exactly 2^37 bytes (RAW_STRIDE 2^31, 64 rows) reaches over every other
+  // region: the check's sizes are exact (44 bits; `make mutate` found bit 37 of its
+  // multiplier unchecked).
+  with("raw planes of 2^37 bytes", 20, [](auto& c) {
+    c.raw_stride = 0x80000000u;
+    c.raw_height = 64;
+  });
   // The engine's own codes come first.
   with("width 0 and step 2", 1, [](auto& c) {
     c.width = 0;
