@@ -494,6 +494,18 @@ TEST(Engine, LrModeFaultsAndBackToBackFrames) {
   EXPECT_EQ(r.words_written, clean.at(0).words_written);
 }
 
+// A rejected start: finished at once with DONE and ERROR and the code, STATUS steady
+// over later reads, nothing read or written.
+void expect_rejected(const EngineResult& r, int code, const std::string& what) {
+  EXPECT_FALSE(r.timed_out) << what;
+  EXPECT_TRUE(r.error) << what;
+  EXPECT_TRUE(r.done) << what << ": STATUS.DONE not set by the rejected start";
+  EXPECT_EQ(r.error_code, code) << what << ": " << regs::error_text(r.error_code);
+  EXPECT_EQ(r.status_changes, 0) << what << ": STATUS changed between reads";
+  EXPECT_EQ(r.bus.bad_writes, 0) << what << ": the engine wrote to memory";
+  EXPECT_EQ(r.bus.bad_reads, 0) << what << ": the engine read memory";
+}
+
 // ---- Rectification (issue 32, docs/architecture.md 3.10) ----------------------------------
 // A raw pair: crops of camera B's raw Teddy views (real texture), of raw_w x raw_h.
 std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng) {
@@ -624,14 +636,7 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
   });
   for (const Bad& b : bad) {
     SCOPED_TRACE(b.what);
-    const sim::EngineResult r = sim::run_raw(b.cfg, {}, 3000);
-    EXPECT_FALSE(r.timed_out);
-    EXPECT_TRUE(r.error);
-    EXPECT_TRUE(r.done) << "STATUS.DONE not set by the rejected start";
-    EXPECT_EQ(r.error_code, b.code) << regs::error_text(r.error_code);
-    EXPECT_EQ(r.status_changes, 0) << "STATUS changed between reads";
-    EXPECT_EQ(r.bus.bad_writes, 0) << "the engine wrote to memory";
-    EXPECT_EQ(r.bus.bad_reads, 0) << "the engine read memory";
+    expect_rejected(sim::run_raw(b.cfg, {}, 3000), b.code, b.what);
   }
   // Codes 22 and 23: meshes in memory (each node u then v, 32-bit little-endian), all
   // nodes in range and small tiles but one: a node beyond 4096 pixels, or a tile whose
@@ -815,13 +820,7 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
       EXPECT_TRUE(r.timed_out) << b.what << ": finished within 1000 cycles";
       continue;
     }
-    EXPECT_FALSE(r.timed_out) << b.what;
-    EXPECT_TRUE(r.error) << b.what;
-    EXPECT_TRUE(r.done) << b.what << ": STATUS.DONE not set by the rejected start";
-    EXPECT_EQ(r.error_code, b.code) << b.what;
-    EXPECT_EQ(r.status_changes, 0) << b.what << ": STATUS changed between reads";
-    EXPECT_EQ(r.bus.bad_writes, 0) << b.what << ": the engine wrote to memory";
-    EXPECT_EQ(r.bus.bad_reads, 0) << b.what << ": the engine read memory";
+    expect_rejected(r, b.code, b.what);
   }
 }
 
