@@ -46,7 +46,9 @@ run_check() {  # name "rtl_files" depth [mutant_sed]
 rows=(); status=0
 only=${ONLY:-}
 for o in $only; do
-  printf '%s\n' "${checks[@]}" | grep -q "^$o|" || { echo "formal: no check named '$o'" >&2; exit 2; }
+  known=0   # bash alone: a pipe into grep -q can fail on a match under pipefail (SIGPIPE)
+  for c in "${checks[@]}"; do [ "${c%%|*}" = "$o" ] && known=1; done
+  [ $known = 1 ] || { echo "formal: no check named '$o'" >&2; exit 2; }
 done
 for c in "${checks[@]}"; do
   IFS='|' read -r name file depth mut <<<"$c"

@@ -12,20 +12,29 @@ pkg=mcadsw_pkg.sv
 # The packages, read in this order before the modules and never linted as a top: the
 # engine's, then the rectifier's (it imports the engine's). rtl/mcadsw.f lists both first.
 pkgs=("$pkg" rect/mcadsw_rect_pkg.sv)
+# in_list NEEDLE ITEM...: whether NEEDLE is one of the items. Bash alone, no pipe into
+# `grep -q`: under pipefail, grep -q leaving at its first match can kill the printf
+# feeding it with SIGPIPE, and the pipeline then fails on a match (rtl_check reported
+# listed files as "not in rtl/mcadsw.f", 2026-11-26, twice, once in CI).
+in_list() {
+  local needle=$1 item; shift
+  for item in "$@"; do [ "$item" = "$needle" ] && return 0; done
+  return 1
+}
 list=$("$root/scripts/rtl_files.sh" --no-pkg .) || { echo "rtl_check: scripts/rtl_files.sh failed" >&2; exit 1; }
 mapfile -t listed <<< "${list//.\//}"
 mods=()
 for f in "${listed[@]}"; do
   [ -n "$f" ] || continue
-  printf '%s\n' "${pkgs[@]}" | grep -qx "$f" || mods+=("$f")
+  in_list "$f" "${pkgs[@]}" || mods+=("$f")
 done
 for p in "${pkgs[@]:1}"; do
-  printf '%s\n' "${listed[@]}" | grep -qx "$p" || { echo "rtl_check: rtl/$p is not in rtl/mcadsw.f" >&2; exit 1; }
+  in_list "$p" "${listed[@]}" || { echo "rtl_check: rtl/$p is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 # The list is the one every tool reads: a source file it does not name is an error
 # (rtl/rect/rect.f, the rectifier's own list for its block tests, is not read here).
 for f in *.sv rect/*.sv; do
-  printf '%s\n' "${pkgs[@]}" "${mods[@]}" | grep -qx "$f" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
+  in_list "$f" "${pkgs[@]}" "${mods[@]}" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 waivers=()
 [ -f lint_waivers.vlt ] && waivers=(lint_waivers.vlt)

@@ -7,9 +7,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 nopkg=0
 if [ "${1:-}" = --no-pkg ]; then nopkg=1; shift; fi
 dir=${1:-$root/rtl}
-# Bash alone (no pipeline of sed and grep): a reader of this list sees all of it or an
-# error, never a list cut short (rtl_check once failed on a list that ended after five
-# files, 2026-11-26, cause not found).
+# Bash alone (no pipeline of sed and grep). (rtl_check's "not in rtl/mcadsw.f" failures
+# of 2026-11-26 were not a short list but rtl_check's own `printf | grep -q` under
+# pipefail failing on a match by SIGPIPE; rtl_check now tests membership in bash.)
 while IFS= read -r line || [ -n "$line" ]; do
   line=${line%%//*}                                  # comment
   line=${line%"${line##*[![:space:]]}"}              # trailing white space
