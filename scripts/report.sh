@@ -20,7 +20,7 @@ mkdir -p "$out"
 data=$root/data
 
 # One numeric field of a flat JSON object.
-jget() { grep -o "\"$1\": *[-0-9.e+]*" "$2" | head -1 | sed 's/.*: *//'; }
+jget() { grep -o "\"$1\": *[-0-9.e+]*" "$2" | sed -n '1s/.*: *//p'; }   # sed reads it all: no SIGPIPE under pipefail
 # One top-level field of the synthesis summary (flow/synth.py), read as JSON; empty when absent.
 sget() { python3 -c 'import json, sys; v = json.load(open(sys.argv[2])).get(sys.argv[1]); print("" if v is None else v)' "$1" "$2"; }
 
