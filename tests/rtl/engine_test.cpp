@@ -506,6 +506,24 @@ void expect_rejected(const EngineResult& r, int code, const std::string& what) {
   EXPECT_EQ(r.bus.bad_reads, 0) << what << ": the engine read memory";
 }
 
+// Variants of a good configuration, each with the code the engine must reject it with
+// (0: accepted).
+struct BadConfigs {
+  struct Bad {
+    const char* what;
+    sim::RawConfig cfg;
+    int code;
+  };
+  sim::RawConfig good;
+  std::vector<Bad> list;
+  template <class Change>
+  void add(const char* what, int code, Change change) {
+    sim::RawConfig c = good;
+    change(c);
+    list.push_back({what, c, code});
+  }
+};
+
 // ---- Rectification (issue 32, docs/architecture.md 3.10) ----------------------------------
 // A raw pair: crops of camera B's raw Teddy views (real texture), of raw_w x raw_h.
 std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng) {
@@ -595,17 +613,8 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
   good.valid_base = {0x22000, 0x23000};
   good.mesh_nx = 5;
   good.mesh_ny = 4;
-  struct Bad {
-    const char* what;
-    sim::RawConfig cfg;
-    int code;
-  };
-  std::vector<Bad> bad;
-  auto with = [&](const char* what, int code, auto change) {
-    sim::RawConfig c = good;
-    change(c);
-    bad.push_back({what, c, code});
-  };
+  BadConfigs bad{good, {}};
+  const auto with = [&](const char* what, int code, auto change) { bad.add(what, code, change); };
   with("step 2", 16, [](auto& c) { c.rect_step = 2; });
   with("step 6", 16, [](auto& c) { c.rect_step = 6; });
   with("raw width 0", 17, [](auto& c) { c.raw_width = 0; });
@@ -634,7 +643,7 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
     c.width = 0;
     c.rect_step = 2;
   });
-  for (const Bad& b : bad) {
+  for (const BadConfigs::Bad& b : bad.list) {
     SCOPED_TRACE(b.what);
     expect_rejected(sim::run_raw(b.cfg, {}, 3000), b.code, b.what);
   }
@@ -680,17 +689,8 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
 // cycle, and DONE left clear, both passing a single read) and writes nothing.
 TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   const sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 60, 40, 16};
-  struct Bad {
-    const char* what;
-    sim::RawConfig cfg;
-    int code;
-  };
-  std::vector<Bad> bad;
-  auto with = [&](const char* what, int code, auto change) {
-    sim::RawConfig c = good;
-    change(c);
-    bad.push_back({what, c, code});
-  };
+  BadConfigs bad{good, {}};
+  const auto with = [&](const char* what, int code, auto change) { bad.add(what, code, change); };
   with("width 0", 1, [](auto& c) { c.width = 0; });
   with("width above the maximum", 1, [](auto& c) { c.width = kMaxWidth + 1; });
   with("height 0", 2, [](auto& c) { c.height = 0; });
@@ -813,7 +813,7 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   });
   lr("control: valid tiled LR configuration", 0, [](auto& c) { c.tile_stride = 160; });
   with("input plane beyond 4 GiB", 9, [](auto& c) { c.base_lv = 0xfffff800u; });
-  for (const Bad& b : bad) {
+  for (const BadConfigs::Bad& b : bad.list) {
     const sim::EngineResult r = sim::run_raw(b.cfg, {}, 1000);
     if (b.code == 0) {
       EXPECT_FALSE(r.error) << b.what << ": rejected with code " << r.error_code;
