@@ -3,7 +3,9 @@
 #
 #   make mutate N=200 SEED=1            the N mutants Yosys's `mutate -list N -seed SEED`
 #                                       spreads over the design, each run against the kill suite
-#   make mutate N=200 SEED=1 SAMPLE=12  a seeded sample of 12 of those N (CI)
+#   make mutate N=200 SEED=1 SAMPLE=12  a seeded sample of 12 of those N (CI), drawn from
+#                                       those tests/mutate/survivors.txt does not give as
+#                                       equivalent
 #   JOBS=k                              mutants run in parallel (default: the cores)
 #   MUTANTS="3 17"                      only these mutants of the list, again (after a new
 #                                       test); the other results of the last run are kept
@@ -26,7 +28,9 @@
 # set from the plusarg +mcadsw_mutant=K, below). Verilator builds that one model into
 # the engine harness (sim/CMakeLists.txt, MCADSW_MUTANT_VERILOG), and the harness passes
 # the environment variable MCADSW_MUTANT on as that plusarg. So N mutants
-# cost one model build; the design with mutsel = 0 must pass the whole kill suite first.
+# cost one model build; the design with mutsel = 0 must pass each stage of the kill suite
+# before mutants run it (the engine stage first, for every mutant; the later stages,
+# and the design as written through them, only when a mutant passes the engine stage).
 #
 # Kill suite, in this order, stopping at the first failure (GoogleTest --gtest_fail_fast):
 #   1. rtl_engine_test (tests/rtl/engine_test.cpp): crops of real pairs in every mode
@@ -175,13 +179,17 @@ else
     awk -v st="$2" '/^== / { on = ($2 == st ":") ; next }
                     on && /^(case +[0-9]+ |[0-9]+x[0-9]+ D=[0-9]+: |sim-random: )/' "$1"
   }
+  # kill_suite K LOG [STAGE...]: mutant K through the stages (all when none are named;
+  # named ones append to LOG, which then holds the earlier stages' output already).
   kill_suite() {
     local k=$1 log=$2 rc
-    : > "$log"
+    shift 2
     local -a stages
     mapfile -t stages < <(stages_list)
+    [ $# -gt 0 ] && [ "$1" != "${stages[0]%%|*}" ] || : > "$log"
     for s in "${stages[@]}"; do
       local name=${s%%|*} cmd=${s#*|}
+      [ $# = 0 ] || [[ " $* " == *" $name "* ]] || continue
       echo "== $name: $cmd" >> "$log"
       rc=0
       MCADSW_MUTANT=$k timeout -k 10 "$stage_timeout" $cmd >> "$log" 2>&1 || rc=$?
@@ -216,51 +224,41 @@ else
     printf 'survived\t-\n'
   }
 
-  # The design as written: the three stages at once (on as many cores; the logs
-  # joined in the suite's order), every one must pass.
-  echo "mutate: the design as written (mutsel = 0) through the kill suite"
-  t0=$(date +%s)
-  mapfile -t base_stages < <(stages_list)
+  # The design as written through some stages of the suite (as many at once as there
+  # are jobs; each section appended to baseline.log), every one must pass. Lazily: the
+  # engine stage first, the later ones only when a mutant passes the stages before them
+  # (a sample's mutants mostly fail the engine stage; the others cost ten minutes of a
+  # loaded CI machine).
   : > "$out/baseline.log"
-  for i in "${!base_stages[@]}"; do
-    s=${base_stages[$i]}
-    { echo "== ${s%%|*}: ${s#*|}"; rc=0; ts=$(date +%s)
-      MCADSW_MUTANT=0 timeout -k 10 "$((4 * stage_timeout))" ${s#*|} 2>&1 || rc=$?
-      echo "== seconds $(( $(date +%s) - ts ))"; echo "== exit $rc"; } > "$out/baseline_$i.log" &
-    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
-  done
-  wait
-  for i in "${!base_stages[@]}"; do
-    cat "$out/baseline_$i.log" >> "$out/baseline.log"
-    tail -1 "$out/baseline_$i.log" | grep -qx '== exit 0' ||
-      die "the unmutated model fails the kill suite's ${base_stages[$i]%%|*} stage (log: $out/baseline.log): fix this first"
-  done
-  rm -f "$out"/baseline_[0-9]*.log
-  echo "mutate: unmutated model passes the kill suite in $(( $(date +%s) - t0 )) s"
-  slowest=$(awk '$1 == "==" && $2 == "seconds" { print $3 }' "$out/baseline.log" | sort -n | tail -1)
-  slowest=${slowest:-0}
-  if [ $((2 * slowest)) -gt "$stage_timeout" ]; then
-    echo "mutate: its slowest stage took $slowest s: a mutant's stage may take $((2 * slowest)) s (not $stage_timeout)"
-    stage_timeout=$((2 * slowest))
-  fi
-
-  # 4. Which mutants: all, a list, or a seeded sample (a linear congruential
-  # generator in shell arithmetic: the same picks on every machine).
-  if [ -n "${MUTANTS:-}" ]; then
-    picks=$MUTANTS
-  elif [ "$sample" -gt 0 ]; then
-    picks=$(state=$seed; left=$sample; declare -A seen=()
-            while [ "$left" -gt 0 ]; do
-              state=$(( (state * 1103515245 + 12345) % 2147483648 ))
-              k=$(( state % n + 1 ))
-              [ -n "${seen[$k]:-}" ] && continue
-              seen[$k]=1; echo "$k"; left=$((left - 1))
-            done | sort -n | tr '\n' ' ')
-  else
-    picks=$(seq 1 "$n" | tr '\n' ' ')
-  fi
-  npicks=$(wc -w <<< "$picks")
-  echo "$no_rect" > "$out/no_rect"
+  baseline() {
+    local t0 i s rc ts slowest
+    t0=$(date +%s)
+    local -a base_stages
+    mapfile -t base_stages < <(stages_list)
+    for i in "${!base_stages[@]}"; do
+      s=${base_stages[$i]}
+      [[ " $* " == *" ${s%%|*} "* ]] || continue
+      { echo "== ${s%%|*}: ${s#*|}"; rc=0; ts=$(date +%s)
+        MCADSW_MUTANT=0 timeout -k 10 "$((4 * stage_timeout))" ${s#*|} 2>&1 || rc=$?
+        echo "== seconds $(( $(date +%s) - ts ))"; echo "== exit $rc"; } > "$out/baseline_$i.log" &
+      while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+    done
+    wait
+    for i in "${!base_stages[@]}"; do
+      [ -f "$out/baseline_$i.log" ] || continue
+      cat "$out/baseline_$i.log" >> "$out/baseline.log"
+      [ "$(tail -n 1 "$out/baseline_$i.log")" = '== exit 0' ] ||
+        die "the unmutated model fails the kill suite's ${base_stages[$i]%%|*} stage (log: $out/baseline.log): fix this first"
+      rm -f "$out/baseline_$i.log"
+    done
+    echo "mutate: the design as written (mutsel = 0) passes the kill suite's stages $* in $(( $(date +%s) - t0 )) s"
+    slowest=$(awk '$1 == "==" && $2 == "seconds" { print $3 }' "$out/baseline.log" | sort -n | tail -n 1)
+    slowest=${slowest:-0}
+    if [ $((2 * slowest)) -gt "$stage_timeout" ]; then
+      echo "mutate: its slowest stage took $slowest s: a mutant's stage may take $((2 * slowest)) s (not $stage_timeout)"
+      stage_timeout=$((2 * slowest))
+    fi
+  }
 
   # Module of each mutant: the innermost instance on its cell's path.
   awk -v OFS='\t' '
@@ -275,6 +273,33 @@ else
       key = $0; sub(/ -ctrl [^ ]+ [0-9]+ [0-9]+/, "", key)
       print k, who, key }' "$out/instances.txt" "$out/list.ys" > "$out/mutants.tsv"
 
+  # 4. Which mutants: all, a list, or a seeded sample (a linear congruential
+  # generator in shell arithmetic: the same picks on every machine).
+  if [ -n "${MUTANTS:-}" ]; then
+    picks=$MUTANTS
+  elif [ "$sample" -gt 0 ]; then
+    # The sample skips the mutants the list already gives as equivalent (reviewed: they
+    # survive by construction, and each costs the whole kill suite, about 10 minutes on
+    # CI's loaded machine, to show nothing new); it draws further ones in their place.
+    equiv=$(awk -F'\t' 'FNR == NR { if ($1 ~ /^mutate / && $2 == "equivalent") eq[$1] = 1; next }
+                        ($3 in eq) { printf "%s ", $1 }' "$listfile" "$out/mutants.tsv")
+    avail=$(( n - $(wc -w <<< "$equiv") ))
+    [ "$sample" -le "$avail" ] || die "SAMPLE $sample: only $avail of the $n mutants are not listed as equivalent"
+    picks=$(state=$seed; left=$sample; declare -A seen=()
+            for k in $equiv; do seen[$k]=1; done
+            while [ "$left" -gt 0 ]; do
+              state=$(( (state * 1103515245 + 12345) % 2147483648 ))
+              k=$(( state % n + 1 ))
+              [ -n "${seen[$k]:-}" ] && continue
+              seen[$k]=1; echo "$k"; left=$((left - 1))
+            done | sort -n | tr '\n' ' ')
+    [ -z "$equiv" ] || echo "mutate: the sample leaves out $(wc -w <<< "$equiv") mutants listed as equivalent ($equiv)"
+  else
+    picks=$(seq 1 "$n" | tr '\n' ' ')
+  fi
+  npicks=$(wc -w <<< "$picks")
+  echo "$no_rect" > "$out/no_rect"
+
   # 5. Run them.
   echo "mutate: $npicks of $n mutants, $jobs at a time, kill suite: engine tests, AXI tests, 40 random frames, cycle counts"
   if [ -n "${MUTANTS:-}" ]; then     # re-run these, keep the other results of the last run
@@ -284,13 +309,32 @@ else
   fi
   mkdir -p "$out/logs" "$out/results"
   export -f kill_suite stages_list stage_cycles
-  export bin stage_timeout out
+  export bin out
+  # run_stages PICKS STAGE...: each of PICKS through those stages (results/K: number,
+  # outcome, the test that killed it, seconds, the earlier stages' seconds added).
+  run_stages() {
+    local p=$1
+    shift
+    export stage_timeout stages="$*"
+    for k in $p; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
+      k={}; t0=$(date +%s); before=0
+      [ ! -f "$out/results/$k" ] || before=$(cut -f4 "$out/results/$k")
+      r=$(kill_suite "$k" "$out/logs/mutant_$k.log" $stages)
+      printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 + before ))" > "$out/results/$k"
+      [ "${r%%	*}" = survived ] && [ "$stages" = engine ] ||
+        printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
+  }
   tstart=$(date +%s)
-  for k in $picks; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
-    k={}; t0=$(date +%s)
-    r=$(kill_suite "$k" "$out/logs/mutant_$k.log")
-    printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 ))" > "$out/results/$k"
-    printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
+  # The engine stage for every pick; then the AXI and random stages for those that
+  # passed it (the suite's order, stopping at the first failure, as one run would).
+  baseline engine
+  run_stages "$picks" engine
+  later=$(for k in $picks; do [ "$(cut -f2 "$out/results/$k")" = survived ] && printf '%s ' "$k"; done || true)
+  if [ -n "$later" ]; then
+    echo "mutate: $(wc -w <<< "$later") mutants pass the engine stage: the AXI and random stages"
+    baseline axi random
+    run_stages "$later" axi random
+  fi
   elapsed=$(( $(date +%s) - tstart ))
   echo "$elapsed" > "$out/run_seconds"
 fi
@@ -298,7 +342,7 @@ fi
 # 6. Summary (scripts/mutate_summary.py): survivors found in the committed list are
 # equivalent or open; results.tsv, summary.json; exit 1 on an unlisted survivor.
 cat "$out/results"/* | sort -n > "$out/outcomes.tsv"
-[ "${REPORT_ONLY:-0}" = 1 ] || echo "mutate: $(( $(date +%s) - start_all )) s in all, $elapsed s running mutants"
+[ "${REPORT_ONLY:-0}" = 1 ] || echo "mutate: $(( $(date +%s) - start_all )) s in all, $elapsed s running the design as written and the mutants"
 rc=0
 python3 "$root/scripts/mutate_summary.py" --out "$out" --list "$listfile" --list-name "${listfile#$root/}" \
   --n "$n" --seed "$seed" --sample "$sample" --seconds "$elapsed" --jobs "$jobs" --no-rect "$no_rect" || rc=$?

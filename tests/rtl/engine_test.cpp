@@ -268,23 +268,6 @@ TEST(Engine, WidestFrameOfNoise) {
   }
 }
 
-// The tallest frames, kMaxHeight - 1 and kMaxHeight rows: row bits above 1023
-// (found by `make mutate`: no other test has a frame that tall, so the
-// scheduler's last-block-row compare could ignore the height's bit 10), and
-// in the LR mode.
-TEST(Engine, TallestFrames) {
-  std::mt19937 rng(15);
-  Config cfg;
-  cfg.disparities = 2;
-  for (const int h : {kMaxHeight - 1, kMaxHeight})
-    for (const bool lr : {false, true}) {  // the LR mode: its post stage's row bits
-      SCOPED_TRACE("H = " + std::to_string(h) + (lr ? ", LR mode" : ""));
-      EngineOptions opt;
-      opt.lr = lr;
-      expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, opt));
-    }
-}
-
 // The planes in the reverse order in memory (written planes below the ones
 // read): every overlap comparison of the configuration check (error 6) is then
 // decided the other way (found by `make mutate`: with the harness's one order, a
@@ -302,75 +285,6 @@ TEST(Engine, PlanesInReverseOrder) {
     opt.lr = mode == 2;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
-}
-
-// Frames anywhere in the 32-bit address space (issue 20: the address, base
-// and stride bits above the first MiB, which no frame laid out from address 0
-// reaches): at the top of the space (the planes end less than 8 KiB below
-// 2^32), planes packed at 4-byte alignment (base bits 2..11), and strides of up
-// to 3 GiB a row (sim::MemoryModel stores the space sparsely). Each placement
-// in every mode whose planes fit (the LR mode has two more planes of the input
-// stride and one more of the output stride): exact, no access outside the
-// planes' pixels.
-TEST(Engine, FramesAnywhereInTheAddressSpace) {
-  std::mt19937 rng(16);
-  struct Placement {
-    const char* what;
-    int w, h;
-    uint32_t stride, out_stride, tile_stride;  // 0: the harness's default
-    bool tiled, packed, top;
-  };
-  const Placement placements[] = {
-      {"at the top, packed", 37, 21, 0, 0, 0, false, true, true},
-      {"at the top, 4 KiB aligned, tiled", 37, 21, 0, 0, 0, true, false, true},
-      {"input stride 2^29 + 4, one row", 23, 1, 0x20000004u, 0, 0, false, true, false},
-      {"input stride 2^27 + 2^26 + 36, two rows, at the top", 23, 2, 0x0c000024u, 0, 0, false, true, true},
-      {"output stride 3 GiB, one row", 23, 1, 0, 0xc0000000u, 0, false, false, false},
-      {"output stride 2^27 - 4, 3 rows, at the top", 23, 3, 0, 0x07fffffcu, 0, false, true, true},
-      {"tile stride 2^29 - 4, one column of tiles", 4, 5, 0, 0, 0x1ffffffcu, true, true, false},
-      {"tile stride 2^26 + 2^25 + 4, two columns, at the top", 7, 4, 0, 0, 0x06000004u, true, true, true},
-      // Alternating bit patterns: the row and column offsets (stride x row, tile
-      // stride x column) set every other bit up to bit 28.
-      {"input stride 0x15545554, two rows", 23, 2, 0x15545554u, 0, 0, false, true, false},
-      {"input stride 0x0aaaaaa8, two rows", 23, 2, 0x0aaaaaa8u, 0, 0, false, true, false},
-      {"tile stride 0x15545554, two columns", 5, 3, 0, 0, 0x15545554u, true, true, false},
-      {"tile stride 0x0aaaaaa8, two columns", 5, 3, 0, 0, 0x0aaaaaa8u, true, true, false},
-      {"input stride 0x05555554, two rows", 23, 2, 0x05555554u, 0, 0, false, true, false},
-      // A window's first row far down a tall frame: its row offset (row x stride).
-      {"input stride 0x000aaaa8, 600 rows", 4, 600, 0x000aaaa8u, 0, 0, false, true, false},
-      // The LR mode's widest strides (its dL, dR, output and mask planes must fit too).
-      {"input stride 0x1ffff000, one row", 23, 1, 0x1ffff000u, 0, 0, false, true, false},
-      {"output stride 0x7fff0000, one row", 23, 1, 0, 0x7fff0000u, 0, false, true, false},
-  };
-  Config cfg;
-  cfg.disparities = 5;
-  int runs = 0;
-  for (const Placement& pl : placements) {
-    const YuvImage l = test::random_yuv(pl.w, pl.h, rng), r = test::random_yuv(pl.w, pl.h, rng);
-    for (const int mode : {0, 1, 2}) {
-      EngineOptions opt;
-      opt.stride = pl.stride;
-      opt.out_stride = pl.out_stride;
-      opt.tiled = pl.tiled;
-      opt.tile_stride = pl.tile_stride;
-      opt.packed = pl.packed;
-      opt.right = mode == 1;
-      opt.lr = mode == 2;
-      opt.subpixel = mode == 2;
-      uint64_t bytes = 0;
-      try {
-        bytes = sim::frame_bytes(pl.w, pl.h, opt);
-      } catch (const std::invalid_argument&) {
-        continue;  // the LR mode's two more planes of this stride do not fit
-      }
-      if (pl.top) opt.origin = uint32_t(((uint64_t(1) << 32) - bytes) / 4096 * 4096);
-      SCOPED_TRACE(std::string(pl.what) + (mode == 0 ? ", left view as base" : mode == 1 ? ", right view as base" : ", LR sub-pixel") +
-                   ", origin " + std::to_string(opt.origin));
-      expect_exact(sim::run_engine(l, r, cfg, opt));
-      ++runs;
-    }
-  }
-  EXPECT_EQ(runs, 45) << "placements that no longer fit";
 }
 
 // Sub-pixel mode (docs/algorithm.md 12.6): every 16-bit value equal to the
@@ -853,6 +767,98 @@ TEST(EngineDeathTest, AssertionStopsTheSimulation) {
   EXPECT_DEATH(spurious_read_data(),
                "(u_axi_master: ReadBeatInFlight|u_mem_ctrl: ReadDataOnlyWhenOutstanding|"
                ".*: ReadDataOnlyWhenInFlight)");
+}
+
+// ---- The longest tests last ------------------------------------------------------------
+// GoogleTest runs a file's tests in their order here, and `make mutate` stops a mutant's
+// kill suite at its first failing test: these two take more than half of the suite's
+// time (on the mutant model, minutes in CI), so they come after the tests that kill most
+// mutants sooner (the rectifier's, the configuration errors').
+
+// The tallest frames, kMaxHeight - 1 and kMaxHeight rows: row bits above 1023
+// (found by `make mutate`: no other test has a frame that tall, so the
+// scheduler's last-block-row compare could ignore the height's bit 10), and
+// in the LR mode.
+TEST(Engine, TallestFrames) {
+  std::mt19937 rng(15);
+  Config cfg;
+  cfg.disparities = 2;
+  for (const int h : {kMaxHeight - 1, kMaxHeight})
+    for (const bool lr : {false, true}) {  // the LR mode: its post stage's row bits
+      SCOPED_TRACE("H = " + std::to_string(h) + (lr ? ", LR mode" : ""));
+      EngineOptions opt;
+      opt.lr = lr;
+      expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, opt));
+    }
+}
+
+// Frames anywhere in the 32-bit address space (issue 20: the address, base
+// and stride bits above the first MiB, which no frame laid out from address 0
+// reaches): at the top of the space (the planes end less than 8 KiB below
+// 2^32), planes packed at 4-byte alignment (base bits 2..11), and strides of up
+// to 3 GiB a row (sim::MemoryModel stores the space sparsely). Each placement
+// in every mode whose planes fit (the LR mode has two more planes of the input
+// stride and one more of the output stride): exact, no access outside the
+// planes' pixels.
+TEST(Engine, FramesAnywhereInTheAddressSpace) {
+  std::mt19937 rng(16);
+  struct Placement {
+    const char* what;
+    int w, h;
+    uint32_t stride, out_stride, tile_stride;  // 0: the harness's default
+    bool tiled, packed, top;
+  };
+  const Placement placements[] = {
+      {"at the top, packed", 37, 21, 0, 0, 0, false, true, true},
+      {"at the top, 4 KiB aligned, tiled", 37, 21, 0, 0, 0, true, false, true},
+      {"input stride 2^29 + 4, one row", 23, 1, 0x20000004u, 0, 0, false, true, false},
+      {"input stride 2^27 + 2^26 + 36, two rows, at the top", 23, 2, 0x0c000024u, 0, 0, false, true, true},
+      {"output stride 3 GiB, one row", 23, 1, 0, 0xc0000000u, 0, false, false, false},
+      {"output stride 2^27 - 4, 3 rows, at the top", 23, 3, 0, 0x07fffffcu, 0, false, true, true},
+      {"tile stride 2^29 - 4, one column of tiles", 4, 5, 0, 0, 0x1ffffffcu, true, true, false},
+      {"tile stride 2^26 + 2^25 + 4, two columns, at the top", 7, 4, 0, 0, 0x06000004u, true, true, true},
+      // Alternating bit patterns: the row and column offsets (stride x row, tile
+      // stride x column) set every other bit up to bit 28.
+      {"input stride 0x15545554, two rows", 23, 2, 0x15545554u, 0, 0, false, true, false},
+      {"input stride 0x0aaaaaa8, two rows", 23, 2, 0x0aaaaaa8u, 0, 0, false, true, false},
+      {"tile stride 0x15545554, two columns", 5, 3, 0, 0, 0x15545554u, true, true, false},
+      {"tile stride 0x0aaaaaa8, two columns", 5, 3, 0, 0, 0x0aaaaaa8u, true, true, false},
+      {"input stride 0x05555554, two rows", 23, 2, 0x05555554u, 0, 0, false, true, false},
+      // A window's first row far down a tall frame: its row offset (row x stride).
+      {"input stride 0x000aaaa8, 600 rows", 4, 600, 0x000aaaa8u, 0, 0, false, true, false},
+      // The LR mode's widest strides (its dL, dR, output and mask planes must fit too).
+      {"input stride 0x1ffff000, one row", 23, 1, 0x1ffff000u, 0, 0, false, true, false},
+      {"output stride 0x7fff0000, one row", 23, 1, 0, 0x7fff0000u, 0, false, true, false},
+  };
+  Config cfg;
+  cfg.disparities = 5;
+  int runs = 0;
+  for (const Placement& pl : placements) {
+    const YuvImage l = test::random_yuv(pl.w, pl.h, rng), r = test::random_yuv(pl.w, pl.h, rng);
+    for (const int mode : {0, 1, 2}) {
+      EngineOptions opt;
+      opt.stride = pl.stride;
+      opt.out_stride = pl.out_stride;
+      opt.tiled = pl.tiled;
+      opt.tile_stride = pl.tile_stride;
+      opt.packed = pl.packed;
+      opt.right = mode == 1;
+      opt.lr = mode == 2;
+      opt.subpixel = mode == 2;
+      uint64_t bytes = 0;
+      try {
+        bytes = sim::frame_bytes(pl.w, pl.h, opt);
+      } catch (const std::invalid_argument&) {
+        continue;  // the LR mode's two more planes of this stride do not fit
+      }
+      if (pl.top) opt.origin = uint32_t(((uint64_t(1) << 32) - bytes) / 4096 * 4096);
+      SCOPED_TRACE(std::string(pl.what) + (mode == 0 ? ", left view as base" : mode == 1 ? ", right view as base" : ", LR sub-pixel") +
+                   ", origin " + std::to_string(opt.origin));
+      expect_exact(sim::run_engine(l, r, cfg, opt));
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 45) << "placements that no longer fit";
 }
 
 }  // namespace
