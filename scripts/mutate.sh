@@ -179,17 +179,17 @@ else
     awk -v st="$2" '/^== / { on = ($2 == st ":") ; next }
                     on && /^(case +[0-9]+ |[0-9]+x[0-9]+ D=[0-9]+: |sim-random: )/' "$1"
   }
-  # kill_suite K LOG [STAGE...]: mutant K through the stages (all when none are named;
-  # named ones append to LOG, which then holds the earlier stages' output already).
+  # kill_suite K LOG STAGE...: mutant K through those stages of the suite, in its order
+  # (LOG starts afresh with the suite's first stage, else the earlier ones are in it).
   kill_suite() {
     local k=$1 log=$2 rc
     shift 2
     local -a stages
     mapfile -t stages < <(stages_list)
-    [ $# -gt 0 ] && [ "$1" != "${stages[0]%%|*}" ] || : > "$log"
+    [ "$1" != "${stages[0]%%|*}" ] || : > "$log"
     for s in "${stages[@]}"; do
       local name=${s%%|*} cmd=${s#*|}
-      [ $# = 0 ] || [[ " $* " == *" $name "* ]] || continue
+      [[ " $* " == *" $name "* ]] || continue
       echo "== $name: $cmd" >> "$log"
       rc=0
       MCADSW_MUTANT=$k timeout -k 10 "$stage_timeout" $cmd >> "$log" 2>&1 || rc=$?
@@ -315,25 +315,30 @@ else
   run_stages() {
     local p=$1
     shift
-    export stage_timeout stages="$*"
+    export stage_timeout stages="$*" last
     for k in $p; do echo "$k"; done | xargs -P "$jobs" -I{} bash -c '
       k={}; t0=$(date +%s); before=0
       [ ! -f "$out/results/$k" ] || before=$(cut -f4 "$out/results/$k")
       r=$(kill_suite "$k" "$out/logs/mutant_$k.log" $stages)
       printf "%s\t%s\t%s\n" "$k" "$r" "$(( $(date +%s) - t0 + before ))" > "$out/results/$k"
-      [ "${r%%	*}" = survived ] && [ "$stages" = engine ] ||
+      [ "${r%%	*}" = survived ] && [ "$stages" != "$last" ] ||
         printf "mutate: mutant %4s  %-8s %s\n" "$k" "${r%%	*}" "${r#*	}"'
   }
   tstart=$(date +%s)
   # The engine stage for every pick; then the AXI and random stages for those that
   # passed it (the suite's order, stopping at the first failure, as one run would).
-  baseline engine
-  run_stages "$picks" engine
+  mapfile -t suite < <(stages_list)
+  first=${suite[0]%%|*}
+  rest=$(for s in "${suite[@]:1}"; do printf '%s ' "${s%%|*}"; done)
+  rest=${rest% }
+  last=$rest
+  baseline "$first"
+  run_stages "$picks" "$first"
   later=$(for k in $picks; do [ "$(cut -f2 "$out/results/$k")" = survived ] && printf '%s ' "$k"; done || true)
   if [ -n "$later" ]; then
-    echo "mutate: $(wc -w <<< "$later") mutants pass the engine stage: the AXI and random stages"
-    baseline axi random
-    run_stages "$later" axi random
+    echo "mutate: $(wc -w <<< "$later") mutants pass the $first stage: the stages $rest"
+    baseline $rest
+    run_stages "$later" $rest
   fi
   elapsed=$(( $(date +%s) - tstart ))
   echo "$elapsed" > "$out/run_seconds"
