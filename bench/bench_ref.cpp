@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Reference-model speed. MDE/s = million disparity evaluations per second
 // (width x height x D / seconds), the paper's Table IV unit. Wall-clock time
 // (UseRealTime): the reference and OpenCV SGBM both run on every core.

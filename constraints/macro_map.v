@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Yosys techmap: each inferred memory ($mem_v2, after `memory -nomap`) becomes
 // a MCADSW_RAM black-box macro (sim/gls/mcadsw_ram_model.v, read with
 // `read_verilog -lib`: its ports only). Synchronous resets,

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Timing constraints of mcadsw_engine (OpenSTA, units of the OSU 0.18 um liberty:
 # ns, pF). The clock is the paper's 95 MHz (Table III). The external memory
 # port and the configuration are synchronous to the same clock; a fifth of the

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """The engine's blocks (flow/synth.py, steps 1 and 2): listed from the elaborated
 RTLIL and renamed, each synthesised on its own by flow/synth_block.tcl (reused
 when its stamp is unchanged), their outputs read, their figures and their group
@@ -209,7 +212,7 @@ def read_table(path):
 
 
 # ---- Groups of the paper's Fig. 16 --------------------------------------------------------
-# The rectifier (issue 32: the pass, its mark step and its configuration check) is
+# The rectifier (the pass, its mark step and its configuration check) is
 # inside the engine but beyond the paper: its group is reported apart, with its own
 # budget (constraints/budget.json rect_*), and kept out of the engine's totals.
 RECT_GROUP = "rectifier"
@@ -228,7 +231,7 @@ GROUP_NAMES = {
     "memory_controller": "memory controller + window readers", "block_scheduler": "block scheduler",
     "depth_fifo": "depth FIFO", "top_registers_counters": "engine core: configuration, check, frame controller, counters, window geometry",
     "post_stage": "LR post stage (check, fill, median; beyond the paper)",
-    RECT_GROUP: "rectifier (pass, mark step, configuration check; issue 32, beyond the paper, apart from the engine's budgets)"}
+    RECT_GROUP: "rectifier (pass, mark step, configuration check; beyond the paper, apart from the engine's budgets)"}
 
 
 def group_of(b):

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """Clock gating of one block (flow/synth_block.tcl, between `synth` and `dfflibmap`).
 
 The RTL has no gated clock: a register that holds its value does so through an

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Elaboration of the engine core for `make synth` (flow/synth.py runs it in the
 # RTL directory): the package and the modules of rtl/mcadsw.f, the memory macro's
 # ports, the top's DMAX and PAR, the hierarchy checked; written as RTLIL, from

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """What every step of the synthesis and FPGA flow shares (flow/synth.py): the
 paths, the error type and messages, stamps for reusing a step's outputs, the
 RTL file list, the package generator and the process runner with its

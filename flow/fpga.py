@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """make fpga: an FPGA estimate of the design by Yosys synth_xilinx (flow/fpga.tcl),
 run by flow/synth.py fpga."""
 import json
@@ -11,7 +14,7 @@ from flowlib import FLOW, FlowError, Run, gen_package, log, rtl_list, tail
 
 
 def fpga(a):
-    """An FPGA estimate (issue 19): Yosys synth_xilinx for a 7-series part
+    """An FPGA estimate: Yosys synth_xilinx for a 7-series part
     (flow/fpga.tcl) maps the top to LUTs, flip-flops, block RAMs (RAMB18E1 /
     RAMB36E1), LUT RAMs and DSP48E1s; the counts go to summary.json and report.md
     with whether they fit an XC7Z020 and an XC7A100T. No timing: nextpnr-xilinx is

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # `make fpga` (flow/synth.py fpga): Yosys synth_xilinx for a 7-series part maps the
 # top (mcadsw_top by default: the engine behind its AXI4-Lite registers; an IP
 # core, so no I/O buffers or clock buffer) to LUTs, flip-flops, block RAMs, LUT

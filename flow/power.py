@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """make power: the engine's power at 95 MHz from the activity of real frames.
 
 Method (docs/results.md, "Power"): the RTL engine core runs a CIF crop of Teddy at

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Power of the engine netlist (flow/power.py, `make power`): OpenSTA 2.0.17 with the
 # OSU 0.18 um liberty's internal-power tables, each cell evaluated at the activity
 # its outputs had in the netlist simulation (sim/activity/netlist_activity.cpp).

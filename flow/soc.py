@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """The SoC wrapper around the engine (mcadsw_top: the AXI4-Lite register block
 and the AXI4 master), mapped alone by flow/soc.tcl and timed by
 flow/sta_alone.tcl (flow/synth.py, step 5; about 20 s, reused when unchanged)."""

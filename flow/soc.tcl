@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # The SoC wrapper's own logic (mcadsw_top's AXI4-Lite register block mcadsw_regs
 # and AXI4 master mcadsw_axi_master), each flattened and mapped as the engine's
 # blocks are (flow/synth_block.tcl: OSU 0.18 um flip-flops, ABC with the buffering

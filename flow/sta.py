@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """Timing of the assembled engine netlist (flow/synth.py, step 4): the netlist
 prepared for OpenSTA (flow/sta_netlist.tcl, then every MCADSW_RAM instance a
 parameter-free macro cell with a generated liberty), OpenSTA (flow/sta_engine.tcl),

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # OpenSTA on one block alone, at the SDC's clock with the engine's port budget: a fifth
 # of the period outside the block on each side of every input and output. Used for the
 # SoC wrapper's blocks (flow/soc.py: mcadsw_regs, mcadsw_axi_master). (The rectifier,

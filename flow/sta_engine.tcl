@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # OpenSTA on the assembled engine netlist prepared by flow/synth.py
 # (mcadsw_engine_sta.v, mcadsw_ram.lib: the memory macros' timing from
 # constraints/mcadsw_ram_timing.cfg), against constraints/mcadsw.sdc.

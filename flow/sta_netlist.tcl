@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # The assembled netlist as OpenSTA reads it (flow/synth.py): flattened, nets split
 # to bits, wire-to-wire assigns replaced by BUFX2. Every instantiated module must be
 # defined, a cell or a macro, with matching port widths (hierarchy -check; a

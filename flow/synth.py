@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """The synthesis flow of the engine (`make synth`, `make synth-check`).
 
 Yosys 0.23 to OSU 0.18 um standard cells, block by block, on-chip memories kept
@@ -28,7 +31,7 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
      (flow/soc.tcl) and timed alone (flow/sta_alone.tcl);
   6. report.md and summary.json, written last (deleted at the start). The
-     rectifier (rtl/rect/, issue 32: the engine's blocks u_rect, u_rect_mark,
+     rectifier (rtl/rect/: the engine's blocks u_rect, u_rect_mark,
      u_rect_check, group "rectifier" of flow/blocks.py) is mapped and timed in
      steps 2 to 4 as every block is, and reported apart: its gates, flip-flops and
      memory are the rect_* figures, not in the engine's (nand2_eq, flip_flops,
@@ -227,11 +230,11 @@ def synth_run(a, run, t_start, out, rtl, pkg, pkg_text, dmax, par, yosys, lib, s
 
     def kb(bits):
         return float(f"{bits / 8 / 1024:.1f}")
-    # The LR mode's post stage (issue 17) is reported apart: the engine's figures
+    # The LR mode's post stage is reported apart: the engine's figures
     # (the budget's memory) are those without it.
     post_nand2 = sum(b["instances"] * b["nand2"] for b in blocks if b["group"] == "post_stage")
     post_bits = sum(b["instances"] * b["mem"] for b in blocks if b["group"] == "post_stage")
-    # The rectifier (issue 32), inside the engine, reported apart with its own budget
+    # The rectifier, inside the engine, reported apart with its own budget
     # (constraints/budget.json rect_*): per module (the block's figures, its
     # instances' worst endpoint slack in the engine's STA), and together.
     rect = {}

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # One block of `make synth` (flow/synth.py runs one Yosys process per block, a
 # pool of them at a time): the block's module from the elaborated design (every
 # module derived with the top's parameters, block modules renamed by flow/synth.py),

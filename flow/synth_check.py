@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """make synth-check: the synthesis summary against constraints/budget.json (run
 by flow/synth.py check)."""
 import json
@@ -42,8 +45,8 @@ def check(a, synth):
         budget = json.loads(budget_path.read_text())
     except ValueError as e:
         return fail2(f"cannot read {summary_path} or {budget_path}: {e}")
-    # Memory: the engine's without the LR mode's post stage (reported apart, issue 17)
-    # and the rectifier (issue 32) where the summary has it, otherwise all of it.
+    # Memory: the engine's without the LR mode's post stage (reported apart)
+    # and the rectifier where the summary has it, otherwise all of it.
     v = {"nand2": s.get("nand2_eq"), "slack": s.get("worst_slack_ns"),
          "mem": s.get("memory_kB_engine", s.get("memory_kB")),
          "max_nand2": budget.get("nand2_eq_max"), "min_slack": budget.get("wns_ns_min"),
@@ -77,7 +80,7 @@ def check(a, synth):
     if "soc_worst_slack_ns" in s:
         chk("SoC wrapper slack", s["soc_worst_slack_ns"], ">=", v["min_slack"], "ns",
             "the register block or the AXI4 master misses the clock (build/synth/soc/sta.log)")
-    # The rectifier (issue 32): inside the engine, reported apart from it and out of the
+    # The rectifier: inside the engine, reported apart from it and out of the
     # engine's figures above; its own gate and memory budget, the engine's clock (the
     # worst endpoint inside its instances in the engine's STA) and the synchronous-macro
     # rule.

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """The synthesis report (report.md) from the flow's summary.json.
 
 flow/synth.py writes summary.json (every figure of the run) and then this
@@ -54,7 +57,7 @@ def render(s):
          f"21.3 kB |",
          f"| LR post stage (beyond the paper): gates, memory | {s['post_stage_nand2_eq']} NAND2 eq, "
          f"{s['post_stage_memory_bits']} bits = {s['post_stage_memory_kB']} kB | |",
-         *([f"| rectifier (issue 32, beyond the paper; in the engine, reported apart, below): gates, memory, "
+         *([f"| rectifier (beyond the paper; in the engine, reported apart, below): gates, memory, "
             f"worst slack | {s['rect_nand2_eq']} NAND2 eq, {rect_bits} bits = {s['rect_memory_kB']} kB, "
             f"{s['rect_worst_slack_ns']} ns | |"] if rect_mods else []),
          f"| macros with an asynchronous read port | {s['async_read_macros']} (every other read port: address "
@@ -112,7 +115,7 @@ def render(s):
                  f"{b['memory_bits']} | "
                  f"{b['yosys_seconds']} | {b['peak_MB']} | {'reused' if b['reused'] else 'synthesised'} |")
     if rect_mods:
-        r += ["", "## Rectifier (issue 32), in the engine, reported apart", "",
+        r += ["", "## Rectifier, in the engine, reported apart", "",
               "The rectifier of `rtl/rect/` is inside the engine: its pass (`mcadsw_rect`, instance `u_rect`),",
               "mark step (`mcadsw_rect_mark`, `u_rect_mark`) and configuration check (`mcadsw_rect_check`,",
               "`u_rect_check`) are blocks of the engine, mapped, assembled and timed with it (group",
@@ -121,7 +124,7 @@ def render(s):
               "it). Its worst slack is the worst endpoint inside its instances in the engine's STA",
               "(`sta_endpoints.log`: paths that end in the rectifier; a path from it into the rest of the engine",
               "ends there); the engine's worst slack above is the whole netlist's, the rectifier's included.",
-              "Issue 32's limits: 60 000 NAND2 eq and 4 kB of on-chip memory, the engine's own budgets",
+              "The rectifier's limits: 60 000 NAND2 eq and 4 kB of on-chip memory, the engine's own budgets",
               "unchanged.", "",
               "| module | NAND2 eq | flip-flops (clock-gated) | memory | worst slack (ns) |", "|---|---|---|---|---|"]
         for m, x in s["rect"].items():

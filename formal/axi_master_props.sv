@@ -1,10 +1,13 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Formal properties of the AXI4 master (rtl/mcadsw_axi_master.sv), for `make
 // formal`. Environment (assumed): the engine keeps a request unchanged until
 // its grant, asks for aligned reads of at most 4 beats that stay inside 4 KiB
 // (the window readers' rule), and the slave returns R beats and B responses
 // only for transactions it accepted. RLAST is left free: the master counts
 // beats.
-// Asserted (the AXI4 handshake rules of issue 19 and the master's own):
+// Asserted (the AXI4 handshake rules and the master's own):
 //   1. ARVALID, AWVALID and WVALID stay high, with their payload unchanged,
 //      until READY;
 //   2. 4-byte INCR bursts, aligned, none across a 4 KiB boundary, AR of the

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Formal environment of the cost aggregator (rtl/mcadsw_cost_agg.sv) for `make
 // formal`: the ping-pong buffer's ownership. The properties are in the block
 // itself (its `ifdef FORMAL` section: a ghost tag per bank and column group; every

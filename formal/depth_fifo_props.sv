@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Formal properties of the depth FIFO (rtl/mcadsw_depth_fifo.sv), for `make
 // formal`. Environment (assumed, as the scheduler and the cost aggregator
 // behave): a descriptor is pushed only with space_o; descriptor k carries

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // `make formal` of the frame controller (rtl/mcadsw_frame_ctrl.sv): its own
 // assertions (`MCADSW_ASSERT in the block: done and errors only between frames,
 // a code exactly with an error, the scheduler and post stage started in their

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Formal properties of the memory controller (rtl/mcadsw_mem_ctrl.sv), for
 // `make formal` (scripts/formal.sh: Yosys, yosys-smtbmc, z3). Every input is
 // free except for the assumptions below, which state what the rest of the

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Shared by the formal/*_props.sv wrappers: reset in the first cycle of every
 // trace (init), free afterwards; past_ok: the previous cycle was out of reset,
 // so $past values are of a running block.

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The RTL of the MCADSW engine: every tool reads this list (CMake/Verilator,
 // Yosys, Icarus, the formal, mutation, FPGA and synthesis flows; scripts/rtl_files.sh
 // prints it as paths). One file a line, relative to this folder, the package

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Assertions of the RTL, one text for simulation and formal (the pattern of
 // lowRISC's prim_assert.sv). Include inside a module that has clk_i and rst_ni:
 //

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Mini-census transformer (paper Sec. V-B, Fig. 10): input buffer, mini-census
 // kernel, census buffer. Instantiated for the left view (COLS = 48) and the
 // right view (COLS = 48 + DMAX - 1, the columns x - d can reach).
@@ -40,7 +43,7 @@
 // come from distinct sub-banks; it delivers RL columns x WINDOW rows a cycle
 // (Fig. 12). RL = LANES (8) and CSUB = 8 for the paper's engine; the right view
 // of an engine with P disparities a step reads RL = LANES + P - 1 columns
-// (issue 18), CSUB the next power of two (16). A block that continues its left
+// (11 for P = 4), CSUB the next power of two (16). A block that continues its left
 // neighbour starts BLOCK ring columns after it, shares the neighbour's last COLS -
 // BLOCK columns (codes depend only on the clamped image position) and computes only
 // its BLOCK new ones, into ring columns the block before the neighbour used: the

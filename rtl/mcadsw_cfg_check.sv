@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Configuration check of a frame (docs/registers.md, error codes 1-12): the
 // configuration the engine registered at the start, checked in the cycle after it.
 // Combinational: the engine registers err_o and ok_o at the end of that cycle, and the

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Cost aggregator and WTA (paper Sec. V-D, Figs. 12-14).
 //
 // One job is one 18-pixel row of the current block: for d = 0 .. D-1 the
@@ -18,7 +21,7 @@
 // sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
 // multiplexers out of the horizontal sum's cycle (docs/architecture.md section 6.1).
 //
-// P disparities a step (issue 18, docs/architecture.md 3.7.1): a step evaluates d ..
+// P disparities a step (docs/architecture.md 3.7.1): a step evaluates d ..
 // d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +
 // P - 1 lanes, lane j at image column (column of left lane j - (P - 1)) - d, so
 // disparity d + p of left lane l is right lane l + P - 1 - p. The vertical

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Depth FIFO (paper Fig. 9): collects the disparities the cost aggregator
 // emits (HAGG a cycle, a block row of BLOCK pixels at a time), and writes each
 // finished row to the output plane through the memory controller, as aligned

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC):
 // memory controller with a 32-bit external memory port, block scheduler, three window readers, the
 // left and right mini-census transformers, the weight generator, the cost
@@ -10,7 +13,7 @@ module mcadsw_engine #(
   parameter int AW   = 32,
   parameter int CW   = 12,                          // width / height / coordinate bits
   parameter int DMAX = mcadsw_pkg::DMAX,
-  parameter int PAR  = mcadsw_pkg::PAR,             // disparities a step (1, 2, 4; issue 18)
+  parameter int PAR  = mcadsw_pkg::PAR,             // disparities a step (1, 2, 4)
   parameter int NB   = $clog2(DMAX + 1),
   parameter int NTHR = mcadsw_pkg::WTHRESHOLDS,
   parameter int DCB  = mcadsw_pkg::COLOR_DIST_BITS

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // A small first-in first-out queue in flip-flops: up to two entries pushed in a
 // cycle (the second after the first), one popped, the head readable without a
 // pop (first-word fall-through). Used by the post stage for its dL word queue

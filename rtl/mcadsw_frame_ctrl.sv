@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Frame controller of the engine: takes a start, has the registered
 // configuration checked, runs the passes of the frame's mode one after the
 // other, and owns busy, done, the error code and the frame's counters

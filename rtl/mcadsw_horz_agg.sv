@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Horizontal aggregation (paper Fig. 12 right, Eq. 4): HAGG aggregators, each
 // summing WINDOW vertical costs shifted by their one-hot horizontal weights.
 // Aggregator m takes costs m .. m + WINDOW - 1 of the 33-cost window from the

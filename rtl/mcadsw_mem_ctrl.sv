@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Memory controller (paper Sec. V-E): one 32-bit external memory port shared
 // by NR read requestors (census left, census right, weight generator) and the
 // depth FIFO's writes. The depth FIFO has fixed highest priority (suspending

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Ping-pong buffer of vertical aggregated costs (paper Fig. 12 centre, Fig. 13).
 // Two banks of COLS costs: the vertical side fills one bank for disparity d,
 // LANES costs a cycle, while the horizontal side reads the other (d - 1).

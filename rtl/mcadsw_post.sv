@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Post-processing stage of the LR mode (docs/algorithm.md 12.2-12.5,
 // docs/architecture.md section 3.9): reads the left map dL and the right map dR
 // back from external memory row by row and writes the LR-checked, filled,

@@ -1,4 +1,7 @@
-// AXI4-Lite register block (issue 19): the engine's configuration, control,
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// AXI4-Lite register block: the engine's configuration, control,
 // status, interrupt and counters as 32-bit registers. The map (offsets, fields,
 // access) is generated into mcadsw_pkg from sw_ref/include/mcadsw/regs.hpp and
 // documented in docs/registers.md; docs/memory_map.md gives the meaning of each

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Block scheduler (paper Secs. IV, V-F, Fig. 15). Walks the 18 x 18 output
 // blocks in raster order. Block p is prepared (census left and right, weights:
 // three window readers and three blocks) into bank p % 2 while block p - 1 is

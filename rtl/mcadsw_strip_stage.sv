@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Word buffer at the front of the input buffers (Fig. 10 / Fig. 11: "the input
 // data are first packed into data words"), shared by the census transformer
 // and the weight generator. The memory side delivers a window of PLANES planes

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // MCADSW stereo-depth IP, the top a user instantiates: the engine core (mcadsw_engine) behind the
 // AXI4-Lite register block (mcadsw_regs, docs/registers.md) with its interrupt,
 // and its memory port on an AXI4 master (mcadsw_axi_master).

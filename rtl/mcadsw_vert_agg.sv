@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Hamming units and vertical aggregation (paper Fig. 12, left of the ping-pong
 // buffer; Eq. 3). For each of LANES columns, the census costs of all WINDOW
 // pixels of the column are computed in parallel, each is shifted by its one-hot

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Weight generator (paper Sec. V-C, Fig. 11): the Y, U, V input buffer of the
 // left view, a kernel of WINDOW Manhattan colour-distance units and weight-table
 // lookups, and the vertical and horizontal weight buffers, which hold two

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Window geometry of a block (docs/architecture.md, window geometry): where the
 // three window readers start and how many strips they read, and the in-image
 // bounds the census transformers and the weight generator clamp to, from the

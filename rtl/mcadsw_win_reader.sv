@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Window reader: one requestor of the memory controller (Sec. V-E). Streams a
 // read window of PLANES 8-bit planes to a census transformer or the weight
 // generator in the strip order they take (for each strip of 4 columns, for

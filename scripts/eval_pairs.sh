@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Runs the reference CLI on the bundled pairs and prints the Middlebury "all"
 # error (threshold 1) per pair and the average, one row per gamma.
 #   scripts/eval_pairs.sh [-b BUILD_DIR] [-s middlebury|cif] [-g "GAMMA ..."] [-o OUT_DIR]

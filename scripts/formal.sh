@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # make formal: bounded proofs of the control blocks' properties (formal/*_props.sv)
 # with Yosys's SAT solver: every assertion holds in every cycle of every trace of
 # DEPTH cycles from reset (bounded model check, `sat -seq DEPTH -prove-asserts

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # make gls: gate-level simulation. The OSU 0.18 um netlist written by
 # `make synth` (flow/synth.py) runs in the same Verilator harness as the RTL (models of the
 # cells: sim/gls/osu018_cells.v; of the memory macros: sim/gls/mcadsw_ram_model.v)

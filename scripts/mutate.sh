@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# make mutate: mutation testing of the RTL (issue 20). How much would the tests catch?
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
+# make mutate: mutation testing of the RTL. How much would the tests catch?
 #
 #   make mutate N=200 SEED=1            the N mutants Yosys's `mutate -list N -seed SEED`
 #                                       spreads over the design, each run against the kill suite

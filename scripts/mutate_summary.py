@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """Summary of a `make mutate` run (scripts/mutate.sh, step 6).
 
 Reads the mutant list (mutants.tsv: number, module, key), the outcomes

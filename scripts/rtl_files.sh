@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Prints the RTL files of rtl/mcadsw.f, one a line, as paths under DIR.
 #   scripts/rtl_files.sh [--no-pkg] [DIR]   DIR defaults to the repository's rtl/
 # --no-pkg leaves out mcadsw_pkg.sv (a configuration's build supplies its own).

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Storage inventory of the RTL blocks, measured by Yosys after `proc`:
 # inferred memory bits and flip-flop bits per block instance of the engine
 # (census left / right, weight generator, cost aggregator with its ping-pong

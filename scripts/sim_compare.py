@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 """Compares two `make sim` summaries (build/sim/summary.json) case by case: a
 restructuring step must leave every case bit-exact with the same cycles, words
 and bursts. Exits 1 on any difference, a case missing on either side, or a

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # The `make sim` regression: the Verilated engine on the bundled pairs (and a
 # small crop, quick to trace with WAVES=1), every
 # disparity compared with the reference; raw mode, the sub-pixel mode
@@ -55,13 +58,13 @@ cases=(
   "cif_tsukuba_tiled_ddr|cif|tsukuba|64|16|--tiled --latency 30 --ar-interval 8"
   "cones_right_tiled|middlebury|cones|60|4|--right --tiled --tile-stride 1600 --random-latency 5"
   "teddy_crop_lr_tiled|cif|teddy|64|4|--crop 100,100,74,38 --lr --tiled --random-latency 6"
-  # Disparities up to about 120 (data/cif_x2: 2x upscaled Teddy and Cones, issue 18) at
+  # Disparities up to about 120 (data/cif_x2: 2x upscaled Teddy and Cones) at
   # D = the build's DMAX (64 by default, 128 with make sim DMAX=128).
   "cif_x2_teddy_dDMAX|cif_x2|teddy|DMAX|2|"
   "cif_x2_cones_dDMAX|cif_x2|cones|DMAX|2|"
   # VGA (640x480, data/vga_x2): cycles and frame rate of the wider frames.
   "vga_x2_teddy_dDMAX|vga_x2|teddy|DMAX|2|"
-  # Raw camera frames rectified by the engine (issue 32, docs/architecture.md 3.10; data/raw:
+  # Raw camera frames rectified by the engine (docs/architecture.md 3.10; data/raw:
   # cameras A, B, C made from the pairs above, their calibration files): the rectified planes,
   # validity bitmaps and depth compared; no error figure (the invalid code is no disparity).
   # B at zero latency is the speed bar's case (2.70 M cycles), tiled with the DDR-like memory

@@ -1,4 +1,7 @@
-// AXI4 slave model of the frame memory (issue 19), in front of MemoryModel
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// AXI4 slave model of the frame memory, in front of MemoryModel
 // (its bytes and its address checks): the harness's memory for mcadsw_top.
 //
 // Serves one ID, in order: AR and AW bursts (INCR, 4-byte beats), R beats a

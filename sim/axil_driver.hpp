@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // AXI4-Lite master for a Verilated model with the s_aw*/s_w*/s_b*/s_ar*/s_r*
 // slave ports of rtl/mcadsw_regs.sv, as a driver would use it, with random
 // VALID delays and READY back-pressure, and a protocol monitor of the slave's

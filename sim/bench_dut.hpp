@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The verilated model as the harness (engine_bench.cpp) drives it: one interface,
 // one implementation a build, chosen by CMake (sim/CMakeLists.txt):
 //   dut_soc.cpp   mcadsw_top, the SoC wrapper: its AXI4 master faces the AXI4

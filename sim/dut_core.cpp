@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The harness's model of a build without the register block: mcadsw_engine (the
 // gate-level netlist of make gls; sim/bench_dut.hpp). Its 32-bit port faces the
 // memory model directly (a write completes at its grant); the register bus maps

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The harness's model of a build with the register block: mcadsw_top, the SoC
 // wrapper (sim/bench_dut.hpp). The register bus is the AXI4-Lite bus functional
 // model; every write must answer OKAY.

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Whole-engine test bench: driver (loads the planes into the memory model and
 // programs the engine), clock loop with a cycle limit and progress output,
 // and scoreboard (every disparity against the reference, both ways).

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_sim: runs the Verilated engine on one stereo pair in a modelled
 // 32-bit external memory and compares every disparity with the reference.
 //   mcadsw_sim LEFT RIGHT -d D [--gamma G] [--latency N | --random-latency SEED]

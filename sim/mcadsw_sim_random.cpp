@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_sim_random: random differential regression of the Verilated engine
 // against the reference (`make sim-random N=<cases> SEED=<s>`).
 //   mcadsw_sim_random [--cases N] [--seed S] [--case K] [--data DIR]
@@ -7,13 +10,13 @@
 // the maximum width), a random D in 1..DMAX, a random legal weight table and
 // random memory latency and grant stalls, and a random stride (a quarter of
 // the cases the width rounded up to 4, the others up to 4 KiB more). One case in
-// eight is first interrupted (issue 19): a read or a write burst answered
+// eight is first interrupted: a read or a write burst answered
 // SLVERR or DECERR, or CTRL.ABORT at a random cycle; that frame must end with
 // code 13, 14 or 15 (an abort due after the frame's end changes nothing), and the
 // same case run again on the same engine, without a reset, must be exact.
 // Each case lies somewhere in the 32-bit address space (place(): origin, packed
 // planes, strides padded by up to 2^30 bytes).
-// One case in four is rectified by the engine first (issue 32, register map 1.2):
+// One case in four is rectified by the engine first (register map 1.2):
 // its images are then raw views of 0.6 .. 1.6 times the frame each way (at least
 // 8 x 4), made as above, and two random smooth meshes at S = 8, 16 or 32 (some
 // reaching outside the raw views: invalid pixels; in a third of them the right
@@ -95,7 +98,7 @@ YuvImage right_view(const YuvImage& l, std::mt19937& rng) {
   return r;
 }
 
-// Where the frame lies in the 32-bit space (issue 20: every address bit),
+// Where the frame lies in the 32-bit space (every address bit),
 // drawn from a generator of its own so the draws of make_case stay those of
 // earlier versions: in one case out of three the strides (input, output, tile)
 // get padding of up to 2^30 bytes, halved until the frame fits; the planes

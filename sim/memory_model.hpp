@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Model of the engine's 32-bit external memory port (docs/memory_map.md):
 // req/gnt handshake, writes with byte enables, reads answered in order with
 // rvalid. Latency counts wait cycles beyond the minimum of one (data the cycle
@@ -15,7 +18,7 @@
 //   - the LR mode writes three more planes (dR, the output, the mask) and reads
 //     back the two scratch planes: `more_outs`, each written at most once a
 //     byte, read only where marked readable.
-//   - rectification (issue 32) adds areas of their own geometry (`areas`): raw
+//   - rectification adds areas of their own geometry (`areas`): raw
 //     planes and meshes read only, rectified planes and validity bitmaps written
 //     at most once a byte and read back only where already written (a read
 //     overtaking the write of what it reads); the output pixels of invalid base
@@ -26,7 +29,7 @@
 // The modelled range [lo, hi) may be anywhere in the 32-bit address space and
 // up to 4 GiB long: it is stored sparsely, in 4 KiB pages allocated (zeroed) on
 // first touch, so a frame may sit at the top of the space or have strides of
-// hundreds of MiB (issue 20: the address bits above the first MiB).
+// hundreds of MiB (the address bits above the first MiB).
 #pragma once
 
 #include <algorithm>
@@ -65,7 +68,7 @@ class MemoryModel {
     // planes with rectification: the pass or post stage, then the mark step); empty: once.
     std::vector<uint8_t> rewrite{};
   };
-  // A plane or byte range of its own size and layout (the rectifier's, issue 32):
+  // A plane or byte range of its own size and layout (the rectifier's):
   // pixel (x, y) of width x height at base + y * stride + x (raster), or with
   // tile != 0 at base + (x / 4) * tile + 4 * y + x % 4; a byte range of n bytes is
   // a plane of n x 1, stride n.

@@ -1,4 +1,7 @@
-// Random smooth meshes (issue 32) for the rectifier's block benches, the engine's
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// Random smooth meshes for the rectifier's block benches, the engine's
 // tests and mcadsw_sim_random.
 #pragma once
 

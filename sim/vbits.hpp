@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Bit-field access to Verilator ports of any width (CData..QData and VlWide),
 // for the flattened array ports of the RTL (docs/architecture.md).
 #pragma once

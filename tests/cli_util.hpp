@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Shared by the command-line tests (tests/cli_test.cpp for `mcadsw`,
 // tests/rtl/sim_cli_test.cpp for `mcadsw_sim`): run a binary, and a fixture
 // with a scratch directory that checks a failure left no output behind.

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // End to end on the bundled Middlebury pairs: a regression guard on the "all"
 // error, and the committed CIF crops against their generator.
 #include <gtest/gtest.h>

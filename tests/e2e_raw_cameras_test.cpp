@@ -1,4 +1,7 @@
-// The raw camera pairs of issue 32 (data/raw, docs/algorithm.md 13.6): the committed
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// The raw camera pairs (data/raw, docs/algorithm.md 13.6): the committed
 // files against their generator, and OpenCV's own rectification of them against the
 // bundled rectified pairs, so that a wrong camera model cannot pass.
 #include <gtest/gtest.h>
@@ -147,7 +150,7 @@ TEST(RawCameras, OpenCvRectificationRestoresTheBundledViews) {
   }
 }
 
-// Issue 32's goals for the mesh, per test camera: within 0.1 pixel of OpenCV's float
+// The goals for the mesh, per test camera: within 0.1 pixel of OpenCV's float
 // map and at least 40 dB PSNR against cv::remap on it (valid pixels), at S = 8 and 16;
 // S = 32 is printed, not bounded (docs/algorithm.md 13.5). A node moved by one pixel
 // shows in the deviation: the measurement sees the mesh.
@@ -182,7 +185,7 @@ TEST(RawCameras, MeshRectificationAgreesWithOpenCv) {
   }
 }
 
-// Issue 32's quality bar (docs/algorithm.md 13.7): per camera, the LR mode's average
+// The quality bar (docs/algorithm.md 13.7): per camera, the LR mode's average
 // "all" error over the Middlebury pairs (D as make report), over the pixels valid after
 // rectification, rectified through the mesh at S = 16, at most 0.3 points above the
 // same pairs rectified by OpenCV's float maps with bilinear interpolation. Measured:

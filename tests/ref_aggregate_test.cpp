@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Cost aggregation (Eqs. 3-4): worked cases, width bounds, and the fast loops
 // against a direct transcription of the equations.
 #include <gtest/gtest.h>

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Mini-census transformer: hand-checked codes, Hamming cost, border clamping.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // WTA tie rule, configuration checks and whole-engine properties.
 #include <gtest/gtest.h>
 

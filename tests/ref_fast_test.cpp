@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The whole-frame fast path (sw_ref/src/fast.cpp) against the block-by-block
 // path, pixel for pixel: random and structured images, sizes around the
 // window and the SIMD widths, every kind of disparity range, random legal weight

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Post-processing beyond the paper (docs/algorithm.md section 12): the
 // right-reference pass against a direct evaluation of its formula, the
 // sub-pixel values of the fast path against the block path's final costs, and

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw::rectify and the mesh (docs/algorithm.md section 13): the integer rules
 // against cases worked out by hand, against OpenCV's remap, and a mesh from an
 // OpenCV rectification against its float map.

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Weight generator: table definition, colour distance, clamped weight planes.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // A Linux user of the MCADSW driver: the register block mapped from a UIO device
 // (/dev/uioN, map 0) or from /dev/mem at a physical address. Prints the block's
 // identity and status; with --frame, runs one raw frame whose six input planes

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Rectifier: loads a tile's source rectangle of one raw plane into a tile buffer's four
 // banks (docs/architecture.md 3.10.5).
 //

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Rectifier: the mesh nodes of one output tile and its source rectangle
 // (docs/algorithm.md 13.8, docs/architecture.md 3.10.4).
 //

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Rectifier sampling core (docs/algorithm.md 13.2-13.3, docs/architecture.md 3.10.3):
 // one output tile's pixels from the tile's mesh nodes and a loaded tile buffer, a
 // pixel a cycle, in strip order (4-column strips, each top to bottom, the pixels of a

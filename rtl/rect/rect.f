@@ -1,4 +1,7 @@
-// The rectifier's files (issue 32, docs/architecture.md 3.10) for its block benches
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// The rectifier's files (docs/architecture.md 3.10) for its block benches
 // (tests/rtl/CMakeLists.txt); the engine reads them through rtl/mcadsw.f. Relative to
 // rtl/rect/, its package first; the engine's package (rtl/mcadsw_pkg.sv) is read before it.
 mcadsw_rect_pkg.sv

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_activity: switching activity of the synthesised engine netlist for
 // `make power` (flow/power.py, docs/results.md "Power").
 //

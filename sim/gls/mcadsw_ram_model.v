@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The on-chip memory macro MCADSW_RAM. Synthesis (flow/synth.py) reads this
 // file with `read_verilog -lib`, i.e. as a black box with these ports, and maps
 // every inferred memory onto it (constraints/macro_map.v), so memories stay out

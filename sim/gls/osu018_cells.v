@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Two-state models of the OSU 0.18 um standard cells, for gate-level
 // simulation of the mapped netlist in Verilator (the library's own
 // osu018_stdcells.v uses UDPs, which Verilator does not read). Each function is

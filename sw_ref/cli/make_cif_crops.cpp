@@ -1,15 +1,18 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // make_cif_crops SRC DST [--x2 [--vga]]: cuts the CIF (352x288) crop of every Middlebury pair.
 // The crop is centred: x0 = (W-352)/2, y0 = (H-288)/2 (integer division), taken
 // alike from left.png, right.png, gt.png and the three masks, so the disparity
 // convention (left x matches right x-d) and the GT values are unchanged.
 //
-// --x2 (issue 18, disparities above 64): Teddy and Cones upscaled by 2 first
+// --x2 (disparities above 64): Teddy and Cones upscaled by 2 first
 // (views: bicubic; ground truth and masks: nearest neighbour). Disparities double
 // while the ground truth's values stay, so its scale halves: 2 instead of 4
 // (value = 2 x disparity). The crop is not centred but the CIF window, on an
 // 8-pixel grid, with the most ground-truth pixels of disparity above 64 (the
 // first such window in row-major order). --vga: 640x480 windows instead (VGA,
-// for the cycle and frame-rate figures of issue 18).
+// for the cycle and frame-rate figures).
 #include <filesystem>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>

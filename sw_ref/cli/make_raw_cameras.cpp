@@ -1,5 +1,8 @@
-// make_raw_cameras DATA DST [--camera A|B|C] [--pair SET/NAME]: the raw camera pairs of
-// issue 32 (docs/algorithm.md 13.6). Each bundled pair (DATA/middlebury/{tsukuba,
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// make_raw_cameras DATA DST [--camera A|B|C] [--pair SET/NAME]: the raw camera pairs
+// of docs/algorithm.md 13.6. Each bundled pair (DATA/middlebury/{tsukuba,
 // venus,teddy,cones}, DATA/cif/teddy; camera C: the Teddy pairs only) is taken as rectified with
 // P = [W 0 (W-1)/2; 0 W (H-1)/2]; each view is rendered as a raw camera (K, distortion
 // k1 k2 p1 p2, a rotation of at most 2 degrees) would see it: every raw pixel is the
@@ -129,7 +132,7 @@ bool write_calibration(const fs::path& path, const Camera& cam, cv::Size size, c
   cv::FileStorage out(path.string(), cv::FileStorage::WRITE);
   if (!out.isOpened()) return false;
   out.writeComment(std::string("Test camera ") + cam.name +
-                   " of issue 32 (docs/algorithm.md 13.6), written by make_raw_cameras.\n"
+                   " (docs/algorithm.md 13.6), written by make_raw_cameras.\n"
                    "Rectification K D R P of each view; it maps the raw pair back onto the bundled pair.");
   const cv::Matx33d p = rectified_p(size);
   const cv::Matx34d p34(p(0, 0), p(0, 1), p(0, 2), 0, p(1, 0), p(1, 1), p(1, 2), 0, 0, 0, 1, 0);

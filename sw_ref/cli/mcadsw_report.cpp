@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_report: the quality part of `make report` (scripts/report.sh).
 //   mcadsw_report DATA_DIR OUT_DIR
 // For each Middlebury pair (Tsukuba D=16, Venus D=20, Teddy D=60, Cones D=60 at
@@ -6,7 +9,7 @@
 // at threshold 1, writes OUT_DIR/<pair>.png (disparity and error maps of every
 // method next to the ground truth) and prints a Markdown table on stdout, then a
 // second one: sub-pixel maps, nonocc at threshold 0.5 (docs/algorithm.md 12.7), and a
-// third: the raw camera pairs of data/raw rectified (issue 32, docs/algorithm.md 13.7).
+// third: the raw camera pairs of data/raw rectified (docs/algorithm.md 13.7).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -176,7 +179,7 @@ int main(int argc, char** argv) {
       std::printf(" | %.2f |\n", (sub_err[m][1] + sub_err[m][2] + sub_err[m][3]) / 3.0);
     }
 
-    // Rectification (issue 32, docs/algorithm.md 13.7): the raw camera pairs of data/raw,
+    // Rectification (docs/algorithm.md 13.7): the raw camera pairs of data/raw,
     // LR mode, "all" error over the pixels valid after rectification.
     std::printf("\nRectification: raw camera pairs (data/raw), LR mode, \"all\" error %% over the pixels valid "
                 "after rectification; average over the pairs of each camera.\n\n"

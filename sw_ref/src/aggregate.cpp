@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Cost aggregator: two-pass weighted aggregation (paper Sec. III-D, Eqs. 3-4,
 // Figs. 12-14). The loops run over x innermost so the compiler vectorises them.
 #include <algorithm>

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Mini-census transformer (paper Sec. III-B, Fig. 2 and Fig. 10).
 #include <algorithm>
 

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Top level of the reference (paper Fig. 1 / Fig. 9): census, weights, then per
 // disparity census cost -> vertical -> horizontal aggregation -> WTA.
 #include <algorithm>

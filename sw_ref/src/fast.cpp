@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Whole-frame fast path of the engine (docs/algorithm.md, section 11).
 //
 // Computes exactly what the block-by-block path of engine.cpp computes

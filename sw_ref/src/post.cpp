@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Depth post-processing beyond the paper (docs/algorithm.md section 12): the
 // right-reference pass, the left-right check, the fill, the 3x3 median and the
 // sub-pixel disparity. Integer-only, as the rest of the reference.

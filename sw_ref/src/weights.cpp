@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Weight generator (paper Sec. III-C, Fig. 5 and Fig. 11).
 #include <algorithm>
 #include <cmath>

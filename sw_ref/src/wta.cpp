@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Winner-takes-all (paper Sec. V-D, right half of Fig. 12).
 #include "mcadsw/ref.hpp"
 

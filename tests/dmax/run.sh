@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# Another configuration (issue 18): the reference, the RTL and the harness built
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
+# Another configuration: the reference, the RTL and the harness built
 # for DMAX disparities, PAR a step, in their own build directory
 # (BUILD/dmax<DMAX>_par<PAR>, as `make sim-build DMAX=<DMAX> PAR=<PAR>`), then
 #   - the reference's tests (the fast kernels against the plain model for every D

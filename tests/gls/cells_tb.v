@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Compares sim/gls/osu018_cells.v (the two-state models the gate-level
 // simulation uses) with the library's own models (osu018_stdcells.v): this
 // bench runs once against each and prints every cell's outputs for every

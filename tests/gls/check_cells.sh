@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Runs tests/gls/cells_tb.v against the library's cell models and against
 # sim/gls/osu018_cells.v (Icarus Verilog) and fails if the transcripts differ.
 set -euo pipefail

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // A small block for tests/gls/small_gls.sh: arithmetic like the engine's
 // configuration check (a 32 x 11 multiplier, 33-bit compares) and a register
 // with asynchronous reset, synthesised by the project's Yosys/abc flow and

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Compares gls_small (RTL) with gls_small_gl (its gate-level netlist) on
 // random inputs, cycle by cycle; prints PASS or FAIL and the first difference.
 module small_tb;

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Second simulator: the same small pair through Verilator (mcadsw_sim --dump)
 # and through Icarus Verilog (4-state, tests/icarus/tb_mcadsw_engine.sv) from the
 # memory image the C++ harness wrote; the disparity planes and the counters

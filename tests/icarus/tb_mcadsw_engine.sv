@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Second simulator (Icarus Verilog, 4-state): mcadsw_engine and its AXI4 master
 // (mcadsw_axi_master, as in mcadsw_top) on the memory image the C++
 // harness dumped (mcadsw_sim --dump DIR), programmed by replaying the register

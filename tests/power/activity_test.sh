@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # mcadsw_activity (sim/activity/netlist_activity.cpp) on a netlist small enough to
 # follow by hand: an inverter, a flip-flop with asynchronous reset, an XOR and a
 # 2 x 1 memory macro, over five recorded cycles; then a flip-flop behind a clock

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Bad input to `make power` (flow/power.py) gives one clear message and a non-zero
 # exit and leaves no summary.json or report.md of an earlier run behind: a DMAX the
 # generator rejects, a missing netlist (make synth not run), a missing activity

@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # flow/power.py's power view and flow/power.tcl's accounting of clock gates on a
 # netlist small enough to follow: flip-flop g behind a clock gate (INVX1 -> LATCH
 # -> AND2X2, as flow/clock_gate.py builds it), flip-flop h on clk_i, no data

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The engine's AXI4 master (rtl/mcadsw_axi_master.sv) in the whole engine,
 // against the AXI4 memory model (sim/axi_memory.hpp), whose protocol checks
 // count in every result's bus violations: write bursts, response errors

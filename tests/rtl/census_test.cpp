@@ -1,9 +1,12 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_census (Fig. 10) against census_code(): every position of the census
 // buffer, read through the aggregator's read port at every row and column
 // offset, equals the reference code of the clamped image coordinate. Left and
 // right instances, random input stalls, both banks, borders at all four sides,
 // images smaller than the window. The right view is built as the engine builds
-// it for P = 1, 2 and 4 disparities a step (issue 18): 8, 9 and 11 columns a
+// it for P = 1, 2 and 4 disparities a step: 8, 9 and 11 columns a
 // read (8 and 16 census sub-banks).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Bench wrapper of mcadsw_cost_agg for tests/rtl/cost_agg_test.cpp: the block's
 // ports, plus its vertical and final costs with their tags read by hierarchical
 // reference (bench-only taps stay out of the synthesizable block). Copy p at

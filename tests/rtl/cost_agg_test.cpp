@@ -1,10 +1,13 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_cost_agg (Figs. 12-14) against the reference: every vertical cost
 // (vertical_aggregate), every final cost (horizontal_aggregate) and every
 // disparity (Wta) of a block, and every sub-pixel value (subpixel_from_costs,
 // docs/algorithm.md 12.6), with the census and weight buffers modelled from the
 // reference's intermediates. The first mismatch is reported with its
 // coordinates, disparity and both values. Every scenario runs the block built
-// for P = 1 (the paper's), 2 and 4 disparities a step (issue 18): the right
+// for P = 1 (the paper's), 2 and 4 disparities a step: the right
 // census input then holds LANES + P - 1 lanes, and D not a multiple of P leaves
 // lanes masked in the last step.
 #include <gtest/gtest.h>

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The driver (driver/include/mcadsw/driver.hpp) against the AXI4-Lite register
 // block (rtl/mcadsw_regs.sv), through sim::AxilDriver (random VALID delays and
 // READY back-pressure, protocol monitor): every FrameConfig field lands on the

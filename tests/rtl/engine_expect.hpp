@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The whole-engine tests' check of a frame that must be exact (rtl_engine_test,
 // rtl_axi_test).
 #pragma once

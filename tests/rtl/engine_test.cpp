@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The whole engine (mcadsw_engine) in the modelled memory, against the reference:
 // every pixel of the disparity plane, nothing written outside it. Small pairs
 // so that the suite stays fast; `make sim` runs the full-size regression.
@@ -438,7 +441,7 @@ struct BadConfigs {
   }
 };
 
-// ---- Rectification (issue 32, docs/architecture.md 3.10) ----------------------------------
+// ---- Rectification (docs/architecture.md 3.10) ----------------------------------
 // A raw pair: crops of camera B's raw Teddy views (real texture), of raw_w x raw_h.
 std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng) {
   const std::string dir = std::string(MCADSW_DATA_DIR) + "/raw/B/cif/teddy/";
@@ -792,7 +795,7 @@ TEST(Engine, TallestFrames) {
     }
 }
 
-// Frames anywhere in the 32-bit address space (issue 20: the address, base
+// Frames anywhere in the 32-bit address space (the address, base
 // and stride bits above the first MiB, which no frame laid out from address 0
 // reaches): at the top of the space (the planes end less than 8 KiB below
 // 2^32), planes packed at 4-byte alignment (base bits 2..11), and strides of up

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_fifo (the post stage's queues) against a std::deque: random pushes of
 // one or two entries and pops, kept within what the queue holds (the user's
 // side of its contract, which the RTL's assumptions check), at full and empty

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The memory model's checks of the engine's port (sim/memory_model.hpp), on a
 // scripted port: each check flags what it must and nothing else. Without these
 // the engine tests could not see a stalled request that changes, a read

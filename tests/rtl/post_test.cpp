@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_post (the LR mode's post-processing stage, docs/algorithm.md 12.2-12.5)
 // against the reference: lr_check, fill_invalid and median3x3 on random left and
 // right maps in a modelled memory, 8-bit and sub-pixel (packed scratch format,

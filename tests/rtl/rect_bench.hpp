@@ -1,4 +1,7 @@
-// Helpers shared by the rectifier's block benches (issue 32).
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// Helpers shared by the rectifier's block benches.
 #pragma once
 
 #include <cmath>

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_rect_check (docs/architecture.md 3.10.2) against mcadsw::rect_check: random
 // configurations laid out like a frame's (valid), each then broken in one way (a step,
 // a raw size or stride, a mesh size, a misaligned base, two regions overlapping by a

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_rect, the rectifier pass (docs/architecture.md 3.10.7), on whole frames against
 // mcadsw::rectify: random frame and raw sizes, S = 8, 16, 32, random smooth meshes per
 // view (some reaching outside the raw view), random plane sets, raster and column-tiled

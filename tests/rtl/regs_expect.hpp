@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The register map's read-write bits, as docs/registers.md and
 // sw_ref/include/mcadsw/regs.hpp give them: the register block's test
 // (rtl_regs_test) and the whole SoC's (rtl_axi_test) check against it.

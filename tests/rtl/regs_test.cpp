@@ -1,4 +1,7 @@
-// mcadsw_regs (issue 19): the AXI4-Lite register block against the register
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// mcadsw_regs: the AXI4-Lite register block against the register
 // map of sw_ref/include/mcadsw/regs.hpp, through sim::AxilDriver (random VALID
 // delays and READY back-pressure, protocol monitor of the slave's side). Every
 // read-write register with random data and byte strobes (read back and on the

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The simulation harness `mcadsw_sim` on bad input: one clear message, a
 // non-zero exit, no output left behind, and the engine is never started.
 #include <gtest/gtest.h>
@@ -184,7 +187,7 @@ TEST_F(SimCli, BadLrOptions) {
   expect_failure(run(l + " " + rr + " -d 16 --lr" + outputs()), "the LR mode takes widths up to 1024");
 }
 
-// Rectification (issue 32): raw camera views and their calibration; a region of the
+// Rectification: raw camera views and their calibration; a region of the
 // rectified frame on whole mesh cells; the rectified planes and bitmaps compared too.
 std::string raw_view(const char* camera, const char* side) {
   return (kData / "raw" / camera / "cif" / "teddy" / side).string();

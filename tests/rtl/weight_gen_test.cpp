@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_weight_gen (Fig. 11) against generate_weights(): every vertical and
 // horizontal weight of every row of a sequence of blocks, read through the
 // aggregator's read ports as the cost aggregator does (take a ready row, read

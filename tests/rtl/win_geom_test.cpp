@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw_win_geom (the window geometry of a block) against mcadsw::win_geom: every
 // output for every block the scheduler issues, over every width from 1 to 2048
 // (the left view as base, and the right view mirrored) and every height, at

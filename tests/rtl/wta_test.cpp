@@ -1,4 +1,7 @@
-// mcadsw_wta (the WTA, paper Fig. 12; P disparities a step for issue 18) against
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// mcadsw_wta (the WTA, paper Fig. 12; P disparities a step) against
 // the reference: for every pixel of a row, the winner of mcadsw::Wta (smallest
 // cost, ties to the smallest d) and the sub-pixel value of subpixel_value()
 // from the costs of d - 1, d and d + 1. Built for P = 1 (the engine's), 2 and 4;

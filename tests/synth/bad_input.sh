@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Bad input to `make synth` and `make fpga` (flow/synth.py synth, fpga) gives
 # one clear message and a non-zero exit, and leaves no summary.json of an earlier
 # run behind as if it were the new result. No synthesis runs: the cases stop at
@@ -147,7 +150,7 @@ sed 's/"async_read_macros": 1/"async_read_macros": 0/' "$work/async.json" > "$wo
 rc=0; "$py" "$driver" check --budget $work/budget_async.json --summary $work/sync.json > "$work/check.out" 2>&1 || rc=$?
 if [ "$rc" = 0 ] && grep -q "ok      async-read macros" "$work/check.out"; then echo "ok   synth_check no asynchronous-read macro"
 else echo "FAIL synth_check no asynchronous-read macro (exit $rc)"; cat "$work/check.out"; fails=$((fails + 1)); fi
-# A budget with the rectifier's limits (issue 32): a summary without its figures is an
+# A budget with the rectifier's limits: a summary without its figures is an
 # error (exit 2); its gates, memory and slack each fail on their own; within passes.
 echo '{"nand2_eq_max": 563000, "wns_ns_min": 0, "memory_kB_max": 57.1, "rect_nand2_eq_max": 60000, "rect_memory_kB_max": 4.0, "clock_mhz": 95.0}' > "$work/budget_rect.json"
 rc=0; "$py" "$driver" check --budget $work/budget_rect.json --summary $work/within.json > "$work/check.out" 2>&1 || rc=$?

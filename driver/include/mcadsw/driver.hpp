@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Driver of the MCADSW engine (rtl/mcadsw_top.sv) for firmware, the simulation
 // harness and the tests alike: configure a frame from a plain struct, start it,
 // wait for it (poll STATUS, or take the interrupt and read it), read the status

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // OpenCV stereo matchers the report (`make report`) and the benchmark compare
 // the engine with: StereoSGBM in MODE_SGBM_3WAY and MODE_HH, StereoBM, and
 // StereoSGBM 3WAY with its own left-right check, uniqueness and speckle filter

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Middlebury v2 evaluation: percentage of bad pixels (|disp/disp_scale - gt/scale| >
 // threshold, threshold 1 by default) over the nonocc, all and disc masks (mask value
 // 255). docs/algorithm.md sections 8 and 12.7.

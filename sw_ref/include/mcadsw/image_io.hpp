@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Image input/output around the reference: OpenCV reads the files and performs
 // the BGR -> YUV 4:4:4 conversion that, in a camera, the ISP would do before the
 // data reaches the engine's external memory (docs/algorithm.md, "Input").

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Constants of the MCADSW algorithm and architecture (docs/algorithm.md).
 //
 // This header is the single source of truth for every number shared by the C++
@@ -115,7 +118,7 @@ inline constexpr int kPostMaxWidth = 1024;
 static_assert(kPostMaxWidth <= kMaxWidth && (kPostMaxWidth & (kPostMaxWidth - 1)) == 0,
               "the post stage's row buffers: a power of two, at most the largest width");
 
-// ---- Rectification (docs/algorithm.md section 13, issue 32) -------------------
+// ---- Rectification (docs/algorithm.md section 13) -------------------
 inline constexpr int kMeshFracBits = 5;          // node and sample positions in 1/32 pixel
 inline constexpr int kMeshStepLog2Min = 3;       // S = 8 ..
 inline constexpr int kMeshStepLog2Max = 5;       // .. 32

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Strict number parsing for the command-line tools (mcadsw, mcadsw_sim,
 // mcadsw_sim_random): the whole argument must be the number.
 #pragma once

@@ -1,4 +1,7 @@
-// Rectification of raw camera frames (docs/algorithm.md section 13, issue 32): a
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// Rectification of raw camera frames (docs/algorithm.md section 13): a
 // mesh of source positions every S output pixels, interpolated per pixel, and a
 // bilinear sample with 5-bit weights. Integer arithmetic, bit-exact with the RTL.
 #pragma once
@@ -124,7 +127,7 @@ std::pair<Mesh, Mesh> meshes_from_rectification(const StereoRectification& rect,
 Rectified remap_with_opencv(const YuvImage& raw, const cv::Mat& map_x, const cv::Mat& map_y, int interpolation);
 
 // How close the mesh rectification of one raw view comes to OpenCV's float one
-// (issue 32, reported by `mcadsw rectify`): cv::initUndistortRectifyMap (CV_32FC1) of
+// (reported by `mcadsw rectify`): cv::initUndistortRectifyMap (CV_32FC1) of
 // (k, d, r, p) at the mesh's frame size against the mesh interpolated at every pixel,
 // and cv::remap (INTER_LINEAR) of the raw Y, U and V planes on that float map against
 // mcadsw::rectify, over the pixels both call valid.

@@ -1,4 +1,7 @@
-// Issue 32's quality bar (docs/algorithm.md 13.7): a raw camera pair of data/raw
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// The quality bar (docs/algorithm.md 13.7): a raw camera pair of data/raw
 // rectified three ways and matched by the same matcher (LR mode), its "all" error
 // over the pixels valid after rectification, next to the bundled (undistorted) pair's
 // error over the same pixels.

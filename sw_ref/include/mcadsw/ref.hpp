@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Bit-exact reference model of the MCADSW disparity estimator.
 //
 // Each function mirrors one block of the paper's architecture (Fig. 9) and is

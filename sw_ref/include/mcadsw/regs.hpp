@@ -1,4 +1,7 @@
-// Register map of the engine's AXI4-Lite slave (issue 19): the single source of
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
+// Register map of the engine's AXI4-Lite slave: the single source of
 // truth. rtl/mcadsw_pkg.sv (offsets, field positions and error codes for the
 // RTL) and docs/registers.md are generated from this file by
 // build/bin/gen_rtl_pkg (`make rtl-pkg`); tests fail when either is stale. A

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // Window geometry of a block: the reference of rtl/mcadsw_win_geom.sv
 // (docs/architecture.md, window geometry), compared output by output with the
 // RTL block by tests/rtl/win_geom_test.cpp. Plain integer arithmetic with floor
