@@ -1,11 +1,15 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # User entry points. CMake (CMakeLists.txt) is the source of truth; this file
-# only wraps its targets. Every target installs missing Debian packages first.
+# only wraps its targets. Every target first installs what is missing: Debian packages
+# and the pinned Python tool environment .venv/ (scripts/bootstrap.sh, requirements.txt).
 # `make help` lists the targets: each is described once, by the `##` lines above it.
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all help bootstrap configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls power fpga formal mutate lint rtl-pkg bench report sweep clean
+.PHONY: all help bootstrap tools configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls power fpga formal mutate lint rtl-pkg bench report sweep clean distclean
 
 all: build
 
@@ -15,6 +19,11 @@ help:
 
 bootstrap:
 	@scripts/bootstrap.sh
+
+## tools: every tool the project uses, with its version and path (Debian packages and the
+##   pinned tool environment .venv/ of requirements.txt; the yowasp tools compile on first call)
+tools: bootstrap
+	@python3 scripts/tools.py
 
 configure: bootstrap
 	@cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -147,3 +156,7 @@ sweep: build
 ## clean: remove build/ (every build tree of these targets)
 clean:
 	rm -rf $(BUILD_DIR)
+
+## distclean: make clean, and remove the tool environment .venv/ (the next make installs it again)
+distclean: clean
+	rm -rf .venv .venv.lock

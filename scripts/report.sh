@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # make report: one page with the engine's quality and cost next to the paper
 # and next to OpenCV's matchers, every figure measured by this run (or quoted
 # from the paper, and marked so).
@@ -10,6 +13,7 @@
 # so not rerun here); the report says when they are missing.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/tools.sh"  # the pinned Verilator first on PATH
 build=${1:-$root/build}
 out=$build/report
 bin=$build/bin

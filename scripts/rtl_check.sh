@@ -1,4 +1,7 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Checks that every RTL file is accepted by the three tools the project uses.
 #   scripts/rtl_check.sh lint      verilator --lint-only -Wall, each module as top
 #   scripts/rtl_check.sh yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
@@ -7,6 +10,7 @@
 # Exits non-zero on any warning or error. Used by `make lint` and by ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/tools.sh"  # the pinned Verilator first on PATH
 cd "$root/rtl"
 pkg=mcadsw_pkg.sv
 # The packages, read in this order before the modules and never linted as a top: the

@@ -1,3 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
 # Checks the untoggled toggle points of a merged Verilator coverage file against
 # tests/coverage/untoggled.txt (its header says the format), for scripts/coverage.sh:
 #   awk -f scripts/untoggled_check.awk tests/coverage/untoggled.txt merged.dat
@@ -24,11 +27,19 @@ FNR == NR {
   nl++; pat[nl] = "^(" $1 ")$"; bits[nl] = $2; kind[nl] = $3; lineno[nl] = FNR; text[nl] = $0
   next
 }
+# A toggle point is a bit, toggled when it changed at all: Verilator 5.006's measure, the
+# one the 90 % floor and the list were made with. Newer Verilators count a bit's rises and
+# falls as two points (`name[b]:0->1`, `:1->0`): summed here.
 /^C / && /\001page\002v_toggle\// {
-  total++
-  if ($NF + 0 > 0) next
-  o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o)
+  o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o); sub(/:(0->1|1->0)$/, "", o)
   h = $0; sub(/.*\001h\002/, "", h); sub(/\001.*/, "", h); sub(/'[^']*$/, "", h)
+  k = h SUBSEP o
+  if (!(k in cnt)) { nk++; keys[nk] = k; kh[nk] = h; ko[nk] = o }
+  cnt[k] += $NF
+}
+function classify(h, o, n,    b, name, i) {
+  total++
+  if (n > 0) return
   sub(/^TOP\.mcadsw_top\.?/, "", h); if (h == "") h = "top"
   b = "-"
   if (match(o, /\[[0-9]+\]$/)) { b = substr(o, RSTART + 1, RLENGTH - 2); o = substr(o, 1, RSTART - 1) }
@@ -38,6 +49,7 @@ FNR == NR {
   if (i > nl) { unlisted++; if (unlisted <= 40 || ENVIRON["ALL"] != "") printf "  unlisted: %s[%s]\n", name, b }
 }
 END {
+  for (j = 1; j <= nk; j++) classify(kh[j], ko[j], cnt[keys[j]])
   if (verbose)
     for (i = 1; i <= nl; i++) printf "untoggled.txt:%d (%s, %d):%s\n", lineno[i], kind[i], used[i], pts[i]
   for (i = 1; i <= nl; i++)
