@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // The mcadsw CLI: results and bad input (one message, non-zero exit, no output left behind).
 #include <gtest/gtest.h>
 
@@ -9,6 +12,7 @@
 
 #include "cli_util.hpp"
 #include "mcadsw/params.hpp"
+#include "mcadsw/regs.hpp"
 
 namespace {
 
@@ -33,6 +37,14 @@ TEST_F(Cli, HelpExitsZero) {
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.output.find("mcadsw match"), std::string::npos);
   EXPECT_NE(r.output.find("mcadsw eval"), std::string::npos);
+}
+
+TEST_F(Cli, VersionNamesTheReleaseAndTheRegisterMap) {
+  const CliRun r = run("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output, std::string("mcadsw ") + MCADSW_VERSION + " (register map " +
+                          std::to_string(mcadsw::regs::kVersionMajor) + "." +
+                          std::to_string(mcadsw::regs::kVersionMinor) + ")\n");
 }
 
 TEST_F(Cli, MatchThenEvalReproducesTheLibraryResult) {

@@ -1,3 +1,6 @@
+// SPDX-FileCopyrightText: 2026 The mcadsw authors
+// SPDX-License-Identifier: Apache-2.0
+
 // mcadsw: command-line front end of the bit-exact reference model.
 //   mcadsw match LEFT RIGHT -d D [--lr [-T T] [--valid MASK.png]] [--subpixel]
 //                [--gamma G] [--threads N] [--calib CALIB.yml [--step S]] -o OUT.png
@@ -18,6 +21,7 @@
 #include "mcadsw/parse.hpp"
 #include "mcadsw/rectify.hpp"
 #include "mcadsw/ref.hpp"
+#include "mcadsw/regs.hpp"
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -50,7 +54,9 @@ const std::string kUsage =
     "      right_valid.png (255 where the source lies inside the raw view). Prints, per view,\n"
     "      the mesh's largest deviation from OpenCV's float map and the PSNR against\n"
     "      cv::remap (INTER_LINEAR) on that map.\n"
-    "  mcadsw --help\n";
+    "  mcadsw --help\n"
+    "  mcadsw --version\n"
+    "      The project's version and the register map version of the engine it models.\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -297,6 +303,11 @@ int main(int argc, char** argv) {
   const std::string cmd = argv[1];
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::cout << kUsage;
+    return 0;
+  }
+  if (cmd == "--version") {
+    std::cout << "mcadsw " << MCADSW_VERSION << " (register map " << mcadsw::regs::kVersionMajor
+              << "." << mcadsw::regs::kVersionMinor << ")\n";
     return 0;
   }
   try {
