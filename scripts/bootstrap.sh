@@ -4,7 +4,7 @@
 
 # Installs what this project needs, and only what is missing:
 #   1. the Debian packages below (apt; sudo only when not root);
-#   2. the Python tool environment .venv/ (MCADSW_VENV overrides the place): every package
+#   2. the Python tool environment .venv/: every package
 #      of requirements.txt at its pinned version. It is made anew, from Debian's python3,
 #      whenever requirements.txt differs from the copy installed with it
 #      (.venv/requirements.txt), so it holds exactly what the file lists.
@@ -58,7 +58,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # ---- The Python tool environment ------------------------------------------------------
-venv=${MCADSW_VENV:-$root/.venv}
+venv=$root/.venv
 req=$root/requirements.txt
 if ! cmp -s "$req" "$venv/requirements.txt"; then
   # One installer at a time (CI's lanes and parallel make targets all call this script).

@@ -77,40 +77,21 @@ done
 "$vcov" --write-info "$out/coverage.info" "$out/merged.dat" > /dev/null
 "$vcov" --annotate "$out/annotated" "$out/merged.dat" > "$out/annotate.log"
 # Points per module and kind from merged.dat: each C line names its page
-# (v_line/<module>, v_toggle/<module>, v_branch/<module>) and ends with the count. A toggle
-# point is a bit, toggled when it changed at all (Verilator 5.006's measure, that of the 90 %
-# floor). Newer Verilators write a bit's rises and falls as two points (`:0->1`, `:1->0`):
-# summed here, as in scripts/untoggled_check.awk, and their figure printed apart.
+# (v_line/<module>, v_toggle/<module>, v_branch/<module>) and ends with the count.
 awk '
   /^C / {
     n = $NF; page = $0; sub(/.*\001page\002/, "", page); sub(/\001.*/, "", page)
     split(page, p, "/"); kind = p[1]; mod = p[2]
     if (kind == "v_branch") kind = "v_line"          # branches count as lines (--coverage-line)
-    if (kind == "v_toggle") {
-      o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o)
-      h = $0; sub(/.*\001h\002/, "", h); sub(/\001.*/, "", h)
-      if (sub(/:(0->1|1->0)$/, "", o)) {
-        dtot++; if (n > 0) dhit++
-        k = mod SUBSEP h SUBSEP o
-        if (!(k in bitn)) { bitmod[k] = mod; mods[mod] = 1 }
-        bitn[k] += n
-        next
-      }
-    }
     tot[mod, kind]++; if (n > 0) hit[mod, kind]++; mods[mod] = 1
     ttot[kind]++; if (n > 0) thit[kind]++
   }
   function pct(h, t) { return t ? sprintf("%5.1f %% (%d/%d)", 100 * h / t, h, t) : "      -" }
   END {
-    for (k in bitn) {
-      m = bitmod[k]; tot[m, "v_toggle"]++; ttot["v_toggle"]++
-      if (bitn[k] > 0) { hit[m, "v_toggle"]++; thit["v_toggle"]++ }
-    }
     printf "%-24s %-24s %s\n", "module", "line", "toggle"
     for (m in mods) printf "%-24s %-24s %s\n", m, pct(hit[m, "v_line"], tot[m, "v_line"]), pct(hit[m, "v_toggle"], tot[m, "v_toggle"]) | "sort"
     close("sort")
     printf "%-24s %-24s %s\n", "TOTAL", pct(thit["v_line"], ttot["v_line"]), pct(thit["v_toggle"], ttot["v_toggle"])
-    if (dtot) printf "toggle, each direction a point (0->1 and 1->0): %s\n", pct(dhit, dtot)
     printf "toggle_percent %.1f\n", ttot["v_toggle"] ? 100 * thit["v_toggle"] / ttot["v_toggle"] : 0
   }' "$out/merged.dat" > "$out/summary.txt"
 status=0

@@ -15,7 +15,7 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-VENV = pathlib.Path(os.environ.get("MCADSW_VENV", ROOT / ".venv"))
+VENV = ROOT / ".venv"
 
 # name, command giving the version, regex picking it out, what the project uses it for
 TOOLS = [

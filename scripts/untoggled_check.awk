@@ -27,19 +27,11 @@ FNR == NR {
   nl++; pat[nl] = "^(" $1 ")$"; bits[nl] = $2; kind[nl] = $3; lineno[nl] = FNR; text[nl] = $0
   next
 }
-# A toggle point is a bit, toggled when it changed at all: Verilator 5.006's measure, the
-# one the 90 % floor and the list were made with. Newer Verilators count a bit's rises and
-# falls as two points (`name[b]:0->1`, `:1->0`): summed here.
 /^C / && /\001page\002v_toggle\// {
-  o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o); sub(/:(0->1|1->0)$/, "", o)
-  h = $0; sub(/.*\001h\002/, "", h); sub(/\001.*/, "", h); sub(/'[^']*$/, "", h)
-  k = h SUBSEP o
-  if (!(k in cnt)) { nk++; keys[nk] = k; kh[nk] = h; ko[nk] = o }
-  cnt[k] += $NF
-}
-function classify(h, o, n,    b, name, i) {
   total++
-  if (n > 0) return
+  if ($NF + 0 > 0) next
+  o = $0; sub(/.*\001o\002/, "", o); sub(/\001.*/, "", o)
+  h = $0; sub(/.*\001h\002/, "", h); sub(/\001.*/, "", h); sub(/'[^']*$/, "", h)
   sub(/^TOP\.mcadsw_top\.?/, "", h); if (h == "") h = "top"
   b = "-"
   if (match(o, /\[[0-9]+\]$/)) { b = substr(o, RSTART + 1, RLENGTH - 2); o = substr(o, 1, RSTART - 1) }
@@ -49,7 +41,6 @@ function classify(h, o, n,    b, name, i) {
   if (i > nl) { unlisted++; if (unlisted <= 40 || ENVIRON["ALL"] != "") printf "  unlisted: %s[%s]\n", name, b }
 }
 END {
-  for (j = 1; j <= nk; j++) classify(kh[j], ko[j], cnt[keys[j]])
   if (verbose)
     for (i = 1; i <= nl; i++) printf "untoggled.txt:%d (%s, %d):%s\n", lineno[i], kind[i], used[i], pts[i]
   for (i = 1; i <= nl; i++)
