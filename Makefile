@@ -37,22 +37,28 @@ build: configure
 test: build
 	@cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 
-# A configuration's build: DMAX= or PAR= on the command line select
-# build/dmax<DMAX>_par<PAR> (defaults 64 and 1); otherwise the default build.
-CFG_SET := $(strip $(DMAX)$(PAR))
-CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1),$(BUILD_DIR))
+# A configuration's build: DMAX=, PAR= or FPGA=1 on the command line select
+# build/dmax<DMAX>_par<PAR>[_fpga] (defaults 64, 1 and the ASIC target); otherwise the
+# default build.
+ifneq ($(filter-out 0 1,$(or $(FPGA),0)),)
+$(error FPGA=$(FPGA): 1 builds the FPGA target, 0 or nothing the ASIC's)
+endif
+FPGA_ON := $(filter 1,$(FPGA))
+CFG_SET := $(strip $(DMAX)$(PAR)$(FPGA_ON))
+CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1)$(if $(FPGA_ON),_fpga),$(BUILD_DIR))
 CFG_DEP := $(if $(CFG_SET),sim-build,build)
 
-## sim-build: DMAX=<n> PAR=<p>: the reference, RTL and harness for DMAX (1..128) disparities, PAR
-##   (1, 2, 4) a step, in build/dmax<n>_par<p>; make sim and sim-random with DMAX= or PAR= use it
+## sim-build: DMAX=<n> PAR=<p> FPGA=1: the reference, RTL and harness for DMAX (1..128) disparities,
+##   PAR (1, 2, 4) a step, the FPGA target's memory shapes, in build/dmax<n>_par<p>[_fpga]; make sim
+##   and sim-random with DMAX=, PAR= or FPGA=1 use it
 sim-build: bootstrap
 	@cmake -S . -B $(CFG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX=$(or $(DMAX),64) \
-	  -DMCADSW_PAR=$(or $(PAR),1) > /dev/null
+	  -DMCADSW_PAR=$(or $(PAR),1) -DMCADSW_FPGA=$(if $(FPGA_ON),ON,OFF) > /dev/null
 	@cmake --build $(CFG_DIR) -j $(JOBS) --target mcadsw_sim mcadsw_sim_random
-	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1))"
+	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1), $(if $(FPGA_ON),FPGA,ASIC) target)"
 
 ## sim: the engine regression on the bundled pairs, every pixel against the reference
-##   (build/sim/summary.json; CASE=<name> one case, WAVES=1 an FST, DMAX= PAR= a configuration)
+##   (build/sim/summary.json; CASE=<name> one case, WAVES=1 an FST, DMAX= PAR= FPGA=1 a configuration)
 sim: $(CFG_DEP)
 	@scripts/sim_regression.sh $(CFG_DIR) "$(CASE)" "$(WAVES)"
 
@@ -118,9 +124,10 @@ fpga: gen-rtl-pkg
 gls: gen-rtl-pkg
 	@DMAX=$(DMAX) FRAME=$(FRAME) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
-## lint: verilator --lint-only -Wall on every RTL module
-lint: bootstrap
+## lint: verilator --lint-only -Wall on every RTL module, with the ASIC and the FPGA target's package
+lint: configure
 	@scripts/rtl_check.sh lint
+	@scripts/rtl_check.sh lint $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
 
 ## formal: bounded proofs (Yosys SAT) of formal/ and the blocks' MCADSW_ASSERTs
 ##   (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail

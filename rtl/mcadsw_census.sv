@@ -53,6 +53,14 @@
 // until the previous block has left the aggregator (ring_free_i). The read port names
 // a block by the bank the scheduler gave it (rd_bank_i, two blocks in flight): the
 // ring position of each bank's window is kept.
+//
+// FPGA target (mcadsw_pkg::FPGA, docs/architecture.md 3.11): the census buffer is
+// RL copies of the ring, one a lane, each RING column words deep (block RAM:
+// deep and at most 288 bits wide, no sub-banks); a column is written into every
+// copy, lane l reads ring column rq + l of its own copy, so no lane multiplexer
+// follows the RAMs. A lane delivers all ROWS codes of its column (VT = ROWS) and
+// rd_row_i is not used: the weights of the rows outside the window are 0
+// (mcadsw_weight_gen), so no row shifter follows the RAMs either.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -65,6 +73,8 @@ module mcadsw_census #(
   parameter int BLOCK  = mcadsw_pkg::BLOCK,
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),     // the FPGA target's buffer shape
+  parameter int VT     = FPGA ? ROWS : WINDOW,     // codes a lane delivers
   parameter int BANKS  = 2,
   parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
   parameter int LS     = 4,                        // luma ring strips (a power of 2)
@@ -98,9 +108,9 @@ module mcadsw_census #(
   // Census buffer read port (cost aggregator), data one cycle after address
   input  logic                       rd_en_i,
   input  logic [BB-1:0]              rd_bank_i,
-  input  logic [YB-1:0]              rd_row_i,    // first of WINDOW rows
+  input  logic [YB-1:0]              rd_row_i,    // first of WINDOW rows (ASIC target)
   input  logic [XB-1:0]              rd_col_i,    // first of RL columns
-  output logic [RL*WINDOW*CB-1:0]    rd_data_o    // lane l, row k at (l*WINDOW + k)*CB
+  output logic [RL*VT*CB-1:0]        rd_data_o    // lane l, row k at (l*VT + k)*CB
 );
 
   localparam int SUB    = 8;                       // luma sub-banks (columns)
@@ -117,7 +127,7 @@ module mcadsw_census #(
   if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
       RING % CSUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
       LDEPTH < 2 || RL < LANES || RL > CSUB || (1 << CSB) != CSUB ||
-      RL > COLS) begin : g_bad_param
+      RL > COLS || VT != (FPGA ? ROWS : WINDOW)) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -339,32 +349,13 @@ module mcadsw_census #(
   logic [QB-1:0] wq, rq;        // ring columns of the column written and of the first read
   assign wq = QB'(wrap(32'(cpos_q) + 32'(col_ki_q), RING));
   assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING));
-  logic [CSUB*CWB-1:0] csub_rd;
-  for (genvar b = 0; b < CSUB; b++) begin : g_csub
-    logic [CWB-1:0] mem_q [CDEPTH];
-    always_ff @(posedge clk_i) begin
-      if (col_valid_q && wq[CSB-1:0] == CSB'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:CSB])] <= col_q;
-    end
-    // The lane of ring columns rq .. rq + CSUB - 1 that lives in this sub-bank.
-    // Its word: that of rq, or the next one when b is below rq's sub-bank.
-    localparam int CWW = $clog2(CDEPTH + 1);
-    logic [CWW-1:0] pw;
-    logic [CSB:0]   bd;                  // b - (rq mod CSUB); bit CSB: the borrow, b below it
-    logic [CSB-1:0] bd_unused;
-    assign bd = (CSB + 1)'(b) - {1'b0, rq[CSB-1:0]};
-    assign bd_unused = bd[CSB-1:0];
-    assign pw = CWW'(rq[QB-1:CSB]) + CWW'(bd[CSB]);
-    always_ff @(posedge clk_i) begin
-      if (rd_en_i)
-        csub_rd[b*CWB +: CWB] <= mem_q[$clog2(CDEPTH)'(pw >= CWW'(CDEPTH) ? pw - CWW'(CDEPTH) : pw)];
-    end
-  end
-
-  // Lane l is ring column rq + l, from sub-bank (rq + l) % CSUB: a CSUB:1
-  // multiplexer whose one-hot select is decoded from the address and registered
-  // with it, so no adder or decoder lies between the sub-bank words and the
-  // aggregator. Its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of the
-  // column word (a row shifter).
+  // ASIC target: lane l is ring column rq + l, from sub-bank (rq + l) % CSUB: a
+  // CSUB:1 multiplexer whose one-hot select is decoded from the address and
+  // registered with it, so no adder or decoder lies between the sub-bank words
+  // and the aggregator. Its WINDOW codes are rows rd_row .. rd_row + WINDOW - 1 of
+  // the column word (a row shifter). (Declared here, outside the target's branch,
+  // so that the coverage model instruments them: Verilator 5.006 records no
+  // toggle points inside generate blocks.)
   logic [RL*CSUB-1:0] lsel, lsel_q;   // lane l takes sub-bank b when bit l CSUB + b is set
   for (genvar l = 0; l < RL; l++) begin : g_lsel
     logic [CSB-1:0] b;
@@ -383,15 +374,52 @@ module mcadsw_census #(
     end
   end
 
-  function automatic logic [CWB-1:0] sub_word(input logic [CSUB*CWB-1:0] w,
-                                              input logic [CSUB-1:0] onehot);
-    sub_word = '0;
-    for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{onehot[i]}});
-  endfunction
-  for (genvar l = 0; l < RL; l++) begin : g_lane
-    logic [CWB-1:0] col;
-    assign col = sub_word(csub_rd, lsel_q[l*CSUB +: CSUB]);
-    assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
+  if (FPGA) begin : g_fpga_buf
+    // A copy of the ring a lane; lane l reads ring column rq + l (mod RING).
+    logic asic_unused;
+    assign asic_unused = ^{rd_row_q, lsel_q};
+    for (genvar l = 0; l < RL; l++) begin : g_lane
+      (* ram_style = "block" *) logic [CWB-1:0] mem_q [RING];
+      logic [QB-1:0] ra;
+      assign ra = QB'(wrap(32'(rq) + l, RING));
+      always_ff @(posedge clk_i) begin
+        if (col_valid_q) mem_q[wq] <= col_q;
+        if (rd_en_i) rd_data_o[l*VT*CB +: VT*CB] <= mem_q[ra];
+      end
+    end
+  end else begin : g_asic_buf
+    logic [CSUB*CWB-1:0] csub_rd;
+    for (genvar b = 0; b < CSUB; b++) begin : g_csub
+      logic [CWB-1:0] mem_q [CDEPTH];
+      always_ff @(posedge clk_i) begin
+        if (col_valid_q && wq[CSB-1:0] == CSB'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:CSB])] <= col_q;
+      end
+      // The lane of ring columns rq .. rq + CSUB - 1 that lives in this sub-bank.
+      // Its word: that of rq, or the next one when b is below rq's sub-bank.
+      localparam int CWW = $clog2(CDEPTH + 1);
+      logic [CWW-1:0] pw;
+      logic [CSB:0]   bd;                  // b - (rq mod CSUB); bit CSB: the borrow, b below it
+      logic [CSB-1:0] bd_unused;
+      assign bd = (CSB + 1)'(b) - {1'b0, rq[CSB-1:0]};
+      assign bd_unused = bd[CSB-1:0];
+      assign pw = CWW'(rq[QB-1:CSB]) + CWW'(bd[CSB]);
+      always_ff @(posedge clk_i) begin
+        if (rd_en_i)
+          csub_rd[b*CWB +: CWB] <= mem_q[$clog2(CDEPTH)'(pw >= CWW'(CDEPTH) ? pw - CWW'(CDEPTH) : pw)];
+      end
+    end
+
+    // The lanes (lsel_q, rd_row_q above).
+    function automatic logic [CWB-1:0] sub_word(input logic [CSUB*CWB-1:0] w,
+                                                input logic [CSUB-1:0] onehot);
+      sub_word = '0;
+      for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{onehot[i]}});
+    endfunction
+    for (genvar l = 0; l < RL; l++) begin : g_lane
+      logic [CWB-1:0] col;
+      assign col = sub_word(csub_rd, lsel_q[l*CSUB +: CSUB]);
+      assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
+    end
   end
 
   // The kernel never reads a ring strip the stream has overwritten: the

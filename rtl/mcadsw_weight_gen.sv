@@ -47,6 +47,14 @@
 // aggregator reads the slot through vrd_* and hrd_* (data the cycle after the
 // address) and frees it with hrd_rel_i on its last horizontal read.
 //
+// FPGA target (mcadsw_pkg::FPGA, docs/architecture.md 3.11): the input buffer is
+// one block RAM a plane with a column an entry, and the kernel has ROWS distance
+// units that compare whole columns (vertical) or the whole centre row
+// (horizontal) with the centre, so neither pass selects a window of pixels. A
+// vertical entry holds VT = 48 codes, one for each row of the census column (the
+// census buffer delivers whole columns there): the codes of rows r .. r + WINDOW
+// - 1, code 0 (weight 0) at the others. Same values, same cycles.
+//
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
 // from the reference's table by weight_thresholds(), so both sides use the
@@ -64,6 +72,8 @@ module mcadsw_weight_gen #(
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),      // the FPGA target's buffer shapes
+  parameter int VT     = FPGA ? ROWS : WINDOW,      // codes of a vertical entry (31 or 48)
   parameter int WPR    = COLS / 4 + 1,              // strips a window (offset 0..3)
   parameter int NEW    = (BLOCK + 3) / 4,           // most strips a continuing block adds (5)
   parameter int RS     = WPR + NEW,                 // ring strips (18)
@@ -97,7 +107,7 @@ module mcadsw_weight_gen #(
   input  logic                       vrd_en_i,
   input  logic                       vrd_slot_i,
   input  logic [GB-1:0]              vrd_grp_i,
-  output logic [LANES*WINDOW*WB-1:0] wv_o,          // lane l, tap k at (l*WINDOW + k)*WB
+  output logic [LANES*VT*WB-1:0]     wv_o,          // lane l, tap k at (l*VT + k)*WB
   // Horizontal weight buffer read: HAGG output pixels of group hrd_grp_i of a slot
   input  logic                       hrd_en_i,
   input  logic                       hrd_slot_i,
@@ -112,7 +122,8 @@ module mcadsw_weight_gen #(
 
   if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
       COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
-      HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4) begin : g_bad_param
+      HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4 ||
+      VT != (FPGA ? ROWS : WINDOW)) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -278,10 +289,9 @@ module mcadsw_weight_gen #(
   assign row_ready_o = rdy_q[rslot_q];
   assign rd_slot_o   = rslot_q;
 
-  // ---- Input buffer: a ring of RS strips, one RAM a plane ------------------------
-  // Entry t holds the 4 column words of ring strip t (column b at b*CW, row y at
-  // byte y); the kernel reads a whole strip and takes one column
-  // ("column by column", Fig. 11).
+  // ---- Input buffer: a ring of RS strips of 4 columns a plane -----------------------
+  // Ring column p = 4 t + b is column b of ring strip t; the kernel reads one column
+  // a cycle ("column by column", Fig. 11), all ROWS rows of Y, U and V.
   localparam int CB = $clog2(4 * RS);        // ring column index
   logic [CB-1:0]  rcol;                      // ring column of the kernel's column c
   logic [XB-1:0]  cc;                        // c, with image column 0 replicated to its left
@@ -290,27 +300,85 @@ module mcadsw_weight_gen #(
   assign rcol   = CB'(wrap(4*32'(g_base_q) + 32'(g_ofs_q) + 32'(cc), 4*RS));
   assign wstrip = RSB'(wrap(32'(l_base_q) + 32'(in_strip), RS));
 
-  logic [4*CW-1:0] y_mem [RS];
-  logic [4*CW-1:0] u_mem [RS];
-  logic [4*CW-1:0] v_mem [RS];
-  logic [4*CW-1:0] y_rd_q, u_rd_q, v_rd_q;
-  always_ff @(posedge clk_i) begin
-    if (pix_fire && strip_end && in_plane == 2'd0) y_mem[wstrip] <= strip_cols;
-    if (pix_fire && strip_end && in_plane == 2'd1) u_mem[wstrip] <= strip_cols;
-    if (pix_fire && strip_end && in_plane == 2'd2) v_mem[wstrip] <= strip_cols;
-  end
-  always_ff @(posedge clk_i) begin
-    if (state_q == VERT) begin
-      y_rd_q <= y_mem[RSB'(rcol[CB-1:2])];
-      u_rd_q <= u_mem[RSB'(rcol[CB-1:2])];
-      v_rd_q <= v_mem[RSB'(rcol[CB-1:2])];
-    end
-  end
+  logic [3*CW-1:0] column;                   // stage 1: the column read, {V, U, Y}
+  logic [1:0]      s1_sel_q;                 // ASIC target: its column in the strip
 
-  function automatic logic [CW-1:0] bank_word(input logic [4*CW-1:0] w, input logic [1:0] b);
-    bank_word = '0;
-    for (int i = 0; i < 4; i++) bank_word = bank_word | (w[i*CW +: CW] & {CW{b == 2'(i)}});
-  endfunction
+  if (FPGA) begin : g_fpga_in
+    // FPGA target: one RAM a plane, a ring column an entry (4 RS deep, ROWS bytes
+    // wide: block RAM). A finished strip's 4 columns are held and written one a
+    // cycle over the next 4 cycles (a plane's strips are ROWS words apart); the
+    // kernel never reads them that early (ColumnWrittenBeforeRead).
+    (* ram_style = "block" *) logic [CW-1:0] y_mem [4*RS];
+    (* ram_style = "block" *) logic [CW-1:0] u_mem [4*RS];
+    (* ram_style = "block" *) logic [CW-1:0] v_mem [4*RS];
+    logic [CW-1:0]   y_rd_q, u_rd_q, v_rd_q;
+    logic [4*CW-1:0] hold_q;                 // the strip's columns, column 0 first
+    logic [2:0]      hn_q;                   // columns still to write (4 .. 0)
+    logic [1:0]      hplane_q;
+    logic [RSB-1:0]  hstrip_q;
+    logic [CB-1:0]   hcol;                   // ring column written
+    assign hcol = CB'(4*32'(hstrip_q) + 4 - 32'(hn_q));
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        hn_q     <= '0;
+        hplane_q <= '0;
+        hstrip_q <= '0;
+      end else if (pix_fire && strip_end) begin
+        hn_q     <= 3'd4;
+        hplane_q <= in_plane;
+        hstrip_q <= wstrip;
+      end else if (hn_q != '0) begin
+        hn_q <= hn_q - 3'd1;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (pix_fire && strip_end) hold_q <= strip_cols;
+      else if (hn_q != '0) hold_q <= hold_q >> CW;
+    end
+    always_ff @(posedge clk_i) begin
+      if (hn_q != '0 && hplane_q == 2'd0) y_mem[hcol] <= hold_q[CW-1:0];
+      if (hn_q != '0 && hplane_q == 2'd1) u_mem[hcol] <= hold_q[CW-1:0];
+      if (hn_q != '0 && hplane_q == 2'd2) v_mem[hcol] <= hold_q[CW-1:0];
+    end
+    always_ff @(posedge clk_i) begin
+      if (state_q == VERT) begin
+        y_rd_q <= y_mem[rcol];
+        u_rd_q <= u_mem[rcol];
+        v_rd_q <= v_mem[rcol];
+      end
+    end
+    assign column = {v_rd_q, u_rd_q, y_rd_q};
+    logic sel_unused;
+    assign sel_unused = ^s1_sel_q;
+    `MCADSW_ASSERT(StripsRowsApart, !(pix_fire && strip_end && hn_q != '0))
+    `MCADSW_ASSERT(ColumnWrittenBeforeRead, !(state_q == VERT && hn_q != '0 && rcol[CB-1:2] == (CB-2)'(hstrip_q)))
+  end else begin : g_asic_in
+    // ASIC target: one RAM a plane, entry t the 4 column words of ring strip t
+    // (column b at b*CW, row y at byte y); the kernel reads a whole strip and
+    // takes one column.
+    logic [4*CW-1:0] y_mem [RS];
+    logic [4*CW-1:0] u_mem [RS];
+    logic [4*CW-1:0] v_mem [RS];
+    logic [4*CW-1:0] y_rd_q, u_rd_q, v_rd_q;
+    always_ff @(posedge clk_i) begin
+      if (pix_fire && strip_end && in_plane == 2'd0) y_mem[wstrip] <= strip_cols;
+      if (pix_fire && strip_end && in_plane == 2'd1) u_mem[wstrip] <= strip_cols;
+      if (pix_fire && strip_end && in_plane == 2'd2) v_mem[wstrip] <= strip_cols;
+    end
+    always_ff @(posedge clk_i) begin
+      if (state_q == VERT) begin
+        y_rd_q <= y_mem[RSB'(rcol[CB-1:2])];
+        u_rd_q <= u_mem[RSB'(rcol[CB-1:2])];
+        v_rd_q <= v_mem[RSB'(rcol[CB-1:2])];
+      end
+    end
+    function automatic logic [CW-1:0] bank_word(input logic [4*CW-1:0] w, input logic [1:0] b);
+      bank_word = '0;
+      for (int i = 0; i < 4; i++) bank_word = bank_word | (w[i*CW +: CW] & {CW{b == 2'(i)}});
+    endfunction
+    assign column = {bank_word(v_rd_q, s1_sel_q), bank_word(u_rd_q, s1_sel_q),
+                     bank_word(y_rd_q, s1_sel_q)};
+  end
 
   // ---- Kernel pipeline -------------------------------------------------------------
   // Stage 1 (vertical only): the column from the input buffer; its window and
@@ -318,13 +386,9 @@ module mcadsw_weight_gen #(
   localparam int PW  = 24;                   // Y, U, V of one pixel
   localparam int WPW = WINDOW * PW;          // a window of pixels
   logic           s1_q;                      // stage 1 holds a vertical column
-  logic [1:0]     s1_sel_q;                  // its column in the strip
   logic [RB-1:0]  s1_r_q;
   logic [XB-1:0]  s1_c_q;
   logic           s1_slot_q;
-  logic [3*CW-1:0] column;
-  assign column = {bank_word(v_rd_q, s1_sel_q), bank_word(u_rd_q, s1_sel_q),
-                   bank_word(y_rd_q, s1_sel_q)};
 
   // Horizontal row buffer (Fig. 11): the centre row of the current row, COLS
   // pixels in flip-flops, written by the vertical pass, read by the horizontal one.
@@ -340,36 +404,12 @@ module mcadsw_weight_gen #(
     cdist = absdiff(a[7:0], b[7:0]) + absdiff(a[15:8], b[15:8]) + absdiff(a[23:16], b[23:16]);
   endfunction
 
-  // Rows r .. r + WINDOW - 1 of the column, as pixels: each plane's window is
-  // one of BLOCK row offsets (an AND-OR multiplexer, not a bit-granular
-  // shifter), then Y, U, V are interleaved at constant positions. Functions
-  // called only where their result is written, so a simulator evaluates them in
-  // the kernel's cycles only; the hardware is the same.
-  function automatic logic [WPW-1:0] vwindow(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
-    logic [3*WINDOW*8-1:0] planes;    // Y, U, V windows
-    planes = '0;
-    for (int o = 0; o < BLOCK; o++)
-      planes = planes | ({col[2*CW + o*8 +: WINDOW*8], col[CW + o*8 +: WINDOW*8], col[o*8 +: WINDOW*8]} &
-                         {(3*WINDOW*8){r == RB'(o)}});
-    for (int k = 0; k < WINDOW; k++)
-      vwindow[k*PW +: PW] = {planes[2*WINDOW*8 + k*8 +: 8], planes[WINDOW*8 + k*8 +: 8], planes[k*8 +: 8]};
-  endfunction
-
-  function automatic logic [WPW-1:0] hwindow(input logic [COLS*PW-1:0] row, input logic [XB-1:0] c);
-    hwindow = '0;
-    for (int o = 0; o < BLOCK; o++) hwindow = hwindow | (row[o*PW +: WPW] & {WPW{c == XB'(o)}});
-  endfunction
-
-  function automatic logic [ENTRY-1:0] weight_codes(input logic [WPW-1:0] win,
-                                                    input logic [NTHR*DCB-1:0] thr);
-    logic [DCB-1:0] d;
-    logic [WB-1:0]  passed;   // thresholds passed
-    for (int k = 0; k < WINDOW; k++) begin
-      d = cdist(win[k*PW +: PW], win[RADIUS*PW +: PW]);
-      passed = '0;
-      for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);
-      weight_codes[k*WB +: WB] = WB'(NTHR) - passed;
-    end
+  // The weight code of a colour distance: 7 - the thresholds it reaches.
+  function automatic logic [WB-1:0] code_of(input logic [DCB-1:0] d, input logic [NTHR*DCB-1:0] thr);
+    logic [WB-1:0] passed;
+    passed = '0;
+    for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);
+    code_of = WB'(NTHR) - passed;
   endfunction
 
   // The centre pixel r + RADIUS of the column goes into the horizontal row buffer.
@@ -380,7 +420,6 @@ module mcadsw_weight_gen #(
                                       col[(o + RADIUS)*8 +: 8]} & {PW{r == RB'(o)}});
   endfunction
 
-  logic [WPW-1:0] k_win_q;
   logic           k_vert_q, k_horz_q;        // stage 2 writes a vertical / horizontal entry
   logic           k_slot_q;
   logic [GB-1:0]  k_grp_q;                   // entry: word and position in it
@@ -425,26 +464,102 @@ module mcadsw_weight_gen #(
 
   always_ff @(posedge clk_i) begin
     if (s1_q) hrow_q[32'(s1_c_q)*PW +: PW] <= centre_pixel(column, s1_r_q);
-    if (s1_q) k_win_q <= vwindow(column, s1_r_q);
-    else if (state_q == HORZ) k_win_q <= hwindow(hrow_q, c_q);
   end
 
   // ---- Weight buffers: two row slots, one word per aggregator read -----------------
   // Vertical: word (slot, group of LANES columns); horizontal: word (slot, group
   // of HAGG pixels). Stage 2 writes one entry of a word a cycle.
-  logic [LANES*ENTRY-1:0] vbuf_q [2*VGRP];
+  localparam int VENTRY = VT * WB;           // one vertical entry
+  logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
   logic [HAGG*ENTRY-1:0]  hbuf_q [2*HGRP];
   localparam int VAB = $clog2(2 * VGRP);
   localparam int HAB = $clog2(2 * HGRP);
+  logic [VAB-1:0] k_vaddr;
+  logic [HAB-1:0] k_haddr;
+  assign k_vaddr = VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q));
+  assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
 
-  always_ff @(posedge clk_i) begin
-    if (k_vert_q || k_horz_q) begin : p_kernel
-      logic [ENTRY-1:0] codes;  // one kernel for both passes
-      codes = weight_codes(k_win_q, thr_i);
-      if (k_vert_q)
-        vbuf_q[VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q))][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
-      else
-        hbuf_q[HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q))][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
+  if (FPGA) begin : g_fpga_kernel
+    // FPGA target: ROWS distance units compare all ROWS pixels of the column
+    // (vertical) or of the centre row (horizontal) with the centre, so no window
+    // select precedes them. Vertical entry: the codes of rows r .. r + WINDOW - 1,
+    // code 0 at the other rows (VT = ROWS taps); horizontal entry: the codes of
+    // columns x .. x + WINDOW - 1 (an 18:1 select of WINDOW codes).
+    localparam int APW = ROWS * PW;
+    logic [APW-1:0] k_px_q;                  // the ROWS pixels
+    logic [PW-1:0]  k_ctr_q;                 // the centre
+    logic [RB-1:0]  k_at_q;                  // row r (vertical) or pixel x (horizontal)
+
+    // A column's rows as pixels: Y, U, V of row j interleaved at j*PW.
+    function automatic logic [APW-1:0] column_pixels(input logic [3*CW-1:0] col);
+      for (int j = 0; j < ROWS; j++)
+        column_pixels[j*PW +: PW] = {col[2*CW + j*8 +: 8], col[CW + j*8 +: 8], col[j*8 +: 8]};
+    endfunction
+
+    always_ff @(posedge clk_i) begin
+      if (s1_q) begin
+        k_px_q  <= column_pixels(column);
+        k_ctr_q <= centre_pixel(column, s1_r_q);
+        k_at_q  <= s1_r_q;
+      end else if (state_q == HORZ) begin
+        k_px_q  <= hrow_q;
+        k_ctr_q <= hrow_q[(32'(c_q) + RADIUS)*PW +: PW];
+        k_at_q  <= RB'(c_q);
+      end
+    end
+
+    always_ff @(posedge clk_i) begin
+      if (k_vert_q || k_horz_q) begin : p_kernel
+        logic [ROWS*WB-1:0] codes;           // one code a pixel
+        logic [VENTRY-1:0]  ventry;
+        for (int j = 0; j < ROWS; j++) codes[j*WB +: WB] = code_of(cdist(k_px_q[j*PW +: PW], k_ctr_q), thr_i);
+        for (int j = 0; j < ROWS; j++)
+          ventry[j*WB +: WB] = (j >= 32'(k_at_q) && j < 32'(k_at_q) + WINDOW) ? codes[j*WB +: WB] : '0;
+        if (k_vert_q) vbuf_q[k_vaddr][32'(k_pos_q)*VENTRY +: VENTRY] <= ventry;
+        else          hbuf_q[k_haddr][32'(k_pos_q)*ENTRY +: ENTRY] <= ENTRY'(codes >> (32'(k_at_q)*WB));
+      end
+    end
+  end else begin : g_asic_kernel
+    // ASIC target: rows r .. r + WINDOW - 1 of the column, as pixels: each plane's
+    // window is one of BLOCK row offsets (an AND-OR multiplexer, not a
+    // bit-granular shifter), then Y, U, V are interleaved at constant positions;
+    // WINDOW distance units against the window's centre. Functions called only
+    // where their result is written, so a simulator evaluates them in the kernel's
+    // cycles only; the hardware is the same.
+    function automatic logic [WPW-1:0] vwindow(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
+      logic [3*WINDOW*8-1:0] planes;    // Y, U, V windows
+      planes = '0;
+      for (int o = 0; o < BLOCK; o++)
+        planes = planes | ({col[2*CW + o*8 +: WINDOW*8], col[CW + o*8 +: WINDOW*8], col[o*8 +: WINDOW*8]} &
+                           {(3*WINDOW*8){r == RB'(o)}});
+      for (int k = 0; k < WINDOW; k++)
+        vwindow[k*PW +: PW] = {planes[2*WINDOW*8 + k*8 +: 8], planes[WINDOW*8 + k*8 +: 8], planes[k*8 +: 8]};
+    endfunction
+
+    function automatic logic [WPW-1:0] hwindow(input logic [COLS*PW-1:0] row, input logic [XB-1:0] c);
+      hwindow = '0;
+      for (int o = 0; o < BLOCK; o++) hwindow = hwindow | (row[o*PW +: WPW] & {WPW{c == XB'(o)}});
+    endfunction
+
+    function automatic logic [ENTRY-1:0] weight_codes(input logic [WPW-1:0] win,
+                                                      input logic [NTHR*DCB-1:0] thr);
+      for (int k = 0; k < WINDOW; k++)
+        weight_codes[k*WB +: WB] = code_of(cdist(win[k*PW +: PW], win[RADIUS*PW +: PW]), thr);
+    endfunction
+
+    logic [WPW-1:0] k_win_q;
+    always_ff @(posedge clk_i) begin
+      if (s1_q) k_win_q <= vwindow(column, s1_r_q);
+      else if (state_q == HORZ) k_win_q <= hwindow(hrow_q, c_q);
+    end
+
+    always_ff @(posedge clk_i) begin
+      if (k_vert_q || k_horz_q) begin : p_kernel
+        logic [ENTRY-1:0] codes;  // one kernel for both passes
+        codes = weight_codes(k_win_q, thr_i);
+        if (k_vert_q) vbuf_q[k_vaddr][32'(k_pos_q)*VENTRY +: VENTRY] <= codes;
+        else          hbuf_q[k_haddr][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
+      end
     end
   end
 

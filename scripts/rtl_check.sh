@@ -7,10 +7,18 @@
 #   scripts/rtl_check.sh yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
 #   scripts/rtl_check.sh iverilog  Icarus Verilog 11, -g2012
 #   scripts/rtl_check.sh all       the three
+# A second argument, a package file, replaces rtl/mcadsw_pkg.sv: another
+# configuration's (the FPGA target's, build/rtl/fpga/mcadsw_pkg.sv, elaborates the
+# branches the default package leaves out).
 # Exits non-zero on any warning or error. Used by `make lint` and by ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/tools.sh"  # the pinned Verilator first on PATH
+alt_pkg=${2:-}
+if [ -n "$alt_pkg" ]; then
+  [ -f "$alt_pkg" ] || { echo "rtl_check: package $alt_pkg not found" >&2; exit 2; }
+  alt_pkg=$(cd "$(dirname "$alt_pkg")" && pwd)/$(basename "$alt_pkg")
+fi
 cd "$root/rtl"
 pkg=mcadsw_pkg.sv
 # The packages, read in this order before the modules and never linted as a top: the
@@ -43,7 +51,8 @@ done
 waivers=()
 [ -f lint_waivers.vlt ] && waivers=(lint_waivers.vlt)
 if [ ${#mods[@]} -eq 0 ]; then echo "rtl_check: no RTL modules"; exit 0; fi
-files=("${pkgs[@]}" "${mods[@]}")
+files=("${alt_pkg:-$pkg}" "${pkgs[@]:1}" "${mods[@]}")
+what=${alt_pkg:+ (package $alt_pkg)}
 
 run_lint() {
   for f in "${mods[@]}"; do
@@ -52,7 +61,7 @@ run_lint() {
       echo "$out"; echo "rtl_check: verilator lint FAILED for $top" >&2; return 1; }
     if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
   done
-  echo "rtl_check: verilator --lint-only -Wall clean on ${#mods[@]} modules"
+  echo "rtl_check: verilator --lint-only -Wall clean on ${#mods[@]} modules$what"
 }
 
 run_yosys() {
@@ -90,7 +99,7 @@ run_yosys() {
   fi
   [ "$(grep -c '^rtl_check: elaborating ' <<<"$out")" = "${#mods[@]}" ] || {
     echo "$out"; echo "rtl_check: yosys did not elaborate every module" >&2; return 1; }
-  echo "rtl_check: yosys 0.23 parses and elaborates ${#mods[@]} modules"
+  echo "rtl_check: yosys 0.23 parses and elaborates ${#mods[@]} modules$what"
 }
 
 run_iverilog() {
@@ -98,7 +107,7 @@ run_iverilog() {
   out=$(iverilog -g2012 -Wall -Wno-timescale -I. -o "$tmp" "${files[@]}" 2>&1) || {
     echo "$out"; echo "rtl_check: iverilog FAILED" >&2; return 1; }
   if [ -n "$out" ]; then echo "$out"; echo "rtl_check: iverilog warned" >&2; return 1; fi
-  echo "rtl_check: iverilog -g2012 compiles ${#files[@]} files"
+  echo "rtl_check: iverilog -g2012 compiles ${#files[@]} files$what"
 }
 
 case ${1:-all} in
@@ -106,5 +115,5 @@ case ${1:-all} in
   yosys) run_yosys ;;
   iverilog) run_iverilog ;;
   all) run_lint; run_yosys; run_iverilog ;;
-  *) echo "usage: $0 lint|yosys|iverilog|all" >&2; exit 2 ;;
+  *) echo "usage: $0 lint|yosys|iverilog|all [PACKAGE]" >&2; exit 2 ;;
 esac

@@ -6,21 +6,28 @@
 // C++; with `regs-doc`, docs/registers.md. The committed files are checked
 // against this output by tests.
 //
-//   gen_rtl_pkg [--dmax N] [--par P]   the package of that configuration (default:
-//                                      the build's MCADSW_DMAX / MCADSW_PAR)
+//   gen_rtl_pkg [--dmax N] [--par P] [--fpga]
+//                                      the package of that configuration (default:
+//                                      the build's MCADSW_DMAX / MCADSW_PAR / MCADSW_FPGA;
+//                                      --fpga: the FPGA target's memory shapes,
+//                                      docs/architecture.md 3.11)
 //   gen_rtl_pkg regs-doc               docs/registers.md
 //   gen_rtl_pkg rect-pkg               rtl/rect/mcadsw_rect_pkg.sv
 //
 // The one check of a configuration (CMake, make synth, make fpga call this):
 // DMAX an integer from 1 to 128, PAR 1, 2 or 4, DMAX a multiple of PAR; anything
-// else is a message on stderr and exit 2, nothing on stdout. Only DMAX, DISP_BITS
-// and PAR of the package depend on the configuration.
+// else is a message on stderr and exit 2, nothing on stdout. Only DMAX, DISP_BITS,
+// PAR, FPGA and VTAPS of the package depend on the configuration.
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "mcadsw/params.hpp"
 #include "mcadsw/regs.hpp"
+
+#ifndef MCADSW_FPGA
+#define MCADSW_FPGA 0  // CMake MCADSW_FPGA: the build's target
+#endif
 
 namespace {
 
@@ -155,13 +162,16 @@ int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "rect-pkg") == 0) return print_rect_pkg();
   const char* dmax_arg = nullptr;
   const char* par_arg = nullptr;
+  bool fpga = MCADSW_FPGA != 0;  // the build's target (CMake MCADSW_FPGA) unless --fpga
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--dmax") == 0 && i + 1 < argc) {
       dmax_arg = argv[++i];
     } else if (std::strcmp(argv[i], "--par") == 0 && i + 1 < argc) {
       par_arg = argv[++i];
+    } else if (std::strcmp(argv[i], "--fpga") == 0) {
+      fpga = true;
     } else {
-      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] | gen_rtl_pkg regs-doc | gen_rtl_pkg rect-pkg\n");
+      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] [--fpga] | gen_rtl_pkg regs-doc | gen_rtl_pkg rect-pkg\n");
       return 2;
     }
   }
@@ -202,6 +212,10 @@ int main(int argc, char** argv) {
   p("DMAX", dmax, "largest disparity range");
   p("DISP_BITS", bits_for(dmax - 1), "disparity 0..DMAX-1");
   p("PAR", par, "disparities a step (1, 2, 4)");
+  p("FPGA", fpga ? 1 : 0, "target: 0 the ASIC, 1 an FPGA (block-RAM shapes)");
+  p("VTAPS", fpga ? kBlockCols : kWindow,
+    fpga ? "census rows a lane reads: all 48, weights 0 outside the window"
+         : "census rows a lane reads: the window's 31");
   p("BLOCK", kBlock, "output block 18x18");
   p("LANES", kLanes, "vertical aggregation lanes");
   p("HAGG", kHorzAggregators, "horizontal aggregators");

@@ -3,39 +3,53 @@
 # SPDX-License-Identifier: Apache-2.0
 
 # Another configuration: the reference, the RTL and the harness built
-# for DMAX disparities, PAR a step, in their own build directory
-# (BUILD/dmax<DMAX>_par<PAR>, as `make sim-build DMAX=<DMAX> PAR=<PAR>`), then
+# for DMAX disparities, PAR a step, the ASIC or (FPGA = 1) the FPGA target, in their
+# own build directory (BUILD/dmax<DMAX>_par<PAR>[_fpga], as `make sim-build DMAX=<DMAX>
+# PAR=<PAR> FPGA=<FPGA>`), then
+#   - on the FPGA target, the block benches of the blocks whose buffers it reshapes
+#     (census, weight generator, cost aggregator: docs/architecture.md 3.11);
 #   - the reference's tests (the fast kernels against the plain model for every D
 #     up to DMAX, among others);
 #   - the engine's tests (crops at D = DMAX with random memory timing, invalid
 #     configurations: D = DMAX + 1 is code 3);
 #   - mcadsw_sim on a Teddy crop at D = DMAX in every output mode, bit-exact;
 #   - mcadsw_sim_random: random cases with D up to DMAX.
-#   tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR]
+#   tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-parent=${1:?usage: tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR]}
+parent=${1:?usage: tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA]}
 dmax=${2:-128}
 cases=${3:-20}
 par=${4:-1}
-dir=$parent/dmax${dmax}_par$par
-echo "dmax: configuring and building $dir (DMAX = $dmax, PAR = $par)"
+fpga=${5:-0}
+case $fpga in
+  0) suffix=; target=ASIC; fpga_opt=OFF; blocks=() ;;
+  1) suffix=_fpga; target=FPGA; fpga_opt=ON; blocks=(rtl_census_test rtl_weight_gen_test rtl_cost_agg_test) ;;
+  *) echo "dmax: FPGA='$fpga': 0 or 1" >&2; exit 2 ;;
+esac
+dir=$parent/dmax${dmax}_par$par$suffix
+echo "dmax: configuring and building $dir (DMAX = $dmax, PAR = $par, $target target)"
 cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$dmax" -DMCADSW_PAR="$par" \
-  > "$dir.configure.log" 2>&1 ||
+  -DMCADSW_FPGA="$fpga_opt" > "$dir.configure.log" 2>&1 ||
   { tail -20 "$dir.configure.log"; echo "dmax: configure failed" >&2; exit 1; }
-cmake --build "$dir" -j "$(nproc)" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random > "$dir.build.log" 2>&1 ||
+cmake --build "$dir" -j "$(nproc)" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random "${blocks[@]}" \
+  > "$dir.build.log" 2>&1 ||
   { grep -E "error|Error" -A5 "$dir.build.log" | head -40; echo "dmax: build failed" >&2; exit 1; }
 echo "dmax: reference tests"
 "$dir/bin/ref_tests" --gtest_brief=1
+for b in "${blocks[@]}"; do
+  echo "dmax: $b"
+  "$dir/bin/$b" --gtest_brief=1
+done
 echo "dmax: engine tests"
 "$dir/bin/rtl_engine_test" --gtest_brief=1
 left=$root/data/cif/teddy/left.png
 right=$root/data/cif/teddy/right.png
 for mode in "" "--subpixel" "--right" "--lr --subpixel -T 2" "--random-latency 5"; do
   # shellcheck disable=SC2086
-  "$dir/bin/mcadsw_sim" "$left" "$right" -d "$dmax" --crop 100,100,75,39 --name "dmax${dmax}_par$par" $mode | tail -1 |
+  "$dir/bin/mcadsw_sim" "$left" "$right" -d "$dmax" --crop 100,100,75,39 --name "dmax${dmax}_par$par$suffix" $mode | tail -1 |
     tee "$dir.sim.log"
-  grep -q "BIT-EXACT" "$dir.sim.log" || { echo "dmax: mcadsw_sim $mode at D = $dmax, PAR = $par failed" >&2; exit 1; }
+  grep -q "BIT-EXACT" "$dir.sim.log" || { echo "dmax: mcadsw_sim $mode at D = $dmax, PAR = $par, $target target failed" >&2; exit 1; }
 done
 echo "dmax: $cases random cases"
 "$dir/bin/mcadsw_sim_random" --cases "$cases" --seed 18 | tail -1

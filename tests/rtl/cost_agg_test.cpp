@@ -22,6 +22,7 @@
 #include "Vcost_agg_p4.h"
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
+#include "rtl_bench.hpp"
 #include "test_util.hpp"
 #include "vbits.hpp"
 
@@ -153,11 +154,14 @@ class CostAggBench {
   // is right lane l + P - 1 - p.
   void drive_vertical(bool en, int row, int grp, int d) {
     auto& t = *top_;
+    // Lane tap t is census row t of the block on the FPGA target (weight 0 outside
+    // the row's window), window tap t of the row on the ASIC target.
+    const auto tap_y = [&](int tp) { return s_.by - kRadius + (sim::kFpga ? tp : row + tp); };
     for (int j = 0; j < kLanes + P - 1; ++j) {
       const int x = s_.bx - kRadius + grp * kLanes + j - (P - 1);
-      for (int k = 0; k < kWindow; ++k) {
-        const int i = j * kWindow + k;
-        const int y = s_.by + row - kRadius + k;
+      for (int tp = 0; tp < sim::kVertTaps; ++tp) {
+        const int i = j * sim::kVertTaps + tp;
+        const int y = tap_y(tp);
         // Garbage on every read port when not reading: it must not matter.
         set_bits(t.cen_r_i, i * kCensusBits, kCensusBits,
                  en ? ref_.census_right.at(cx(x - d), cy(y)) : (rng_() & 63));
@@ -165,13 +169,14 @@ class CostAggBench {
     }
     for (int l = 0; l < kLanes; ++l) {
       const int x = s_.bx - kRadius + grp * kLanes + l;
-      for (int k = 0; k < kWindow; ++k) {
-        const int i = l * kWindow + k;
-        const int y = s_.by + row - kRadius + k;
+      for (int tp = 0; tp < sim::kVertTaps; ++tp) {
+        const int i = l * sim::kVertTaps + tp;
+        const int y = tap_y(tp);
+        const int k = sim::window_tap(tp, row);
         set_bits(t.cen_l_i, i * kCensusBits, kCensusBits,
                  en ? ref_.census_left.at(cx(x), cy(y)) : (rng_() & 63));
         set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
-                 en ? weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))) : (rng_() & 7));
+                 !en ? (rng_() & 7) : k < 0 ? 0 : weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))));
       }
     }
   }

@@ -204,15 +204,17 @@ class WeightGenBench {
     const int y = b.by + a.row;
     for (int l = 0; l < kLanes; ++l) {
       const int x = clamp_coord(b.bx - kRadius + a.v * kLanes + l, r.img.width());
-      for (int k = 0; k < kWindow; ++k) {
-        const int want = weight_code(ref_.v(k, x, y));
-        const int got = int(get_bits(top_->wv_o, (l * kWindow + k) * kWeightCodeBits, kWeightCodeBits));
+      // Lane tap t is window tap k (FPGA target: t is the census row, 0 outside the window).
+      for (int t = 0; t < sim::kVertTaps; ++t) {
+        const int k = sim::window_tap(t, a.row);
+        const int want = k < 0 ? 0 : weight_code(ref_.v(k, x, y));
+        const int got = int(get_bits(top_->wv_o, (l * sim::kVertTaps + t) * kWeightCodeBits, kWeightCodeBits));
         ++st->compared;
         if (got != want) {
           std::ostringstream o;
           o << "vertical weight code, block (" << b.bx << "," << b.by << ") column x=" << x
-            << " centre y=" << y << " tap k=" << k - kRadius << ": RTL " << got << ", reference "
-            << want;
+            << " centre y=" << y << " lane tap " << t << " (window tap k=" << (k < 0 ? k : k - kRadius)
+            << "): RTL " << got << ", reference " << want;
           return o.str();
         }
       }
