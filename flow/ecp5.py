@@ -10,6 +10,7 @@ configuration and the bitstream, and the logs.
 
     python3 flow/ecp5.py smoke --out DIR
     python3 flow/ecp5.py check REPORT.json
+    python3 flow/ecp5.py block --top MODULE [--param NAME=VALUE ...] [--fpga] --out DIR
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -17,6 +18,9 @@ report (ctest fpga_ecp5_smoke: the flow cannot rot between whole runs, which tak
 than CI can). Exit 0 when it is placed, routed, within the device and at its frequency;
 1 with the reason otherwise; 2 on a missing tool or a failed step. `check` judges a report
 the same way (used by the smoke run, and by a negative test on a hand-written report).
+`block` synthesises one module of rtl/mcadsw.f (with its submodules) for ECP5 with the
+package of the ASIC or (--fpga) the FPGA target, and lists its cells (DIR/cells.json):
+the per-block figures of docs/results.md.
 """
 import argparse
 import json
@@ -24,7 +28,7 @@ import sys
 import time
 from pathlib import Path
 
-from flowlib import FlowError, ROOT, Run, log, tail, PREFIX
+from flowlib import FlowError, ROOT, Run, gen_package, log, rtl_list, tail, PREFIX
 
 VENV_BIN = ROOT / ".venv" / "bin"
 
@@ -61,9 +65,9 @@ def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
     inc = f" -I{include}" if include else ""
     dfs = "".join(f" -D{d}" for d in defines)
     lines = [f"read_verilog -sv{dfs}{inc} " + " ".join(str(f) for f in files),
-             f"hierarchy -check -top {top}"]
-    for k, v in (params or {}).items():
-        lines.append(f"chparam -set {k} {v} {top}")
+             # Parameters set by hierarchy itself: a chparam after it leaves the
+             # submodules derived for the defaults unresolved.
+             f"hierarchy -check -top {top}" + "".join(f" -chparam {k} {v}" for k, v in (params or {}).items())]
     lines += [f"synth_ecp5 -top {top} -json netlist.json", "tee -q -o stat.txt stat"]
     (out / "synth.ys").write_text("# Written by flow/ecp5.py\n" + "\n".join(lines) + "\n")
     run = Run()
@@ -153,6 +157,49 @@ def smoke(a):
     return 0
 
 
+def stat_cells(path):
+    """{cell type: count} of the top module in a Yosys `stat` listing (the flattened netlist)."""
+    cells, seen = {}, False
+    for ln in Path(path).read_text().splitlines():
+        f = ln.split()
+        if len(f) == 2 and f[1] == "cells" and f[0].isdigit():
+            seen = True
+        elif seen and len(f) == 2 and f[0].isdigit():
+            cells[f[1]] = int(f[0])
+        elif seen and cells and not f:
+            break
+    if not cells:
+        raise FlowError(f"no cell counts in {path}", 2)
+    return cells
+
+
+def block(a):
+    out = Path(a.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "cells.json").unlink(missing_ok=True)
+    params = {}
+    for kv in a.param or []:
+        k, sep, v = kv.partition("=")
+        if not sep or not k or not v:
+            raise FlowError(f"--param {kv}: expected NAME=VALUE", 2)
+        params[k] = v
+    pkg = out / "mcadsw_pkg.sv"
+    pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, a.fpga))
+    # The package by its name in the step's folder (the tool's working folder): the
+    # WebAssembly tools do not open every absolute path (one below /tmp was not found).
+    files = [Path(pkg.name)] + [ROOT / "rtl" / f for f in rtl_list(no_pkg=True)]
+    target = "FPGA" if a.fpga else "ASIC"
+    log(f"synth_ecp5 of {a.top} ({target} target, DMAX {a.dmax}, PAR {a.par}"
+        + "".join(f", {k} = {v}" for k, v in params.items()) + f") into {out}")
+    s = synth(files, a.top, out, params=params, include=ROOT / "rtl")
+    cells = {k: v for k, v in stat_cells(out / "stat.txt").items() if not k.startswith("$")}
+    summary = {"top": a.top, "target": target, "dmax": int(a.dmax), "par": int(a.par),
+               "params": params, "cells": cells, "synth": s}
+    (out / "cells.json").write_text(json.dumps(summary, indent=1) + "\n")
+    log(", ".join(f"{k} {v}" for k, v in sorted(cells.items())) + f"; {s['seconds']} s, peak {s['peak_MB']} MB")
+    return 0
+
+
 def check(a):
     util, fmax, problems = check_report(a.report)
     for k, (u, av) in sorted(util.items()):
@@ -176,9 +223,18 @@ def main(argv):
     ck = sub.add_parser("check", help="read a nextpnr --report JSON back: exit 1 if a cell type is over "
                         "its device's count or a clock below its constraint")
     ck.add_argument("report")
+    bl = sub.add_parser("block", help="synth_ecp5 of one module of the RTL: its cells")
+    bl.add_argument("--top", required=True, help="module of rtl/mcadsw.f")
+    bl.add_argument("--param", action="append", help="NAME=VALUE: a parameter of the module")
+    bl.add_argument("--fpga", action="store_true", help="the FPGA target's package")
+    bl.add_argument("--dmax", default="64")
+    bl.add_argument("--par", default="1")
+    bl.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
+                    help="the package generator (default build/bin/gen_rtl_pkg)")
+    bl.add_argument("--out", required=True, help="output folder")
     a = ap.parse_args(argv)
     try:
-        return smoke(a) if a.cmd == "smoke" else check(a)
+        return {"smoke": smoke, "check": check, "block": block}[a.cmd](a)
     except FlowError as e:
         log(str(e))
         return e.code

@@ -191,13 +191,14 @@ class Run:
                 raise
 
 
-def gen_package(gen, dmax, par):
+def gen_package(gen, dmax, par, fpga=False):
     """The package of the configuration from gen_rtl_pkg, the one check of DMAX
-    and PAR (exit 2 with its message)."""
+    and PAR (exit 2 with its message); FPGA: the FPGA target's."""
     if not (Path(gen).is_file() and os.access(gen, os.X_OK)):
         raise FlowError(f"gen_rtl_pkg not found at {gen} (make synth builds it; or: "
                         f"cmake --build build --target gen_rtl_pkg)", 2)
-    r = subprocess.run([gen, "--dmax", dmax, "--par", par], capture_output=True, text=True)
+    r = subprocess.run([gen, "--dmax", dmax, "--par", par] + (["--fpga"] if fpga else []),
+                       capture_output=True, text=True)
     if r.returncode != 0:
         raise FlowError(r.stderr.strip() or f"gen_rtl_pkg failed (exit {r.returncode})", 2)
     return r.stdout
