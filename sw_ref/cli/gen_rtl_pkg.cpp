@@ -25,9 +25,6 @@
 #include "mcadsw/params.hpp"
 #include "mcadsw/regs.hpp"
 
-#ifndef MCADSW_FPGA
-#define MCADSW_FPGA 0  // CMake MCADSW_FPGA: the build's target
-#endif
 
 namespace {
 
@@ -162,7 +159,7 @@ int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "rect-pkg") == 0) return print_rect_pkg();
   const char* dmax_arg = nullptr;
   const char* par_arg = nullptr;
-  bool fpga = MCADSW_FPGA != 0;  // the build's target (CMake MCADSW_FPGA) unless --fpga
+  bool fpga = kFpga;  // the build's target unless --fpga
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--dmax") == 0 && i + 1 < argc) {
       dmax_arg = argv[++i];
@@ -213,7 +210,7 @@ int main(int argc, char** argv) {
   p("DISP_BITS", bits_for(dmax - 1), "disparity 0..DMAX-1");
   p("PAR", par, "disparities a step (1, 2, 4)");
   p("FPGA", fpga ? 1 : 0, "target: 0 the ASIC, 1 an FPGA (block-RAM shapes)");
-  p("VTAPS", fpga ? kBlockCols : kWindow,
+  p("VTAPS", vert_taps(fpga),
     fpga ? "census rows a lane reads: all 48, weights 0 outside the window"
          : "census rows a lane reads: the window's 31");
   p("BLOCK", kBlock, "output block 18x18");

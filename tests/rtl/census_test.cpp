@@ -152,21 +152,21 @@ class CensusBench {
     auto& t = *top_;
     // ASIC target: WINDOW rows from rd_row; FPGA target: the whole column, whatever
     // rd_row says (driven with a value that changes with the column).
-    for (int row = 0; row + sim::kVertTaps <= kRows; ++row) {
+    for (int row = 0; row + kVertTaps <= kRows; ++row) {
       for (int col = 0; col + kReadLanes<V> <= cols_; ++col) {
         t.rd_en_i = 1;
         t.rd_bank_i = bank;
-        t.rd_row_i = sim::kFpga ? (7 * col + bank) % (kRows - kWindow + 1) : row;
+        t.rd_row_i = kFpga ? (7 * col + bank) % (kRows - kWindow + 1) : row;
         t.rd_col_i = col;
         tick();
         t.rd_en_i = 0;
         for (int l = 0; l < kReadLanes<V>; ++l)
-          for (int k = 0; k < sim::kVertTaps; ++k) {
+          for (int k = 0; k < kVertTaps; ++k) {
             const int x = clamp_coord(w.x0 + col + l, luma.width);
             const int y = clamp_coord(w.y0 + row + k, luma.height);
             const int want = census_code(luma, x, y);
             const int got =
-                int(get_bits(t.rd_data_o, (l * sim::kVertTaps + k) * kCensusBits, kCensusBits));
+                int(get_bits(t.rd_data_o, (l * kVertTaps + k) * kCensusBits, kCensusBits));
             ++*compared;
             if (got != want) {
               std::ostringstream o;

@@ -156,11 +156,11 @@ class CostAggBench {
     auto& t = *top_;
     // Lane tap t is census row t of the block on the FPGA target (weight 0 outside
     // the row's window), window tap t of the row on the ASIC target.
-    const auto tap_y = [&](int tp) { return s_.by - kRadius + (sim::kFpga ? tp : row + tp); };
+    const auto tap_y = [&](int tp) { return s_.by - kRadius + (kFpga ? tp : row + tp); };
     for (int j = 0; j < kLanes + P - 1; ++j) {
       const int x = s_.bx - kRadius + grp * kLanes + j - (P - 1);
-      for (int tp = 0; tp < sim::kVertTaps; ++tp) {
-        const int i = j * sim::kVertTaps + tp;
+      for (int tp = 0; tp < kVertTaps; ++tp) {
+        const int i = j * kVertTaps + tp;
         const int y = tap_y(tp);
         // Garbage on every read port when not reading: it must not matter.
         set_bits(t.cen_r_i, i * kCensusBits, kCensusBits,
@@ -169,8 +169,8 @@ class CostAggBench {
     }
     for (int l = 0; l < kLanes; ++l) {
       const int x = s_.bx - kRadius + grp * kLanes + l;
-      for (int tp = 0; tp < sim::kVertTaps; ++tp) {
-        const int i = l * sim::kVertTaps + tp;
+      for (int tp = 0; tp < kVertTaps; ++tp) {
+        const int i = l * kVertTaps + tp;
         const int y = tap_y(tp);
         const int k = sim::window_tap(tp, row);
         set_bits(t.cen_l_i, i * kCensusBits, kCensusBits,

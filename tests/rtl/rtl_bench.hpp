@@ -14,16 +14,8 @@
 
 namespace mcadsw::sim {
 
-#ifndef MCADSW_FPGA
-#define MCADSW_FPGA 0
-#endif
-// Codes and weights a census lane carries between the buffers and the vertical
-// aggregator (mcadsw_pkg::VTAPS, docs/architecture.md 3.11): the window's 31 rows on the
-// ASIC target; all 48 rows of the census column on the FPGA target, the weights of the
-// rows outside the window 0.
-inline constexpr bool kFpga = MCADSW_FPGA != 0;
-inline constexpr int kVertTaps = kFpga ? kBlockCols : kWindow;
-// The window tap (0 .. WINDOW-1) of lane tap t for block row `row`, or -1 (weight 0).
+// The window tap (0 .. WINDOW-1) of lane tap t (kVertTaps of them, params.hpp) for
+// block row `row`, or -1 (weight 0 on the FPGA target).
 inline int window_tap(int t, int row) {
   if (!kFpga) return t;
   return (t >= row && t < row + kWindow) ? t - row : -1;

@@ -205,10 +205,10 @@ class WeightGenBench {
     for (int l = 0; l < kLanes; ++l) {
       const int x = clamp_coord(b.bx - kRadius + a.v * kLanes + l, r.img.width());
       // Lane tap t is window tap k (FPGA target: t is the census row, 0 outside the window).
-      for (int t = 0; t < sim::kVertTaps; ++t) {
+      for (int t = 0; t < kVertTaps; ++t) {
         const int k = sim::window_tap(t, a.row);
         const int want = k < 0 ? 0 : weight_code(ref_.v(k, x, y));
-        const int got = int(get_bits(top_->wv_o, (l * sim::kVertTaps + t) * kWeightCodeBits, kWeightCodeBits));
+        const int got = int(get_bits(top_->wv_o, (l * kVertTaps + t) * kWeightCodeBits, kWeightCodeBits));
         ++st->compared;
         if (got != want) {
           std::ostringstream o;
