@@ -24,6 +24,7 @@ the per-block figures of docs/results.md.
 """
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
@@ -48,10 +49,17 @@ def tool(name):
     return str(p)
 
 
+def wasm_path(p, out):
+    """P as the WebAssembly tools running in OUT can open it: relative to OUT. (yowasp's
+    runtime maps the host's folders below / one by one but its own scratch folder over
+    /tmp, so an absolute path below /tmp, a checkout or a build there, is not found;
+    relative paths go through its mapping of the working folder and its parents.)"""
+    return os.path.relpath(Path(p).resolve(), out)
+
+
 def run_step(run, name, cmd, out, log_name):
     """Runs one tool in OUT, its output into OUT/LOG_NAME; returns (exit code, peak MB,
-    seconds). The WebAssembly tools write only below their working folder (absolute output
-    paths elsewhere fail to open; inputs are read anywhere): outputs are named relative to OUT."""
+    seconds). Every path the command names is relative to OUT (wasm_path)."""
     rc, mb, secs = run.run(cmd, out_path=out / log_name, err_path=out / log_name.replace(".log", ".err"),
                            cwd=str(out))
     log(f"{name}: exit {rc}, {secs} s, peak {mb} MB (log {out / log_name})")
@@ -62,9 +70,9 @@ def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
     """synth_ecp5 of TOP from FILES into OUT/netlist.json (and OUT/stat.txt). PARAMS: top
     parameters to set. Returns the step's figures."""
     out.mkdir(parents=True, exist_ok=True)
-    inc = f" -I{include}" if include else ""
+    inc = f" -I{wasm_path(include, out)}" if include else ""
     dfs = "".join(f" -D{d}" for d in defines)
-    lines = [f"read_verilog -sv{dfs}{inc} " + " ".join(str(f) for f in files),
+    lines = [f"read_verilog -sv{dfs}{inc} " + " ".join(wasm_path(f, out) for f in files),
              # Parameters set by hierarchy itself: a chparam after it leaves the
              # submodules derived for the defaults unresolved.
              f"hierarchy -check -top {top}" + "".join(f" -chparam {k} {v}" for k, v in (params or {}).items())]
@@ -92,7 +100,7 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1):
            "--report", "nextpnr-report.json", "--textcfg", "design.config",
            "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
     if lpf:
-        cmd += ["--lpf", str(lpf)]
+        cmd += ["--lpf", wasm_path(lpf, out)]
     run = Run()
     try:
         rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log")
@@ -185,9 +193,7 @@ def block(a):
         params[k] = v
     pkg = out / "mcadsw_pkg.sv"
     pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, a.fpga))
-    # The package by its name in the step's folder (the tool's working folder): the
-    # WebAssembly tools do not open every absolute path (one below /tmp was not found).
-    files = [Path(pkg.name)] + [ROOT / "rtl" / f for f in rtl_list(no_pkg=True)]
+    files = [pkg] + [ROOT / "rtl" / f for f in rtl_list(no_pkg=True)]
     target = "FPGA" if a.fpga else "ASIC"
     log(f"synth_ecp5 of {a.top} ({target} target, DMAX {a.dmax}, PAR {a.par}"
         + "".join(f", {k} = {v}" for k, v in params.items()) + f") into {out}")
