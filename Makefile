@@ -113,12 +113,24 @@ power: gen-rtl-pkg
 	@python3 flow/power.py $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --build $(abspath $(BUILD_DIR)) \
 	  --gen-rtl-pkg $(GEN_RTL_PKG)
 
-## fpga: Yosys synth_xilinx (7-series) LUT / FF / BRAM / DSP of mcadsw_top, fit against XC7Z020
-##   and XC7A100T (build/fpga/summary.json; TOP=mcadsw_regs a quick check, in build/fpga_<module>)
+## fpga: the FPGA target of the SoC: ECP5 synth_ecp5 in the ULX3S shell, cells by block, place and route
+##   and bitstream (nextpnr-ecp5, ecppack) when it fits; XC7Z020 estimate (Yosys synth_xilinx); bars and
+##   frames a second from make sim FPGA=1 (build/fpga/summary.json, report.md; DMAX= PAR= as make synth;
+##   TOP=mcadsw_regs a quick 7-series check, in build/fpga_<module>)
+FPGA_ROOT := $(abspath $(BUILD_DIR))/$(if $(filter-out 64_1,$(or $(DMAX),64)_$(or $(PAR),1)),fpga_dmax$(or $(DMAX),64)_par$(or $(PAR),1),fpga)
+FPGA_SIM  := $(abspath $(BUILD_DIR))/dmax$(or $(DMAX),64)_par$(or $(PAR),1)_fpga/sim/summary.json
 fpga: gen-rtl-pkg
+ifneq ($(TOP),)
 	@python3 flow/synth.py fpga $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) \
-	  $(if $(TOP),--top $(TOP) --out $(abspath $(BUILD_DIR))/fpga_$(TOP)) \
-	  --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
+	  --top $(TOP) --out $(abspath $(BUILD_DIR))/fpga_$(TOP) --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
+else
+	@rc=0; python3 flow/ecp5.py soc --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5 \
+	  --gen-rtl-pkg $(GEN_RTL_PKG) || rc=$$?; [ $$rc -le 1 ] || exit $$rc; \
+	 python3 flow/synth.py fpga $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --out $(FPGA_ROOT)/xc7 \
+	  --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG) || exit $$?; \
+	 [ -f $(FPGA_SIM) ] || echo "fpga: no $(FPGA_SIM): frames a second need make sim FPGA=1 $(if $(DMAX),DMAX=$(DMAX)) $(if $(PAR),PAR=$(PAR))"; \
+	 python3 flow/fpga.py report --root $(FPGA_ROOT) --sim $(FPGA_SIM)
+endif
 
 ## gls: the synthesised netlist in the Verilator harness against the RTL (FRAME=1 also a Tsukuba frame)
 gls: gen-rtl-pkg

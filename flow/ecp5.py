@@ -11,6 +11,7 @@ configuration and the bitstream, and the logs.
     python3 flow/ecp5.py smoke --out DIR
     python3 flow/ecp5.py check REPORT.json
     python3 flow/ecp5.py block --top MODULE [--param NAME=VALUE ...] [--fpga] --out DIR
+    python3 flow/ecp5.py soc [--dmax N] [--par P] [--asic] --out DIR     (make fpga)
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -21,10 +22,19 @@ the same way (used by the smoke run, and by a negative test on a hand-written re
 `block` synthesises one module of rtl/mcadsw.f (with its submodules) for ECP5 with the
 package of the ASIC or (--fpga) the FPGA target, and lists its cells (DIR/cells.json):
 the per-block figures of docs/results.md.
+`soc` is the ECP5 half of make fpga: the SoC top (mcadsw_top: registers, AXI4 master,
+engine with its LR post stage and rectifier) of the FPGA target inside the ULX3S board
+shell (rtl/board/mcadsw_ulx3s.sv, pins constraints/ulx3s.lpf), synthesised flat (as
+placed); its cells with a source line are listed by RTL module from the netlist itself
+(DIR/blocks.json, cells_by_module; a module without cells is an error: optimised away). When the cells fit
+the 85k part it is placed and routed (DIR/nextpnr-report.json) and packed; when they do
+not, place and route is not attempted and the summary says by how much each resource is
+over. DIR/summary.json has the figures and each step's time and peak memory.
 """
 import argparse
 import json
 import os
+import re
 import sys
 import time
 from pathlib import Path
@@ -66,17 +76,22 @@ def run_step(run, name, cmd, out, log_name):
     return rc, mb, secs
 
 
-def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
+def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None, flatten=True):
     """synth_ecp5 of TOP from FILES into OUT/netlist.json (and OUT/stat.txt). PARAMS: top
-    parameters to set. Returns the step's figures."""
+    parameters to set. FLATTEN False keeps the hierarchy (-noflatten): each module is
+    mapped on its own and `stat` counts the cells of each; nextpnr flattens it on import.
+    Returns the step's figures."""
     out.mkdir(parents=True, exist_ok=True)
     inc = f" -I{wasm_path(include, out)}" if include else ""
     dfs = "".join(f" -D{d}" for d in defines)
     lines = [f"read_verilog -sv{dfs}{inc} " + " ".join(wasm_path(f, out) for f in files),
+             # The ECP5 primitives a board shell instantiates (EHXPLLL), as synth_ecp5 reads them.
+             "read_verilog -lib -specify +/ecp5/cells_sim.v +/ecp5/cells_bb.v",
              # Parameters set by hierarchy itself: a chparam after it leaves the
              # submodules derived for the defaults unresolved.
              f"hierarchy -check -top {top}" + "".join(f" -chparam {k} {v}" for k, v in (params or {}).items())]
-    lines += [f"synth_ecp5 -top {top} -json netlist.json", "tee -q -o stat.txt stat"]
+    lines += [f"synth_ecp5 -top {top}{'' if flatten else ' -noflatten'} -json netlist.json",
+              "tee -q -o stat.txt stat"]
     (out / "synth.ys").write_text("# Written by flow/ecp5.py\n" + "\n".join(lines) + "\n")
     run = Run()
     try:
@@ -206,6 +221,97 @@ def block(a):
     return 0
 
 
+# ECP5-85 (LFE5U-85F) capacities, as nextpnr-ecp5 reports them (TRELLIS_COMB: LUT4 sites).
+DEVICE = {"TRELLIS_COMB": 83640, "TRELLIS_FF": 83640, "DP16KD": 208, "MULT18X18D": 156}
+PRIMS = ("LUT4", "CCU2C", "PFUMX", "L6MUX21", "TRELLIS_DPR16X4", "TRELLIS_FF", "DP16KD", "MULT18X18D")
+
+
+def comb_sites(c):
+    """LUT4 sites (nextpnr's TRELLIS_COMB) cells take: a LUT4 one, a CCU2C (two LUTs and
+    their carry) two, a TRELLIS_DPR16X4 four for its storage and two for its write port
+    (the third slice of the three a 16 x 4 RAM takes)."""
+    return c.get("LUT4", 0) + 2 * c.get("CCU2C", 0) + 6 * c.get("TRELLIS_DPR16X4", 0)
+
+
+def cells_by_module(netlist):
+    """The cells of a flattened netlist by the RTL module they come from: {module file
+    (relative to rtl/, without .sv): {primitive: count}}, read from each cell's source
+    attribute. Flip-flops, carry chains, RAMs and multipliers keep the RTL line that made
+    them; the LUTs of ABC's mapping keep none and are not counted here (flow/ecp5.py block
+    gives a block's LUT4 on its own). Also the instances: Yosys's $scopeinfo cells, one a
+    flattened instance, kept even when all its logic is gone."""
+    mods = json.loads(Path(netlist).read_text())["modules"]
+    top = next(k for k, v in mods.items() if v.get("attributes", {}).get("top"))
+    by_mod, insts = {}, []
+    for n, c in mods[top]["cells"].items():
+        if c["type"] == "$scopeinfo":
+            insts.append(n)
+            continue
+        if c["type"].startswith("$"):
+            continue
+        files = set(re.findall(r"rtl/([\w/]+)\.sv", c["attributes"].get("src", "")))
+        for f in files:
+            by_mod.setdefault(f, {})
+            by_mod[f][c["type"]] = by_mod[f].get(c["type"], 0) + 1
+    return by_mod, sorted(insts)
+
+
+def soc(a):
+    out = Path(a.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    for f in ("netlist.json", "nextpnr-report.json", "design.config", "design.bit", "summary.json", "blocks.json"):
+        (out / f).unlink(missing_ok=True)
+    t0 = time.time()
+    fpga = not a.asic
+    pkg = out / "mcadsw_pkg.sv"
+    pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, fpga))
+    rtl = ROOT / "rtl"
+    files = [pkg] + [rtl / f for f in rtl_list(no_pkg=True)] + [rtl / "board" / "mcadsw_ulx3s.sv"]
+    target = "FPGA" if fpga else "ASIC"
+    log(f"synth_ecp5 of the SoC in the ULX3S shell ({target} target, DMAX {a.dmax}, PAR {a.par}) into {out}"
+        " (the whole SoC: about 15 minutes, 4 GB)")
+    s = synth(files, "mcadsw_ulx3s", out, include=rtl)
+    total = stat_cells(out / "stat.txt")
+    by_mod, insts = cells_by_module(out / "netlist.json")
+    # Every module of rtl/mcadsw.f (packages aside) and the shell must have cells of its own.
+    expect = [f[:-3] for f in rtl_list(no_pkg=True) if not f.endswith("_pkg.sv")] + ["board/mcadsw_ulx3s"]
+    blocks = {"instances": insts,
+              "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in PRIMS} for m in expect}}
+    (out / "blocks.json").write_text(json.dumps(blocks, indent=1) + "\n")
+    empty = [m for m in expect if not by_mod.get(m)]
+    need = {"TRELLIS_COMB": comb_sites(total), "TRELLIS_FF": total.get("TRELLIS_FF", 0),
+            "DP16KD": total.get("DP16KD", 0), "MULT18X18D": total.get("MULT18X18D", 0)}
+    over = {k: v for k, v in need.items() if v > DEVICE[k]}
+    log(f"{len(insts)} instances; cells with a source line, by module: "
+        + ", ".join(f"{m.split('/')[-1]} {sum(c.values())}" for m, c in blocks["cells_by_module"].items()))
+    summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
+               "par": int(a.par), "board": a.board, "freq_mhz": a.freq,
+               "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
+               "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_blocks": empty,
+               "synth": s, "place_route": None, "problems": []}
+    if empty:
+        summary["problems"].append("modules without cells (optimised away): " + ", ".join(empty))
+    if over:
+        summary["problems"].append("does not fit the " + BOARDS[a.board]["name"] + ": "
+                                   + ", ".join(f"{k} {need[k]} of {DEVICE[k]} ({v:.2f}x)"
+                                               for k, v in summary["over"].items())
+                                   + "; place and route not attempted")
+    else:
+        log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} (clock from constraints/ulx3s.lpf and the PLL)")
+        p = place_route(out, a.board, a.freq, lpf=ROOT / "constraints" / "ulx3s.lpf")
+        util, fmax, problems = check_report(out / "nextpnr-report.json")
+        summary["place_route"] = p
+        summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
+        summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()}
+        summary["problems"] += problems
+    summary["wall_seconds"] = int(time.time() - t0)
+    (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    for pr in summary["problems"]:
+        log(f"FAILED: {pr}")
+    log(f"summary {out / 'summary.json'}, blocks {out / 'blocks.json'}; {summary['wall_seconds']} s")
+    return 1 if summary["problems"] else 0
+
+
 def check(a):
     util, fmax, problems = check_report(a.report)
     for k, (u, av) in sorted(util.items()):
@@ -238,9 +344,20 @@ def main(argv):
     bl.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
                     help="the package generator (default build/bin/gen_rtl_pkg)")
     bl.add_argument("--out", required=True, help="output folder")
+    so = sub.add_parser("soc", help="the SoC in the ULX3S shell: synth_ecp5, cells by block, place and route "
+                        "when it fits (make fpga)")
+    so.add_argument("--asic", action="store_true", help="the ASIC target's package (default: the FPGA target's)")
+    so.add_argument("--dmax", default="64")
+    so.add_argument("--par", default="1")
+    so.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
+    so.add_argument("--freq", type=float, default=75.0,
+                    help="nextpnr's constraint for clocks without one (the lpf and the PLL give the engine's)")
+    so.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
+                    help="the package generator (default build/bin/gen_rtl_pkg)")
+    so.add_argument("--out", required=True, help="output folder")
     a = ap.parse_args(argv)
     try:
-        return {"smoke": smoke, "check": check, "block": block}[a.cmd](a)
+        return {"smoke": smoke, "check": check, "block": block, "soc": soc}[a.cmd](a)
     except FlowError as e:
         log(str(e))
         return e.code

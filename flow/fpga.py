@@ -1,8 +1,10 @@
 # SPDX-FileCopyrightText: 2026 The mcadsw authors
 # SPDX-License-Identifier: Apache-2.0
 
-"""make fpga: an FPGA estimate of the design by Yosys synth_xilinx (flow/fpga.tcl),
-run by flow/synth.py fpga."""
+"""make fpga: the Xilinx 7-series estimate of the design by Yosys synth_xilinx
+(flow/fpga.tcl), run by flow/synth.py fpga; and the report of both devices
+(python3 flow/fpga.py report: the ECP5 place and route of flow/ecp5.py soc beside the
+7-series estimate, frames a second from make sim's cycles)."""
 import json
 import re
 import shutil
@@ -22,9 +24,9 @@ def fpga(a):
     if a.out:
         for f in ("summary.json", "report.md"):
             (Path(a.out) / f).unlink(missing_ok=True)
-    pkg_text = gen_package(a.gen_rtl_pkg, a.dmax, a.par)
-    name = "fpga" if (a.dmax, a.par) == ("64", "1") else f"fpga_dmax{a.dmax}_par{a.par}"
-    out = Path(a.out or Path(a.build) / name).resolve()
+    fpga_target = not a.asic
+    pkg_text = gen_package(a.gen_rtl_pkg, a.dmax, a.par, fpga_target)
+    out = Path(a.out or fpga_root(a.build, a.dmax, a.par) / ("xc7" if fpga_target else "xc7_asic")).resolve()
     (out / "rtl").mkdir(parents=True, exist_ok=True)
     for f in ("summary.json", "report.md"):
         (out / f).unlink(missing_ok=True)
@@ -33,11 +35,12 @@ def fpga(a):
     pkg = out / "rtl" / "mcadsw_pkg.sv"
     pkg.write_text(pkg_text)
     rtl = Path(a.rtl).resolve()
-    log(f"synth_xilinx -family xc7 of {a.top} (DMAX={a.dmax}, PAR={a.par}); log {out}/yosys.log")
+    target = "FPGA" if fpga_target else "ASIC"
+    log(f"synth_xilinx -family xc7 of {a.top} ({target} target, DMAX={a.dmax}, PAR={a.par}); log {out}/yosys.log")
     t0 = time.time()
     run = Run()
     try:
-        rc, _, _ = run.run([a.yosys, "-q", "-l", str(out / "yosys.log"), "-c", str(FLOW / "fpga.tcl")],
+        rc, peak_mb, _ = run.run([a.yosys, "-q", "-l", str(out / "yosys.log"), "-c", str(FLOW / "fpga.tcl")],
                            err_path=out / "yosys.err",
                            env={"PKG": str(pkg), "TOP": a.top, "OUT_DIR": str(out), "RTL_DIR": str(rtl),
                                 "RTL_MODULES": " ".join(str(rtl / f) for f in rtl_list(no_pkg=True))})
@@ -77,12 +80,12 @@ def fpga(a):
         fits[dev] = {"fits": lut <= cl and ff <= cf and bram <= cb and dsp <= cd,
                      "use": f"{100 * lut / cl:.0f} % LUT, {100 * ff / cf:.0f} % FF, {100 * bram / cb:.0f} % BRAM, "
                             f"{100 * dsp / cd:.0f} % DSP"}
-    summary = {"top": a.top, "dmax": int(a.dmax), "par": int(a.par), "family": "xc7", "lut": lut,
+    summary = {"top": a.top, "target": target, "dmax": int(a.dmax), "par": int(a.par), "family": "xc7", "lut": lut,
                "lut_logic": lut_logic, "lut_memory": lut_mem, "ff": ff, "bram36_equivalent": bram,
-               "ramb36e1": bram36, "ramb18e1": bram18, "dsp48e1": dsp, "carry4": carry, "yosys_seconds": secs,
+               "ramb36e1": bram36, "ramb18e1": bram18, "dsp48e1": dsp, "carry4": carry, "yosys_seconds": secs, "peak_MB": peak_mb,
                **fits}
-    report = [f"# FPGA estimate (`make fpga`, {a.top}, DMAX = {a.dmax}, PAR = {a.par})", "",
-              f"Yosys `synth_xilinx -family xc7` ({secs} s); no place and route, so no clock figure.", "",
+    report = [f"# FPGA estimate (`make fpga`, {a.top}, {target} target, DMAX = {a.dmax}, PAR = {a.par})", "",
+              f"Yosys `synth_xilinx -family xc7` ({secs} s, peak {peak_mb} MB); no place and route, so no clock figure.", "",
               "| resource | count |", "|---|---|",
               f"| LUTs (logic + memory / shift registers) | {lut} ({lut_logic} + {lut_mem}) |",
               f"| flip-flops | {ff} |", f"| block RAM (36 Kb equivalents) | {bram} ({bram36} RAMB36E1, {bram18} RAMB18E1) |",
@@ -93,3 +96,124 @@ def fpga(a):
     print("\n".join(report))
     log(f"summary {out}/summary.json")
 
+
+
+def fpga_root(build, dmax, par):
+    """The folder of make fpga's figures of a configuration: BUILD/fpga (DMAX 64, PAR 1),
+    BUILD/fpga_dmax<N>_par<P> otherwise; ecp5/ and xc7/ below it."""
+    return Path(build) / ("fpga" if (str(dmax), str(par)) == ("64", "1") else f"fpga_dmax{dmax}_par{par}")
+
+
+# The bars of the FPGA configuration: ECP5-85 placed and routed, 30 frames a second of
+# CIF D = 64 raw; XC7Z020 by estimate.
+FPS_BAR = 30
+XC7Z020 = {"lut": ("LUTs (logic + memory)", 53200), "bram36_equivalent": ("BRAM36", 140),
+           "dsp48e1": ("DSP48E1", 220)}
+
+
+def cif_cycles(sim_summary):
+    """(raw, LR) cycles of CIF D = 64 from a make sim summary (the largest of the cases
+    of each kind: plain disparity output of the left view, and with LR checking; with the
+    zero-latency memory model, no stall cycles, as the engine's budget counts them)."""
+    raw = lr = None
+    for c in json.loads(Path(sim_summary).read_text()):
+        if (c.get("width"), c.get("height"), c.get("disparities")) != (352, 288, 64) or c.get("rect") \
+                or c.get("subpixel") or c.get("tiled") or c.get("right") or c.get("mismatches") \
+                or c.get("stall_cycles"):
+            continue
+        if c.get("lr"):
+            lr = max(lr or 0, c["cycles"])
+        else:
+            raw = max(raw or 0, c["cycles"])
+    return raw, lr
+
+
+def report(root, sim_summary):
+    """ROOT/summary.json and report.md from ROOT/ecp5/summary.json (flow/ecp5.py soc),
+    ROOT/xc7/summary.json (flow/synth.py fpga) and make sim's cycles; exit 1 when a bar
+    is not met, 2 when a step's figures are missing."""
+    root = Path(root)
+    for f in ("summary.json", "report.md"):
+        (root / f).unlink(missing_ok=True)
+    try:
+        e = json.loads((root / "ecp5" / "summary.json").read_text())
+        x = json.loads((root / "xc7" / "summary.json").read_text())
+    except (OSError, ValueError) as err:
+        raise FlowError(f"missing figures of a step ({err}): run make fpga", 2)
+    raw = lr = None
+    if sim_summary and Path(sim_summary).is_file():
+        raw, lr = cif_cycles(sim_summary)
+    fmax = min((v["achieved"] for v in (e.get("fmax_mhz") or {}).values()), default=None)
+    need_mhz = FPS_BAR * raw / 1e6 if raw else None
+    bars = []
+    for k, v in e["need"].items():
+        if k != "TRELLIS_FF":
+            bars.append((f"ECP5 {k}", f"{v['used']} of {v['available']}", v["used"] <= v["available"]))
+    if e.get("utilization"):
+        for k, v in e["utilization"].items():
+            if k in ("TRELLIS_COMB", "DP16KD", "MULT18X18D"):
+                bars.append((f"ECP5 {k} (nextpnr)", f"{v['used']} of {v['available']}", v["used"] <= v["available"]))
+    bars.append(("ECP5 placed and routed", "yes" if e.get("place_route") else "no (does not fit)",
+                 bool(e.get("place_route"))))
+    if need_mhz:
+        bars.append((f"ECP5 Fmax >= {FPS_BAR} x {raw} cycles = {need_mhz:.1f} MHz",
+                     f"{fmax:.1f} MHz" if fmax else "not placed", bool(fmax and fmax >= need_mhz)))
+    else:
+        bars.append(("CIF D = 64 raw cycles (make sim FPGA=1)", "missing", False))
+    for k, (name, cap) in XC7Z020.items():
+        bars.append((f"XC7Z020 {name} (estimate)", f"{x[k]} of {cap}", x[k] <= cap))
+    fps = {}
+    for name, cyc in (("raw", raw), ("lr", lr)):
+        if cyc and fmax:
+            fps[name] = round(fmax * 1e6 / cyc, 1)
+    summary = {"dmax": e["dmax"], "par": e["par"], "target": e["target"],
+               "cif_d64_cycles": {"raw": raw, "lr": lr}, "ecp5": e, "xc7z020": x,
+               "fmax_mhz": fmax, "fps_cif_d64": fps, "fmax_needed_mhz": need_mhz and round(need_mhz, 2),
+               "steps": {"ecp5_synth": e["synth"], "ecp5_place_route": e.get("place_route"),
+                         "xc7_synth": {"seconds": x.get("yosys_seconds"), "peak_MB": x.get("peak_MB")}},
+               "bars": [{"bar": b, "value": v, "met": ok} for b, v, ok in bars]}
+    (root / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+    md = [f"# make fpga: {e['target']} target, DMAX = {e['dmax']}, PAR = {e['par']}", "",
+          "## Bars", "", "| bar | value | met |", "|---|---|---|"]
+    md += [f"| {b} | {v} | {'yes' if ok else '**no**'} |" for b, v, ok in bars]
+    md += ["", f"## ECP5 ({e['board']}): the SoC's cells by RTL module", "",
+           "From the flattened netlist, each cell by the source line it keeps (flip-flops, carry",
+           "chains, multipliers; ABC's LUTs and the RAMs keep none: `flow/ecp5.py block` gives a",
+           "block's LUT4 and RAMs on its own). Every module has cells: none was optimised away.", "",
+           "| module | TRELLIS_FF | CCU2C | MULT18X18D |", "|---|---|---|---|"]
+    blocks = json.loads((root / "ecp5" / "blocks.json").read_text())
+    for m, c in blocks["cells_by_module"].items():
+        md.append(f"| {m} | {c['TRELLIS_FF']} | {c['CCU2C']} | {c['MULT18X18D']} |")
+    md += ["", f"{len(blocks['instances'])} instances (Yosys $scopeinfo): " + ", ".join(blocks["instances"]) + "."]
+    md += ["", "ECP5 TRELLIS_COMB before place and route: LUT4 + 2 CCU2C + 6 TRELLIS_DPR16X4 (LUT4 sites).", "",
+           "## Steps", "", "| step | seconds | peak MB |", "|---|---|---|"]
+    for k, v in summary["steps"].items():
+        if v:
+            md.append(f"| {k} | {v.get('seconds')} | {v.get('peak_MB')} |")
+    if e.get("problems"):
+        md += ["", "## Problems", ""] + [f"- {p}" for p in e["problems"]]
+    (root / "report.md").write_text("\n".join(md) + "\n")
+    print("\n".join(md[:len(bars) + 6]))
+    log(f"summary {root / 'summary.json'}, report {root / 'report.md'}")
+    return 0 if all(ok for _, _, ok in bars) else 1
+
+
+def main(argv):
+    import argparse
+    from flowlib import PREFIX
+    PREFIX[0] = "fpga"
+    ap = argparse.ArgumentParser(description="make fpga's report of both devices")
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    r = sub.add_parser("report", help="ROOT/summary.json and report.md; exit 1 if a bar is not met")
+    r.add_argument("--root", required=True, help="make fpga's folder (build/fpga)")
+    r.add_argument("--sim", help="make sim FPGA=1's summary.json (CIF D = 64 cycles)")
+    a = ap.parse_args(argv)
+    try:
+        return report(a.root, a.sim)
+    except FlowError as err:
+        log(str(err))
+        return err.code
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -373,6 +373,8 @@ def main():
                             "(flow/clock_gate.py; default 4; 0: no gating, output BUILD/synth_ungated...)")
         if name == "fpga":
             p.add_argument("--top", default="mcadsw_top", help="another module (mcadsw_regs: a quick check)")
+            p.add_argument("--asic", action="store_true",
+                           help="the ASIC target's package (default: the FPGA target's, mcadsw_pkg::FPGA)")
         if name == "check":
             p.add_argument("--summary", help="check this summary only (no synthesis)")
             p.add_argument("--budget", default=str(CON / "budget.json"))

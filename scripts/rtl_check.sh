@@ -7,6 +7,9 @@
 #   scripts/rtl_check.sh yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
 #   scripts/rtl_check.sh iverilog  Icarus Verilog 11, -g2012
 #   scripts/rtl_check.sh all       the three
+#   scripts/rtl_check.sh board     verilator --lint-only -Wall of the board shells
+#                                  (rtl/board/*.sv, each with the SoC under it; the ECP5
+#                                  primitives they instantiate from tests/fpga/ecp5_cells_stub.sv)
 # A second argument, a package file, replaces rtl/mcadsw_pkg.sv: another
 # configuration's (the FPGA target's, build/rtl/fpga/mcadsw_pkg.sv, elaborates the
 # branches the default package leaves out).
@@ -110,10 +113,23 @@ run_iverilog() {
   echo "rtl_check: iverilog -g2012 compiles ${#files[@]} files$what"
 }
 
+run_board() {
+  local n=0 f out
+  for f in board/*.sv; do
+    out=$(verilator --lint-only -Wall --assert -I. "${waivers[@]}" "${files[@]}" "$f" \
+          "$root/tests/fpga/ecp5_cells_stub.sv" --top-module "$(basename "${f%.sv}")" 2>&1) || {
+      echo "$out"; echo "rtl_check: verilator lint FAILED for $f" >&2; return 1; }
+    if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
+    n=$((n + 1))
+  done
+  echo "rtl_check: verilator --lint-only -Wall clean on $n board shells$what"
+}
+
 case ${1:-all} in
   lint) run_lint ;;
   yosys) run_yosys ;;
   iverilog) run_iverilog ;;
+  board) run_board ;;
   all) run_lint; run_yosys; run_iverilog ;;
-  *) echo "usage: $0 lint|yosys|iverilog|all [PACKAGE]" >&2; exit 2 ;;
+  *) echo "usage: $0 lint|yosys|iverilog|board|all [PACKAGE]" >&2; exit 2 ;;
 esac
