@@ -58,9 +58,12 @@
 // RL copies of the ring, one a lane, each RING column words deep (block RAM:
 // deep and at most 288 bits wide, no sub-banks); a column is written into every
 // copy, lane l reads ring column rq + l of its own copy, so no lane multiplexer
-// follows the RAMs. A lane delivers all ROWS codes of its column (VT = ROWS) and
-// rd_row_i is not used: the weights of the rows outside the window are 0
-// (mcadsw_weight_gen), so no row shifter follows the RAMs either.
+// follows the RAMs. A lane's WINDOW codes are the window's rows in folded order
+// instead of a row shifter: tap k is column row k + WINDOW when k < rd_row_i,
+// row k otherwise (window row k - rd_row_i, or k + WINDOW - rd_row_i: every row of
+// the window once), a 2:1 select of the first ROWS - WINDOW taps. The weight
+// generator writes the vertical weights in the same order, and the aggregator's
+// sum does not depend on the order of its terms.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -74,7 +77,6 @@ module mcadsw_census #(
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),     // the FPGA target's buffer shape
-  parameter int VT     = FPGA ? ROWS : WINDOW,     // codes a lane delivers
   parameter int BANKS  = 2,
   parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
   parameter int LS     = 4,                        // luma ring strips (a power of 2)
@@ -110,7 +112,7 @@ module mcadsw_census #(
   input  logic [BB-1:0]              rd_bank_i,
   input  logic [YB-1:0]              rd_row_i,    // first of WINDOW rows (ASIC target)
   input  logic [XB-1:0]              rd_col_i,    // first of RL columns
-  output logic [RL*VT*CB-1:0]        rd_data_o    // lane l, row k at (l*VT + k)*CB
+  output logic [RL*WINDOW*CB-1:0]    rd_data_o    // lane l, tap k at (l*WINDOW + k)*CB
 );
 
   localparam int SUB    = 8;                       // luma sub-banks (columns)
@@ -127,7 +129,7 @@ module mcadsw_census #(
   if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
       RING % CSUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
       LDEPTH < 2 || RL < LANES || RL > CSUB || (1 << CSB) != CSUB ||
-      RL > COLS || VT != (FPGA ? ROWS : WINDOW)) begin : g_bad_param
+      RL > COLS || ROWS - WINDOW > WINDOW) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -375,16 +377,26 @@ module mcadsw_census #(
   end
 
   if (FPGA) begin : g_fpga_buf
-    // A copy of the ring a lane; lane l reads ring column rq + l (mod RING).
+    // A copy of the ring a lane; lane l reads ring column rq + l (mod RING), its
+    // taps in folded order (above).
     logic asic_unused;
-    assign asic_unused = ^{rd_row_q, lsel_q};
+    assign asic_unused = ^lsel_q;
     for (genvar l = 0; l < RL; l++) begin : g_lane
       (* ram_style = "block" *) logic [CWB-1:0] mem_q [RING];
-      logic [QB-1:0] ra;
+      logic [CWB-1:0] col_rd_q;
+      logic [QB-1:0]  ra;
       assign ra = QB'(wrap(32'(rq) + l, RING));
       always_ff @(posedge clk_i) begin
         if (col_valid_q) mem_q[wq] <= col_q;
-        if (rd_en_i) rd_data_o[l*VT*CB +: VT*CB] <= mem_q[ra];
+        if (rd_en_i) col_rd_q <= mem_q[ra];
+      end
+      for (genvar k = 0; k < WINDOW; k++) begin : g_tap
+        if (k < ROWS - WINDOW) begin : g_fold
+          assign rd_data_o[(l*WINDOW + k)*CB +: CB] =
+              (32'(rd_row_q) > k) ? col_rd_q[(k + WINDOW)*CB +: CB] : col_rd_q[k*CB +: CB];
+        end else begin : g_row
+          assign rd_data_o[(l*WINDOW + k)*CB +: CB] = col_rd_q[k*CB +: CB];
+        end
       end
     end
   end else begin : g_asic_buf

@@ -34,7 +34,6 @@ module mcadsw_cost_agg #(
   parameter int DMAX   = mcadsw_pkg::DMAX,
   parameter int BLOCK  = mcadsw_pkg::BLOCK,
   parameter int WINDOW = mcadsw_pkg::WINDOW,
-  parameter int VT     = mcadsw_pkg::VTAPS,      // codes and weights a census lane carries
   parameter int LANES  = mcadsw_pkg::LANES,
   parameter int HAGG   = mcadsw_pkg::HAGG,
   parameter int GROUPS = mcadsw_pkg::GROUPS,
@@ -65,9 +64,9 @@ module mcadsw_cost_agg #(
   output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
   output logic [DB-1:0]                 vrd_d_o,      // the step's first disparity
   output logic                          vrd_slot_o,   // weight row slot
-  input  logic [LANES*VT*CB-1:0]        cen_l_i,  // lane l, tap k at (l*VT + k)*CB
-  input  logic [(LANES+P-1)*VT*CB-1:0]  cen_r_i,  // right lanes, see above
-  input  logic [LANES*VT*WB-1:0]        wv_i,
+  input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
+  input  logic [(LANES+P-1)*WINDOW*CB-1:0] cen_r_i,  // right lanes, see above
+  input  logic [LANES*WINDOW*WB-1:0]    wv_i,
   // Horizontal weight buffer (data one cycle after address)
   output logic                          hrd_en_o,
   output logic [RB-1:0]                 hrd_row_o,
@@ -193,12 +192,12 @@ module mcadsw_cost_agg #(
 
   for (genvar p = 0; p < P; p++) begin : g_vert
     mcadsw_vert_agg #(
-      .LANES(LANES), .WINDOW(WINDOW), .TAPS(VT), .CB(CB), .WB(WB), .VB(VB)
+      .LANES(LANES), .WINDOW(WINDOW), .CB(CB), .WB(WB), .VB(VB)
     ) u_vert_agg (
       .clk_i, .rst_ni,
       .valid_i (v1_valid_q),
       .cen_l_i,
-      .cen_r_i (cen_r_i[(P-1-p)*VT*CB +: LANES*VT*CB]),
+      .cen_r_i (cen_r_i[(P-1-p)*WINDOW*CB +: LANES*WINDOW*CB]),
       .wv_i,
       .valid_o (ev_valid_p[p]),
       .ev_o    (ev[p*LANES*VB +: LANES*VB])

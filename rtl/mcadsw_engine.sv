@@ -90,7 +90,6 @@ module mcadsw_engine #(
   localparam int LANES  = mcadsw_pkg::LANES;
   localparam int HAGG   = mcadsw_pkg::HAGG;
   localparam int WINDOW = mcadsw_pkg::WINDOW;
-  localparam int VT     = mcadsw_pkg::VTAPS;    // codes and weights a census lane carries
   localparam int CB     = mcadsw_pkg::CENSUS_BITS;
   localparam int WB     = mcadsw_pkg::WEIGHT_CODE_BITS;
   localparam int DB     = mcadsw_pkg::DISP_BITS;
@@ -562,9 +561,9 @@ module mcadsw_engine #(
   logic [2:0]                 vrd_grp, hrd_grp;
   logic                       vrd_slot, hrd_slot, hrd_rel;
   logic [DB-1:0]              vrd_d;
-  logic [LANES*VT*CB-1:0]      cen_l;
-  logic [RLANES*VT*CB-1:0]     cen_r;   // see mcadsw_cost_agg: lane j at column - d + j - (PAR-1)
-  logic [LANES*VT*WB-1:0]      wv;
+  logic [LANES*WINDOW*CB-1:0]  cen_l;
+  logic [RLANES*WINDOW*CB-1:0] cen_r;   // see mcadsw_cost_agg: lane j at column - d + j - (PAR-1)
+  logic [LANES*WINDOW*WB-1:0] wv;
   logic [HAGG*WINDOW*WB-1:0]  wh;
 
   mcadsw_census #(.COLS(COLS)) u_census_l (

@@ -18,7 +18,6 @@ package mcadsw_pkg;
   localparam int DISP_BITS        = 6;  // disparity 0..DMAX-1
   localparam int PAR              = 1;  // disparities a step (1, 2, 4)
   localparam int FPGA             = 0;  // target: 0 the ASIC, 1 an FPGA (block-RAM shapes)
-  localparam int VTAPS            = 31;  // census rows a lane reads: the window's 31
   localparam int BLOCK            = 18;  // output block 18x18
   localparam int LANES            = 8;  // vertical aggregation lanes
   localparam int HAGG             = 3;  // horizontal aggregators

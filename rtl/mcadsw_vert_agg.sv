@@ -6,27 +6,22 @@
 // pixels of the column are computed in parallel, each is shifted by its one-hot
 // vertical weight (weight code e: 0 -> 0, e -> 2^(e-1), docs/algorithm.md) and
 // the WINDOW products are summed. One column group per cycle, result registered.
-// A lane carries TAPS codes and weights: the WINDOW of the column (ASIC target),
-// or all 48 rows of the census column with the weights of the rows outside the
-// window 0 (FPGA target, mcadsw_pkg::VTAPS; docs/architecture.md 3.11): at most
-// WINDOW products are non-zero, so the sum has the same bound.
 `default_nettype none
 
 module mcadsw_vert_agg #(
   parameter int LANES  = mcadsw_pkg::LANES,             // columns per cycle
   parameter int WINDOW = mcadsw_pkg::WINDOW,            // pixels per column
-  parameter int TAPS   = mcadsw_pkg::VTAPS,             // codes and weights a lane carries
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,       // census code width
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,  // weight code width
   parameter int VB     = mcadsw_pkg::VCOST_BITS         // vertical cost width
 ) (
   input  logic                      clk_i,
   input  logic                      rst_ni,
-  // One column group: lane l, tap k at index (l*TAPS + k)
+  // One column group: lane l, tap k at index (l*WINDOW + k)
   input  logic                      valid_i,
-  input  logic [LANES*TAPS*CB-1:0]  cen_l_i,  // left census codes
-  input  logic [LANES*TAPS*CB-1:0]  cen_r_i,  // right census codes at x - d
-  input  logic [LANES*TAPS*WB-1:0]  wv_i,     // vertical weight codes
+  input  logic [LANES*WINDOW*CB-1:0] cen_l_i,  // left census codes
+  input  logic [LANES*WINDOW*CB-1:0] cen_r_i,  // right census codes at x - d
+  input  logic [LANES*WINDOW*WB-1:0] wv_i,     // vertical weight codes
   // Vertical aggregated costs Ev of the group, one cycle later
   output logic                      valid_o,
   output logic [LANES*VB-1:0]       ev_o
@@ -35,9 +30,8 @@ module mcadsw_vert_agg #(
   localparam int CNTB = $clog2(CB + 1);  // Hamming distance width
 
   // Illegal parameters stop elaboration (an unknown module is the one check
-  // that Verilator, Yosys and Icarus all reject): the largest sum (WINDOW non-zero
-  // products) must fit VB.
-  if (WINDOW * CB * (1 << ((1 << WB) - 2)) >= (1 << VB) || TAPS < WINDOW) begin : g_bad_param
+  // that Verilator, Yosys and Icarus all reject): the largest sum must fit VB.
+  if (WINDOW * CB * (1 << ((1 << WB) - 2)) >= (1 << VB)) begin : g_bad_param
     mcadsw_error_vcost_width_too_narrow u_error ();
   end
 
@@ -68,10 +62,10 @@ module mcadsw_vert_agg #(
         for (int ln = 0; ln < LANES; ln++) begin : b_lane
           logic [VB-1:0] sum;
           sum = '0;
-          for (int k = 0; k < TAPS; k++)
-            sum = sum + weigh(hamming(cen_l_i[(ln*TAPS + k)*CB +: CB],
-                                      cen_r_i[(ln*TAPS + k)*CB +: CB]),
-                              wv_i[(ln*TAPS + k)*WB +: WB]);
+          for (int k = 0; k < WINDOW; k++)
+            sum = sum + weigh(hamming(cen_l_i[(ln*WINDOW + k)*CB +: CB],
+                                      cen_r_i[(ln*WINDOW + k)*CB +: CB]),
+                              wv_i[(ln*WINDOW + k)*WB +: WB]);
           ev_o[ln*VB +: VB] <= sum;
         end
       end

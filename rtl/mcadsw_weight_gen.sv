@@ -51,9 +51,9 @@
 // one block RAM a plane with a column an entry, and the kernel has ROWS distance
 // units that compare whole columns (vertical) or the whole centre row
 // (horizontal) with the centre, so neither pass selects a window of pixels. A
-// vertical entry holds VT = 48 codes, one for each row of the census column (the
-// census buffer delivers whole columns there): the codes of rows r .. r + WINDOW
-// - 1, code 0 (weight 0) at the others. Same values, same cycles.
+// vertical entry holds the window's WINDOW codes in the census buffer's folded
+// order (mcadsw_census): tap k is the code of column row k + WINDOW when k < r,
+// of row k otherwise. Same values, same cycles.
 //
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
@@ -73,7 +73,6 @@ module mcadsw_weight_gen #(
   parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
   parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),      // the FPGA target's buffer shapes
-  parameter int VT     = FPGA ? ROWS : WINDOW,      // codes of a vertical entry (31 or 48)
   parameter int WPR    = COLS / 4 + 1,              // strips a window (offset 0..3)
   parameter int NEW    = (BLOCK + 3) / 4,           // most strips a continuing block adds (5)
   parameter int RS     = WPR + NEW,                 // ring strips (18)
@@ -107,7 +106,7 @@ module mcadsw_weight_gen #(
   input  logic                       vrd_en_i,
   input  logic                       vrd_slot_i,
   input  logic [GB-1:0]              vrd_grp_i,
-  output logic [LANES*VT*WB-1:0]     wv_o,          // lane l, tap k at (l*VT + k)*WB
+  output logic [LANES*WINDOW*WB-1:0] wv_o,          // lane l, tap k at (l*WINDOW + k)*WB
   // Horizontal weight buffer read: HAGG output pixels of group hrd_grp_i of a slot
   input  logic                       hrd_en_i,
   input  logic                       hrd_slot_i,
@@ -123,7 +122,7 @@ module mcadsw_weight_gen #(
   if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
       COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
       HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4 ||
-      VT != (FPGA ? ROWS : WINDOW)) begin : g_bad_param
+      ROWS - WINDOW > WINDOW) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -469,7 +468,7 @@ module mcadsw_weight_gen #(
   // ---- Weight buffers: two row slots, one word per aggregator read -----------------
   // Vertical: word (slot, group of LANES columns); horizontal: word (slot, group
   // of HAGG pixels). Stage 2 writes one entry of a word a cycle.
-  localparam int VENTRY = VT * WB;           // one vertical entry
+  localparam int VENTRY = WINDOW * WB;       // one vertical entry
   logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
   logic [HAGG*ENTRY-1:0]  hbuf_q [2*HGRP];
   localparam int VAB = $clog2(2 * VGRP);
@@ -482,8 +481,9 @@ module mcadsw_weight_gen #(
   if (FPGA) begin : g_fpga_kernel
     // FPGA target: ROWS distance units compare all ROWS pixels of the column
     // (vertical) or of the centre row (horizontal) with the centre, so no window
-    // select precedes them. Vertical entry: the codes of rows r .. r + WINDOW - 1,
-    // code 0 at the other rows (VT = ROWS taps); horizontal entry: the codes of
+    // select precedes them. Vertical entry: the codes of rows r .. r + WINDOW - 1
+    // in folded order (tap k: row k + WINDOW when k < r, row k otherwise; a 2:1
+    // select of the first ROWS - WINDOW taps); horizontal entry: the codes of
     // columns x .. x + WINDOW - 1 (an 18:1 select of WINDOW codes).
     localparam int APW = ROWS * PW;
     logic [APW-1:0] k_px_q;                  // the ROWS pixels
@@ -513,8 +513,9 @@ module mcadsw_weight_gen #(
         logic [ROWS*WB-1:0] codes;           // one code a pixel
         logic [VENTRY-1:0]  ventry;
         for (int j = 0; j < ROWS; j++) codes[j*WB +: WB] = code_of(cdist(k_px_q[j*PW +: PW], k_ctr_q), thr_i);
-        for (int j = 0; j < ROWS; j++)
-          ventry[j*WB +: WB] = (j >= 32'(k_at_q) && j < 32'(k_at_q) + WINDOW) ? codes[j*WB +: WB] : '0;
+        ventry = codes[VENTRY-1:0];
+        for (int k = 0; k < ROWS - WINDOW; k++)
+          if (k < 32'(k_at_q)) ventry[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
         if (k_vert_q) vbuf_q[k_vaddr][32'(k_pos_q)*VENTRY +: VENTRY] <= ventry;
         else          hbuf_q[k_haddr][32'(k_pos_q)*ENTRY +: ENTRY] <= ENTRY'(codes >> (32'(k_at_q)*WB));
       end

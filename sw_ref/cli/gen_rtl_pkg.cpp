@@ -17,7 +17,7 @@
 // The one check of a configuration (CMake, make synth, make fpga call this):
 // DMAX an integer from 1 to 128, PAR 1, 2 or 4, DMAX a multiple of PAR; anything
 // else is a message on stderr and exit 2, nothing on stdout. Only DMAX, DISP_BITS,
-// PAR, FPGA and VTAPS of the package depend on the configuration.
+// PAR and FPGA of the package depend on the configuration.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -210,9 +210,6 @@ int main(int argc, char** argv) {
   p("DISP_BITS", bits_for(dmax - 1), "disparity 0..DMAX-1");
   p("PAR", par, "disparities a step (1, 2, 4)");
   p("FPGA", fpga ? 1 : 0, "target: 0 the ASIC, 1 an FPGA (block-RAM shapes)");
-  p("VTAPS", vert_taps(fpga),
-    fpga ? "census rows a lane reads: all 48, weights 0 outside the window"
-         : "census rows a lane reads: the window's 31");
   p("BLOCK", kBlock, "output block 18x18");
   p("LANES", kLanes, "vertical aggregation lanes");
   p("HAGG", kHorzAggregators, "horizontal aggregators");

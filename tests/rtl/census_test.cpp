@@ -8,7 +8,7 @@
 // images smaller than the window. The right view is built as the engine builds
 // it for P = 1, 2 and 4 disparities a step: 8, 9 and 11 columns a
 // read (8 and 16 census sub-banks; on the FPGA target, a copy of the buffer a lane,
-// each read delivering whole columns).
+// each read delivering the window's rows in folded order, sim::window_tap).
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -150,23 +150,20 @@ class CensusBench {
   // Reads every position of `bank` and compares it with the reference.
   std::string check(const Plane& luma, Window w, int bank, long* compared) {
     auto& t = *top_;
-    // ASIC target: WINDOW rows from rd_row; FPGA target: the whole column, whatever
-    // rd_row says (driven with a value that changes with the column).
-    for (int row = 0; row + kVertTaps <= kRows; ++row) {
+    for (int row = 0; row + kWindow <= kRows; ++row) {
       for (int col = 0; col + kReadLanes<V> <= cols_; ++col) {
         t.rd_en_i = 1;
         t.rd_bank_i = bank;
-        t.rd_row_i = kFpga ? (7 * col + bank) % (kRows - kWindow + 1) : row;
+        t.rd_row_i = row;
         t.rd_col_i = col;
         tick();
         t.rd_en_i = 0;
         for (int l = 0; l < kReadLanes<V>; ++l)
-          for (int k = 0; k < kVertTaps; ++k) {
+          for (int k = 0; k < kWindow; ++k) {
             const int x = clamp_coord(w.x0 + col + l, luma.width);
-            const int y = clamp_coord(w.y0 + row + k, luma.height);
+            const int y = clamp_coord(w.y0 + row + sim::window_tap(k, row), luma.height);
             const int want = census_code(luma, x, y);
-            const int got =
-                int(get_bits(t.rd_data_o, (l * kVertTaps + k) * kCensusBits, kCensusBits));
+            const int got = int(get_bits(t.rd_data_o, (l * kWindow + k) * kCensusBits, kCensusBits));
             ++*compared;
             if (got != want) {
               std::ostringstream o;

@@ -14,7 +14,7 @@ module cost_agg_tb #(
   parameter int DB  = mcadsw_pkg::DISP_BITS,
   parameter int NB  = $clog2(mcadsw_pkg::DMAX + 1),
   parameter int CLB = $clog2(mcadsw_pkg::GROUPS * mcadsw_pkg::LANES),
-  parameter int LW  = mcadsw_pkg::LANES * mcadsw_pkg::VTAPS,    // codes / weights of LANES columns
+  parameter int LW  = mcadsw_pkg::LANES * mcadsw_pkg::WINDOW,   // codes / weights of LANES columns
   parameter int HW  = mcadsw_pkg::HAGG * mcadsw_pkg::WINDOW
 ) (
   input  logic                           clk_i,
@@ -31,7 +31,7 @@ module cost_agg_tb #(
   output logic [DB-1:0]                  vrd_d_o,
   output logic                           vrd_slot_o,
   input  logic [LW*mcadsw_pkg::CENSUS_BITS-1:0] cen_l_i,
-  input  logic [(LW + (P - 1) * mcadsw_pkg::VTAPS)*mcadsw_pkg::CENSUS_BITS-1:0] cen_r_i,
+  input  logic [(LW + (P - 1) * mcadsw_pkg::WINDOW)*mcadsw_pkg::CENSUS_BITS-1:0] cen_r_i,
   input  logic [LW*mcadsw_pkg::WEIGHT_CODE_BITS-1:0] wv_i,
   output logic                           hrd_en_o,
   output logic [RB-1:0]                  hrd_row_o,

@@ -154,13 +154,13 @@ class CostAggBench {
   // is right lane l + P - 1 - p.
   void drive_vertical(bool en, int row, int grp, int d) {
     auto& t = *top_;
-    // Lane tap t is census row t of the block on the FPGA target (weight 0 outside
-    // the row's window), window tap t of the row on the ASIC target.
-    const auto tap_y = [&](int tp) { return s_.by - kRadius + (kFpga ? tp : row + tp); };
+    // Lane tap tp is window row sim::window_tap(tp, row): tp itself on the ASIC target,
+    // the census buffer's folded order on the FPGA target.
+    const auto tap_y = [&](int tp) { return s_.by + row - kRadius + sim::window_tap(tp, row); };
     for (int j = 0; j < kLanes + P - 1; ++j) {
       const int x = s_.bx - kRadius + grp * kLanes + j - (P - 1);
-      for (int tp = 0; tp < kVertTaps; ++tp) {
-        const int i = j * kVertTaps + tp;
+      for (int tp = 0; tp < kWindow; ++tp) {
+        const int i = j * kWindow + tp;
         const int y = tap_y(tp);
         // Garbage on every read port when not reading: it must not matter.
         set_bits(t.cen_r_i, i * kCensusBits, kCensusBits,
@@ -169,14 +169,14 @@ class CostAggBench {
     }
     for (int l = 0; l < kLanes; ++l) {
       const int x = s_.bx - kRadius + grp * kLanes + l;
-      for (int tp = 0; tp < kVertTaps; ++tp) {
-        const int i = l * kVertTaps + tp;
+      for (int tp = 0; tp < kWindow; ++tp) {
+        const int i = l * kWindow + tp;
         const int y = tap_y(tp);
         const int k = sim::window_tap(tp, row);
         set_bits(t.cen_l_i, i * kCensusBits, kCensusBits,
                  en ? ref_.census_left.at(cx(x), cy(y)) : (rng_() & 63));
         set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
-                 !en ? (rng_() & 7) : k < 0 ? 0 : weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))));
+                 en ? weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))) : (rng_() & 7));
       }
     }
   }

@@ -14,11 +14,12 @@
 
 namespace mcadsw::sim {
 
-// The window tap (0 .. WINDOW-1) of lane tap t (kVertTaps of them, params.hpp) for
-// block row `row`, or -1 (weight 0 on the FPGA target).
+// The window row (0 .. WINDOW-1) of lane tap t (0 .. WINDOW-1) for block row `row`:
+// tap t itself on the ASIC target; on the FPGA target the census buffer's folded
+// order (mcadsw_census): column row t + WINDOW when t < row, row t otherwise.
 inline int window_tap(int t, int row) {
   if (!kFpga) return t;
-  return (t >= row && t < row + kWindow) ? t - row : -1;
+  return t < row ? t + kWindow - row : t - row;
 }
 
 // Flip-flops without a reset start at random values (the models are verilated with

@@ -204,16 +204,16 @@ class WeightGenBench {
     const int y = b.by + a.row;
     for (int l = 0; l < kLanes; ++l) {
       const int x = clamp_coord(b.bx - kRadius + a.v * kLanes + l, r.img.width());
-      // Lane tap t is window tap k (FPGA target: t is the census row, 0 outside the window).
-      for (int t = 0; t < kVertTaps; ++t) {
+      // Lane tap t is window tap k (the FPGA target's folded order, sim::window_tap).
+      for (int t = 0; t < kWindow; ++t) {
         const int k = sim::window_tap(t, a.row);
-        const int want = k < 0 ? 0 : weight_code(ref_.v(k, x, y));
-        const int got = int(get_bits(top_->wv_o, (l * kVertTaps + t) * kWeightCodeBits, kWeightCodeBits));
+        const int want = weight_code(ref_.v(k, x, y));
+        const int got = int(get_bits(top_->wv_o, (l * kWindow + t) * kWeightCodeBits, kWeightCodeBits));
         ++st->compared;
         if (got != want) {
           std::ostringstream o;
           o << "vertical weight code, block (" << b.bx << "," << b.by << ") column x=" << x
-            << " centre y=" << y << " lane tap " << t << " (window tap k=" << (k < 0 ? k : k - kRadius)
+            << " centre y=" << y << " lane tap " << t << " (window tap k=" << k - kRadius
             << "): RTL " << got << ", reference " << want;
           return o.str();
         }

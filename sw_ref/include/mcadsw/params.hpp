@@ -93,11 +93,6 @@ inline constexpr int kMaxHeight = 2048;
 #define MCADSW_FPGA 0
 #endif
 inline constexpr bool kFpga = MCADSW_FPGA != 0;
-// Census codes and vertical weights a lane carries to the vertical aggregator
-// (mcadsw_pkg::VTAPS): the window's 31 rows on the ASIC target; all 48 rows of the
-// census column on the FPGA target, the weights of the rows outside the window 0.
-constexpr int vert_taps(bool fpga) { return fpga ? kBlockCols : kWindow; }
-inline constexpr int kVertTaps = vert_taps(kFpga);
 
 // ---- Exact integer widths ----------------------------------------------------
 // Each bound is the largest value the quantity can take; the bit widths follow.
