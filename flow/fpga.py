@@ -5,6 +5,7 @@
 (flow/fpga.tcl), run by flow/synth.py fpga; and the report of both devices
 (python3 flow/fpga.py report: the ECP5 place and route of flow/ecp5.py soc beside the
 7-series estimate, frames a second from make sim's cycles)."""
+import argparse
 import json
 import re
 import shutil
@@ -12,7 +13,7 @@ import sys
 import time
 from pathlib import Path
 
-from flowlib import FLOW, FlowError, Run, gen_package, log, rtl_list, tail
+from flowlib import FLOW, PREFIX, FlowError, Run, gen_package, log, rtl_list, tail
 
 
 def fpga(a):
@@ -199,8 +200,6 @@ def report(root, sim_summary):
 
 
 def main(argv):
-    import argparse
-    from flowlib import PREFIX
     PREFIX[0] = "fpga"
     ap = argparse.ArgumentParser(description="make fpga's report of both devices")
     sub = ap.add_subparsers(dest="cmd", required=True)
