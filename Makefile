@@ -136,10 +136,12 @@ endif
 gls: gen-rtl-pkg
 	@DMAX=$(DMAX) FRAME=$(FRAME) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
-## lint: verilator --lint-only -Wall on every RTL module, with the ASIC and the FPGA target's package
+## lint: verilator --lint-only -Wall on every RTL module, with the ASIC and the FPGA target's package,
+##   and on the board shell of make fpga around the SoC
 lint: configure
 	@scripts/rtl_check.sh lint
 	@scripts/rtl_check.sh lint $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
+	@scripts/rtl_check.sh board $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
 
 ## formal: bounded proofs (Yosys SAT) of formal/ and the blocks' MCADSW_ASSERTs
 ##   (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail
