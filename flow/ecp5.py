@@ -76,11 +76,9 @@ def run_step(run, name, cmd, out, log_name):
     return rc, mb, secs
 
 
-def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None, flatten=True):
+def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
     """synth_ecp5 of TOP from FILES into OUT/netlist.json (and OUT/stat.txt). PARAMS: top
-    parameters to set. FLATTEN False keeps the hierarchy (-noflatten): each module is
-    mapped on its own and `stat` counts the cells of each; nextpnr flattens it on import.
-    Returns the step's figures."""
+    parameters to set. Returns the step's figures."""
     out.mkdir(parents=True, exist_ok=True)
     inc = f" -I{wasm_path(include, out)}" if include else ""
     dfs = "".join(f" -D{d}" for d in defines)
@@ -90,8 +88,7 @@ def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None, fl
              # Parameters set by hierarchy itself: a chparam after it leaves the
              # submodules derived for the defaults unresolved.
              f"hierarchy -check -top {top}" + "".join(f" -chparam {k} {v}" for k, v in (params or {}).items())]
-    lines += [f"synth_ecp5 -top {top}{'' if flatten else ' -noflatten'} -json netlist.json",
-              "tee -q -o stat.txt stat"]
+    lines += [f"synth_ecp5 -top {top} -json netlist.json", "tee -q -o stat.txt stat"]
     (out / "synth.ys").write_text("# Written by flow/ecp5.py\n" + "\n".join(lines) + "\n")
     run = Run()
     try:
@@ -223,7 +220,8 @@ def block(a):
 
 # ECP5-85 (LFE5U-85F) capacities, as nextpnr-ecp5 reports them (TRELLIS_COMB: LUT4 sites).
 DEVICE = {"TRELLIS_COMB": 83640, "TRELLIS_FF": 83640, "DP16KD": 208, "MULT18X18D": 156}
-PRIMS = ("LUT4", "CCU2C", "PFUMX", "L6MUX21", "TRELLIS_DPR16X4", "TRELLIS_FF", "DP16KD", "MULT18X18D")
+# The primitives that keep the RTL source line of what they implement (cells_by_module).
+SRC_PRIMS = ("TRELLIS_FF", "CCU2C", "MULT18X18D")
 
 
 def comb_sites(c):
@@ -236,9 +234,9 @@ def comb_sites(c):
 def cells_by_module(netlist):
     """The cells of a flattened netlist by the RTL module they come from: {module file
     (relative to rtl/, without .sv): {primitive: count}}, read from each cell's source
-    attribute. Flip-flops, carry chains, RAMs and multipliers keep the RTL line that made
-    them; the LUTs of ABC's mapping keep none and are not counted here (flow/ecp5.py block
-    gives a block's LUT4 on its own). Also the instances: Yosys's $scopeinfo cells, one a
+    attribute. Flip-flops, carry chains and multipliers keep the RTL line that made them
+    (SRC_PRIMS); the LUTs of ABC's mapping and the RAMs keep none (flow/ecp5.py block gives a
+    block's LUT4 and RAMs on its own). Also the instances: Yosys's $scopeinfo cells, one a
     flattened instance, kept even when all its logic is gone."""
     mods = json.loads(Path(netlist).read_text())["modules"]
     top = next(k for k, v in mods.items() if v.get("attributes", {}).get("top"))
@@ -276,7 +274,7 @@ def soc(a):
     # Every module of rtl/mcadsw.f (packages aside) and the shell must have cells of its own.
     expect = [f[:-3] for f in rtl_list(no_pkg=True) if not f.endswith("_pkg.sv")] + ["board/mcadsw_ulx3s"]
     blocks = {"instances": insts,
-              "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in PRIMS} for m in expect}}
+              "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in expect}}
     (out / "blocks.json").write_text(json.dumps(blocks, indent=1) + "\n")
     empty = [m for m in expect if not by_mod.get(m)]
     need = {"TRELLIS_COMB": comb_sites(total), "TRELLIS_FF": total.get("TRELLIS_FF", 0),
@@ -287,7 +285,7 @@ def soc(a):
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
                "par": int(a.par), "board": a.board, "freq_mhz": a.freq,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
-               "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_blocks": empty,
+               "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
                "synth": s, "place_route": None, "problems": []}
     if empty:
         summary["problems"].append("modules without cells (optimised away): " + ", ".join(empty))

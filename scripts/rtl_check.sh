@@ -57,12 +57,18 @@ if [ ${#mods[@]} -eq 0 ]; then echo "rtl_check: no RTL modules"; exit 0; fi
 files=("${alt_pkg:-$pkg}" "${pkgs[@]:1}" "${mods[@]}")
 what=${alt_pkg:+ (package $alt_pkg)}
 
+# lint_top TOP [FILE...]: verilator -Wall of the RTL (and FILEs) with TOP as the top; fails
+# on any warning.
+lint_top() {
+  local top=$1 out; shift
+  out=$(verilator --lint-only -Wall --assert -I. "${waivers[@]}" "${files[@]}" "$@" --top-module "$top" 2>&1) || {
+    echo "$out"; echo "rtl_check: verilator lint FAILED for $top" >&2; return 1; }
+  if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
+}
+
 run_lint() {
   for f in "${mods[@]}"; do
-    top=$(basename "${f%.sv}")
-    out=$(verilator --lint-only -Wall --assert -I. "${waivers[@]}" "${files[@]}" --top-module "$top" 2>&1) || {
-      echo "$out"; echo "rtl_check: verilator lint FAILED for $top" >&2; return 1; }
-    if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
+    lint_top "$(basename "${f%.sv}")" || return 1
   done
   echo "rtl_check: verilator --lint-only -Wall clean on ${#mods[@]} modules$what"
 }
@@ -114,12 +120,9 @@ run_iverilog() {
 }
 
 run_board() {
-  local n=0 f out
+  local n=0 f
   for f in board/*.sv; do
-    out=$(verilator --lint-only -Wall --assert -I. "${waivers[@]}" "${files[@]}" "$f" \
-          "$root/tests/fpga/ecp5_cells_stub.sv" --top-module "$(basename "${f%.sv}")" 2>&1) || {
-      echo "$out"; echo "rtl_check: verilator lint FAILED for $f" >&2; return 1; }
-    if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
+    lint_top "$(basename "${f%.sv}")" "$f" "$root/tests/fpga/ecp5_cells_stub.sv" || return 1
     n=$((n + 1))
   done
   echo "rtl_check: verilator --lint-only -Wall clean on $n board shells$what"
