@@ -163,7 +163,6 @@ module mcadsw_census #(
   assign ic        = (ki_q < lo_x_q) ? lo_x_q : ki_q;
   assign lk        = KB'(ofs_q) + KB'(ic);
   assign need_luma = ki_q <= hi_x_q;
-  assign luma_ok   = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
   // A band-start block's columns from RING - COLS on are the previous block's.
   assign ring_ok   = cont_q || ring_free_i || 32'(ki_q) < RING - COLS;
   assign issue     = state_q == RUN && !kfin_q && luma_ok && ring_ok;
@@ -255,67 +254,35 @@ module mcadsw_census #(
     .cols_o  (strip_cols)
   );
 
-  // Ring luma columns the kernel reads: lc .. lc + 4 (mod 4 LS), lc = 4 base + lk.
-  // Index arithmetic in narrow unsigned vectors: the ring is a power of 2, the
-  // sub-bank of a column is its low 3 bits, its word the rest.
-  logic [LCB-1:0]     lc;
-  logic [SUB*LW-1:0]  lsub_q;         // the word each sub-bank read (synchronous read)
-  logic [LSB-1:0]     wstrip;         // ring strip of the finished input strip
-  assign lc     = LCB'({base_q, 2'b00}) + LCB'(lk);
+  logic [LSB-1:0] wstrip;         // ring strip of the finished input strip
   assign wstrip = base_q + LSB'(in_strip);
 
-  for (genvar b = 0; b < SUB; b++) begin : g_lsub
-    // Ring strip t holds columns 4t .. 4t+3: sub-bank b receives column
-    // 4t + (b % 4) when t has the parity of b / 4.
-    logic [LW-1:0] wr_col;
-    assign wr_col = strip_cols[(b % 4)*LW +: LW];
-
-    logic [LW-1:0] mem_q [LDEPTH];
-    always_ff @(posedge clk_i) begin
-      if (pix_fire && strip_end && wstrip[0] == 1'(b / 4)) mem_q[wstrip[LSB-1:1]] <= wr_col;
-    end
-    // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
-    // Its word: that of lc, or the next one when b is below lc's sub-bank.
-    logic [3:0]     bd;                  // b - (lc mod 8); bit 3: the borrow, b below it
-    logic [2:0]     bd_unused;
-    assign bd = 4'(b) - {1'b0, lc[2:0]};
-    assign bd_unused = bd[2:0];
-    always_ff @(posedge clk_i) begin
-      if (issue) lsub_q[b*LW +: LW] <= mem_q[(LCB - 3)'(lc[LCB-1:3] + (LCB - 3)'(bd[3]))];
-    end
-  end
-
-  // The sub-bank word of luma column p: an 8:1 multiplexer.
-  function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input logic [2:0] b);
-    luma_col = '0;
-    for (int i = 0; i < SUB; i++) luma_col = luma_col | (rd[i*LW +: LW] & {LW{b == 3'(i)}});
-  endfunction
-
   // ---- Kernel: a column of codes (Fig. 2 template, docs/algorithm.md bit order) ---
-  // Written as a function and called only where a column is written, so a
-  // simulator evaluates it in the kernel's COLS cycles of a block, not in every
+  // Written as functions and called only where a column is computed, so a
+  // simulator evaluates them in the kernel's COLS cycles of a block, not in every
   // cycle; the hardware is the same combinational kernel.
-  function automatic logic [CWB-1:0] census_column(input logic [SUB*LW-1:0] rd, input int lcol,
-                                                   input logic [YB-1:0] lo_y,
-                                                   input logic [YB-1:0] hi_y);
-    logic [5*LW-1:0] lcols;           // luma columns lcol .. lcol + 4
-    logic [CWB-1:0]  raw;             // codes of rows 0 .. ROWS-1, unclamped
-    for (int dx = 0; dx < 5; dx++) lcols[dx*LW +: LW] = luma_col(rd, 3'(lcol + dx));
+  // The codes of rows 0 .. ROWS-1 from luma columns lcol .. lcol + 4 (lcols), unclamped.
+  function automatic logic [CWB-1:0] census_codes(input logic [5*LW-1:0] lcols);
     for (int j = 0; j < ROWS; j++) begin
       logic [7:0] c;
       c = lcols[2*LW + (j + 2)*8 +: 8];
-      raw[j*CB + 5] = lcols[(2 + mcadsw_pkg::TAP0_DX)*LW + (j + 2 + mcadsw_pkg::TAP0_DY)*8 +: 8] <= c;
-      raw[j*CB + 4] = lcols[(2 + mcadsw_pkg::TAP1_DX)*LW + (j + 2 + mcadsw_pkg::TAP1_DY)*8 +: 8] <= c;
-      raw[j*CB + 3] = lcols[(2 + mcadsw_pkg::TAP2_DX)*LW + (j + 2 + mcadsw_pkg::TAP2_DY)*8 +: 8] <= c;
-      raw[j*CB + 2] = lcols[(2 + mcadsw_pkg::TAP3_DX)*LW + (j + 2 + mcadsw_pkg::TAP3_DY)*8 +: 8] <= c;
-      raw[j*CB + 1] = lcols[(2 + mcadsw_pkg::TAP4_DX)*LW + (j + 2 + mcadsw_pkg::TAP4_DY)*8 +: 8] <= c;
-      raw[j*CB + 0] = lcols[(2 + mcadsw_pkg::TAP5_DX)*LW + (j + 2 + mcadsw_pkg::TAP5_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 5] = lcols[(2 + mcadsw_pkg::TAP0_DX)*LW + (j + 2 + mcadsw_pkg::TAP0_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 4] = lcols[(2 + mcadsw_pkg::TAP1_DX)*LW + (j + 2 + mcadsw_pkg::TAP1_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 3] = lcols[(2 + mcadsw_pkg::TAP2_DX)*LW + (j + 2 + mcadsw_pkg::TAP2_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 2] = lcols[(2 + mcadsw_pkg::TAP3_DX)*LW + (j + 2 + mcadsw_pkg::TAP3_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 1] = lcols[(2 + mcadsw_pkg::TAP4_DX)*LW + (j + 2 + mcadsw_pkg::TAP4_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 0] = lcols[(2 + mcadsw_pkg::TAP5_DX)*LW + (j + 2 + mcadsw_pkg::TAP5_DY)*8 +: 8] <= c;
     end
-    // Rows outside the image take the code of the edge row.
+  endfunction
+
+  // Rows outside the image take the code of the edge row.
+  function automatic logic [CWB-1:0] clamp_rows(input logic [CWB-1:0] raw,
+                                                input logic [YB-1:0] lo_y,
+                                                input logic [YB-1:0] hi_y);
     for (int j = 0; j < ROWS; j++) begin
-      if (j < 32'(lo_y)) census_column[j*CB +: CB] = raw[32'(lo_y)*CB +: CB];
-      else if (j > 32'(hi_y)) census_column[j*CB +: CB] = raw[32'(hi_y)*CB +: CB];
-      else census_column[j*CB +: CB] = raw[j*CB +: CB];
+      if (j < 32'(lo_y)) clamp_rows[j*CB +: CB] = raw[32'(lo_y)*CB +: CB];
+      else if (j > 32'(hi_y)) clamp_rows[j*CB +: CB] = raw[32'(hi_y)*CB +: CB];
+      else clamp_rows[j*CB +: CB] = raw[j*CB +: CB];
     end
   endfunction
 
@@ -324,27 +291,146 @@ module mcadsw_census #(
   // cycle 3 writes them.
   logic           rd_valid_q, rd_fresh_q, col_valid_q;
   logic [XB-1:0]  rd_ki_q, col_ki_q;
-  logic [2:0]     rd_lc_q;        // lc mod 8: the sub-bank of the first luma column
   logic [CWB-1:0] col_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rd_valid_q  <= 1'b0;
       rd_fresh_q  <= 1'b0;
       rd_ki_q     <= '0;
-      rd_lc_q     <= '0;
       col_valid_q <= 1'b0;
       col_ki_q    <= '0;
     end else begin
       rd_valid_q  <= issue;
       rd_fresh_q  <= need_luma;
       rd_ki_q     <= ki_q;
-      rd_lc_q     <= 3'(lc);
       col_valid_q <= rd_valid_q;
       col_ki_q    <= rd_ki_q;
     end
   end
-  always_ff @(posedge clk_i) begin
-    if (rd_valid_q && rd_fresh_q) col_q <= census_column(lsub_q, 32'(rd_lc_q), lo_y_q, hi_y_q);
+
+  // ASIC target: ring luma columns the kernel reads: lc .. lc + 4 (mod 4 LS),
+  // lc = 4 base + lk, from 8 sub-banks (the word each read in lsub_q). Index
+  // arithmetic in narrow unsigned vectors: the ring is a power of 2, the sub-bank
+  // of a column is its low 3 bits, its word the rest. (Declared outside the
+  // target's branch for the coverage model, as lsel below.)
+  logic [LCB-1:0]     lc;
+  logic [SUB*LW-1:0]  lsub_q;
+  logic [2:0]         rd_lc_q;        // lc mod 8: the sub-bank of the first luma column
+  assign lc = LCB'({base_q, 2'b00}) + LCB'(lk);
+
+  if (FPGA) begin : g_fpga_luma
+    // FPGA target: the ring is one RAM of 4 LS luma columns, a column an entry
+    // (distributed RAM, no sub-banks and no column selects). A finished strip's
+    // 4 columns are held and written one a cycle over the next 4 cycles (a strip
+    // ends every ROWS + 4 words at most). A loader reads one column a cycle, in
+    // order, into a window of the 5 columns the kernel needs (a shift register):
+    // column nl once it is written (nl < wcol) while the window, after this
+    // cycle's issue, still lacks it (nl < lk' + 5). The kernel issues when the
+    // window holds lk .. lk + 4 (nl = lk + 5); cycle 1 computes the codes from
+    // the window, cycle 2 clamps the rows. Against the ASIC target a block's
+    // first column waits for its 5 loads and a column that needs a new strip
+    // for that column's write and load (docs/architecture.md 3.11).
+    localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
+    logic [LW-1:0]   lmem [4*LS];
+    logic [4*LW-1:0] hold_q;          // the strip's columns, column 0 first
+    logic [2:0]      hn_q;            // columns still to write (4 .. 0)
+    logic [LSB-1:0]  hstrip_q;        // their ring strip
+    logic [1:0]      hb;              // the column written, in its strip
+    logic [NB-1:0]   wcol_q;          // window luma columns written: those < wcol_q
+    logic [NB-1:0]   nl_q;            // the window luma column the loader reads next
+    logic [5*LW-1:0] win_q;           // luma columns nl - 5 .. nl - 1, the oldest at 0
+    logic [NB-1:0]   lk_next;         // lk after this cycle's issue
+    logic [XB-1:0]   ki0;             // a block's first column
+    logic [NB-1:0]   lk0;             // ... and its lk
+    logic            load;
+    logic [CWB-1:0]  raw_q;           // stage 1: the codes, rows not yet clamped
+    assign hb      = 2'(3'd4 - hn_q);
+    assign lk_next = NB'(lk) + NB'(issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1));
+    assign ki0     = cfg_cont_i ? XB'(COLS - BLOCK) : '0;
+    assign lk0     = NB'(cfg_ofs_i) + NB'((ki0 < cfg_lo_x_i) ? cfg_lo_x_i : ki0);
+    assign load    = state_q == RUN && nl_q < wcol_q && nl_q < lk_next + NB'(5);
+    assign luma_ok = !need_luma || nl_q == NB'(lk) + NB'(5);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        hn_q     <= '0;
+        hstrip_q <= '0;
+        wcol_q   <= '0;
+        nl_q     <= '0;
+      end else begin
+        if (pix_fire && strip_end) begin
+          hn_q     <= 3'd4;
+          hstrip_q <= wstrip;
+        end else if (hn_q != '0) begin
+          hn_q <= hn_q - 3'd1;
+        end
+        if (state_q == IDLE && cfg_valid_i) begin
+          wcol_q <= NB'({cfg_first_i, 2'b00});
+          nl_q   <= lk0;
+        end else begin
+          if (state_q == RUN && hn_q != '0) wcol_q <= wcol_q + NB'(1);
+          if (load) nl_q <= nl_q + NB'(1);
+        end
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (pix_fire && strip_end) hold_q <= strip_cols;
+      if (hn_q != '0) lmem[{hstrip_q, hb}] <= hold_q[32'(hb)*LW +: LW];
+      if (load) win_q <= {lmem[LCB'({base_q, 2'b00}) + LCB'(nl_q)], win_q[5*LW-1:LW]};
+      if (issue && need_luma) raw_q <= census_codes(win_q);
+      if (rd_valid_q && rd_fresh_q) col_q <= clamp_rows(raw_q, lo_y_q, hi_y_q);
+    end
+    assign lsub_q  = '0;
+    assign rd_lc_q = '0;
+    logic asic_unused;
+    assign asic_unused = ^{lsub_q, rd_lc_q, lc};
+    // The previous block's last column write may share the cycle of the next
+    // block's configuration, never its run; the loader starts at a delivered strip.
+    `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && hn_q > 3'd1))
+    `MCADSW_ASSERT(FirstColumnDelivered, !(state_q == IDLE && cfg_valid_i && !cfg_cont_i && lk0 < NB'({cfg_first_i, 2'b00})))
+    `MCADSW_ASSERT(StripsRowsApart, !(pix_fire && strip_end && hn_q != '0))
+    `MCADSW_ASSERT(WindowNotAhead, !(state_q == RUN && need_luma && !kfin_q && nl_q > NB'(lk) + NB'(5)))
+  end else begin : g_asic_luma
+    assign luma_ok = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
+
+    for (genvar b = 0; b < SUB; b++) begin : g_lsub
+      // Ring strip t holds columns 4t .. 4t+3: sub-bank b receives column
+      // 4t + (b % 4) when t has the parity of b / 4.
+      logic [LW-1:0] wr_col;
+      assign wr_col = strip_cols[(b % 4)*LW +: LW];
+
+      logic [LW-1:0] mem_q [LDEPTH];
+      always_ff @(posedge clk_i) begin
+        if (pix_fire && strip_end && wstrip[0] == 1'(b / 4)) mem_q[wstrip[LSB-1:1]] <= wr_col;
+      end
+      // Read: the one of columns lc .. lc+7 that lives in this sub-bank.
+      // Its word: that of lc, or the next one when b is below lc's sub-bank.
+      logic [3:0]     bd;                  // b - (lc mod 8); bit 3: the borrow, b below it
+      logic [2:0]     bd_unused;
+      assign bd = 4'(b) - {1'b0, lc[2:0]};
+      assign bd_unused = bd[2:0];
+      always_ff @(posedge clk_i) begin
+        if (issue) lsub_q[b*LW +: LW] <= mem_q[(LCB - 3)'(lc[LCB-1:3] + (LCB - 3)'(bd[3]))];
+      end
+    end
+
+    // The sub-bank word of luma column p: an 8:1 multiplexer.
+    function automatic logic [LW-1:0] luma_col(input logic [SUB*LW-1:0] rd, input logic [2:0] b);
+      luma_col = '0;
+      for (int i = 0; i < SUB; i++) luma_col = luma_col | (rd[i*LW +: LW] & {LW{b == 3'(i)}});
+    endfunction
+    // Luma columns lcol .. lcol + 4 from the sub-bank words.
+    function automatic logic [5*LW-1:0] luma_cols(input logic [SUB*LW-1:0] rd, input int lcol);
+      for (int dx = 0; dx < 5; dx++) luma_cols[dx*LW +: LW] = luma_col(rd, 3'(lcol + dx));
+    endfunction
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) rd_lc_q <= '0;
+      else rd_lc_q <= 3'(lc);
+    end
+    always_ff @(posedge clk_i) begin
+      if (rd_valid_q && rd_fresh_q)
+        col_q <= clamp_rows(census_codes(luma_cols(lsub_q, 32'(rd_lc_q))), lo_y_q, hi_y_q);
+    end
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
