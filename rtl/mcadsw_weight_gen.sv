@@ -467,10 +467,11 @@ module mcadsw_weight_gen #(
 
   // ---- Weight buffers: two row slots, one word per aggregator read -----------------
   // Vertical: word (slot, group of LANES columns); horizontal: word (slot, group
-  // of HAGG pixels). Stage 2 writes one entry of a word a cycle.
+  // of HAGG pixels). Stage 2 writes one entry of a word a cycle. ASIC target: one
+  // RAM each, an entry written into its word's position; FPGA target: one RAM an
+  // entry position (LANES and HAGG of them, an entry a word, no partial writes),
+  // all read at the same address.
   localparam int VENTRY = WINDOW * WB;       // one vertical entry
-  logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
-  logic [HAGG*ENTRY-1:0]  hbuf_q [2*HGRP];
   localparam int VAB = $clog2(2 * VGRP);
   localparam int HAB = $clog2(2 * HGRP);
   logic [VAB-1:0] k_vaddr;
@@ -508,16 +509,30 @@ module mcadsw_weight_gen #(
       end
     end
 
-    always_ff @(posedge clk_i) begin
-      if (k_vert_q || k_horz_q) begin : p_kernel
-        logic [ROWS*WB-1:0] codes;           // one code a pixel
-        logic [VENTRY-1:0]  ventry;
-        for (int j = 0; j < ROWS; j++) codes[j*WB +: WB] = code_of(cdist(k_px_q[j*PW +: PW], k_ctr_q), thr_i);
-        ventry = codes[VENTRY-1:0];
-        for (int k = 0; k < ROWS - WINDOW; k++)
-          if (k < 32'(k_at_q)) ventry[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
-        if (k_vert_q) vbuf_q[k_vaddr][32'(k_pos_q)*VENTRY +: VENTRY] <= ventry;
-        else          hbuf_q[k_haddr][32'(k_pos_q)*ENTRY +: ENTRY] <= ENTRY'(codes >> (32'(k_at_q)*WB));
+    // The kernel: the codes of all ROWS pixels, as the vertical entry (folded)
+    // and the horizontal entry (columns x .. x + WINDOW - 1).
+    logic [VENTRY-1:0] k_ventry;
+    logic [ENTRY-1:0]  k_hentry;
+    always_comb begin : p_kernel
+      logic [ROWS*WB-1:0] codes;             // one code a pixel
+      for (int j = 0; j < ROWS; j++) codes[j*WB +: WB] = code_of(cdist(k_px_q[j*PW +: PW], k_ctr_q), thr_i);
+      k_ventry = codes[VENTRY-1:0];
+      for (int k = 0; k < ROWS - WINDOW; k++)
+        if (k < 32'(k_at_q)) k_ventry[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
+      k_hentry = ENTRY'(codes >> (32'(k_at_q)*WB));
+    end
+    for (genvar e = 0; e < LANES; e++) begin : g_vmem
+      logic [VENTRY-1:0] mem_q [2*VGRP];
+      always_ff @(posedge clk_i) begin
+        if (k_vert_q && k_pos_q == 3'(e)) mem_q[k_vaddr] <= k_ventry;
+        if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
+      end
+    end
+    for (genvar e = 0; e < HAGG; e++) begin : g_hmem
+      logic [ENTRY-1:0] mem_q [2*HGRP];
+      always_ff @(posedge clk_i) begin
+        if (k_horz_q && k_pos_q == 3'(e)) mem_q[k_haddr] <= k_hentry;
+        if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
       end
     end
   end else begin : g_asic_kernel
@@ -562,11 +577,13 @@ module mcadsw_weight_gen #(
         else          hbuf_q[k_haddr][32'(k_pos_q)*ENTRY +: ENTRY] <= codes;
       end
     end
-  end
 
-  always_ff @(posedge clk_i) begin
-    if (vrd_en_i) wv_o <= vbuf_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
-    if (hrd_en_i) wh_o <= hbuf_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
+    logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
+    logic [HAGG*ENTRY-1:0]   hbuf_q [2*HGRP];
+    always_ff @(posedge clk_i) begin
+      if (vrd_en_i) wv_o <= vbuf_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
+      if (hrd_en_i) wh_o <= hbuf_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
+    end
   end
 
   // What the cost aggregator keeps: a row taken once ready, reads of occupied
