@@ -12,7 +12,8 @@ module mcadsw_horz_agg #(
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int VB     = mcadsw_pkg::VCOST_BITS,
-  parameter int FB     = mcadsw_pkg::FCOST_BITS
+  parameter int FB     = mcadsw_pkg::FCOST_BITS,
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA)           // sums as carry-chain adder trees
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -32,14 +33,39 @@ module mcadsw_horz_agg #(
     else weigh = FB'(ev) << (e - WB'(1));
   endfunction
 
-  // The HAGG window sums, computed only when valid (see mcadsw_vert_agg).
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      valid_o <= 1'b0;
-      fc_o    <= '0;
-    end else begin
-      valid_o <= valid_i;
-      if (valid_i) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else valid_o <= valid_i;
+  end
+
+  if (FPGA) begin : g_fpga_sum
+    // FPGA target: each aggregator's WINDOW products (TB bits: a vertical cost
+    // shifted by at most 2^WB - 2) summed by a balanced tree of carry-chain
+    // adders (mcadsw_sum_tree); the sum fits FB bits (g_bad_param above).
+    localparam int TB = VB + (1 << WB) - 2;
+    localparam int SW = TB + $clog2(WINDOW);
+    for (genvar m = 0; m < HAGG; m++) begin : g_agg
+      logic [WINDOW*TB-1:0] terms;
+      logic [SW-1:0]        sum;
+      for (genvar j = 0; j < WINDOW; j++) begin : g_term
+        logic [FB-1:0] t;
+        logic [FB-TB-1:0] t_unused;
+        assign t = weigh(ev_i[(m + j)*VB +: VB], wh_i[(m*WINDOW + j)*WB +: WB]);
+        assign terms[j*TB +: TB] = t[TB-1:0];
+        assign t_unused = t[FB-1:TB];
+      end
+      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms), .sum_o(sum));
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) fc_o[m*FB +: FB] <= '0;
+        else if (valid_i) fc_o[m*FB +: FB] <= FB'(sum);
+      end
+    end
+  end else begin : g_asic_sum
+    // The HAGG window sums, computed only when valid (see mcadsw_vert_agg).
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        fc_o <= '0;
+      end else if (valid_i) begin
         for (int m = 0; m < HAGG; m++) begin : b_agg
           logic [FB-1:0] sum;
           sum = '0;

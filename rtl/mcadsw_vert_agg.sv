@@ -13,7 +13,8 @@ module mcadsw_vert_agg #(
   parameter int WINDOW = mcadsw_pkg::WINDOW,            // pixels per column
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,       // census code width
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,  // weight code width
-  parameter int VB     = mcadsw_pkg::VCOST_BITS         // vertical cost width
+  parameter int VB     = mcadsw_pkg::VCOST_BITS,        // vertical cost width
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA)           // sums as carry-chain adder trees
 ) (
   input  logic                      clk_i,
   input  logic                      rst_ni,
@@ -50,15 +51,41 @@ module mcadsw_vert_agg #(
     else weigh = VB'(cost) << (e - WB'(1));
   endfunction
 
-  // The LANES column sums, computed only when a group is valid, so a simulator
-  // skips them in idle cycles; the hardware is the same.
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      valid_o <= 1'b0;
-      ev_o    <= '0;
-    end else begin
-      valid_o <= valid_i;
-      if (valid_i) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else valid_o <= valid_i;
+  end
+
+  if (FPGA) begin : g_fpga_sum
+    // FPGA target: each lane's WINDOW products (TB bits: a cost below 8 shifted
+    // by at most 2^WB - 2) summed by a balanced tree of carry-chain adders; the
+    // sum is below 2^VB (g_bad_param above), so VB bits of it are exact.
+    localparam int TB = CNTB + (1 << WB) - 2;
+    localparam int SW = TB + $clog2(WINDOW);
+    for (genvar ln = 0; ln < LANES; ln++) begin : g_lane
+      logic [WINDOW*TB-1:0] terms;
+      logic [SW-1:0]        sum;
+      for (genvar k = 0; k < WINDOW; k++) begin : g_term
+        logic [VB-1:0] t;
+        logic [VB-TB-1:0] t_unused;
+        assign t = weigh(hamming(cen_l_i[(ln*WINDOW + k)*CB +: CB], cen_r_i[(ln*WINDOW + k)*CB +: CB]),
+                         wv_i[(ln*WINDOW + k)*WB +: WB]);
+        assign terms[k*TB +: TB] = t[TB-1:0];
+        assign t_unused = t[VB-1:TB];
+      end
+      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms), .sum_o(sum));
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) ev_o[ln*VB +: VB] <= '0;
+        else if (valid_i) ev_o[ln*VB +: VB] <= VB'(sum);
+      end
+    end
+  end else begin : g_asic_sum
+    // The LANES column sums, computed only when a group is valid, so a simulator
+    // skips them in idle cycles; the hardware is the same.
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ev_o <= '0;
+      end else if (valid_i) begin
         for (int ln = 0; ln < LANES; ln++) begin : b_lane
           logic [VB-1:0] sum;
           sum = '0;

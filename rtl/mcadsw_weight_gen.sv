@@ -511,16 +511,21 @@ module mcadsw_weight_gen #(
 
     // The kernel: the codes of all ROWS pixels, as the vertical entry (folded)
     // and the horizontal entry (columns x .. x + WINDOW - 1).
-    logic [VENTRY-1:0] k_ventry;
-    logic [ENTRY-1:0]  k_hentry;
-    always_comb begin : p_kernel
-      logic [ROWS*WB-1:0] codes;             // one code a pixel
-      for (int j = 0; j < ROWS; j++) codes[j*WB +: WB] = code_of(cdist(k_px_q[j*PW +: PW], k_ctr_q), thr_i);
-      k_ventry = codes[VENTRY-1:0];
+    function automatic logic [ROWS*WB-1:0] row_codes(input logic [APW-1:0] px, input logic [PW-1:0] ctr,
+                                                     input logic [NTHR*DCB-1:0] thr);
+      for (int j = 0; j < ROWS; j++) row_codes[j*WB +: WB] = code_of(cdist(px[j*PW +: PW], ctr), thr);
+    endfunction
+    function automatic logic [VENTRY-1:0] fold(input logic [ROWS*WB-1:0] codes, input logic [RB-1:0] r);
+      fold = codes[VENTRY-1:0];
       for (int k = 0; k < ROWS - WINDOW; k++)
-        if (k < 32'(k_at_q)) k_ventry[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
-      k_hentry = ENTRY'(codes >> (32'(k_at_q)*WB));
-    end
+        if (k < 32'(r)) fold[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
+    endfunction
+    logic [ROWS*WB-1:0] k_codes;
+    logic [VENTRY-1:0]  k_ventry;
+    logic [ENTRY-1:0]   k_hentry;
+    assign k_codes  = row_codes(k_px_q, k_ctr_q, thr_i);
+    assign k_ventry = fold(k_codes, k_at_q);
+    assign k_hentry = ENTRY'(k_codes >> (32'(k_at_q)*WB));
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
       logic [VENTRY-1:0] mem_q [2*VGRP];
       always_ff @(posedge clk_i) begin
@@ -563,6 +568,8 @@ module mcadsw_weight_gen #(
         weight_codes[k*WB +: WB] = code_of(cdist(win[k*PW +: PW], win[RADIUS*PW +: PW]), thr);
     endfunction
 
+    logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
+    logic [HAGG*ENTRY-1:0]   hbuf_q [2*HGRP];
     logic [WPW-1:0] k_win_q;
     always_ff @(posedge clk_i) begin
       if (s1_q) k_win_q <= vwindow(column, s1_r_q);
@@ -578,8 +585,6 @@ module mcadsw_weight_gen #(
       end
     end
 
-    logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
-    logic [HAGG*ENTRY-1:0]   hbuf_q [2*HGRP];
     always_ff @(posedge clk_i) begin
       if (vrd_en_i) wv_o <= vbuf_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
       if (hrd_en_i) wh_o <= hbuf_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
