@@ -480,52 +480,57 @@ module mcadsw_weight_gen #(
   assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
 
   if (FPGA) begin : g_fpga_kernel
-    // FPGA target: ROWS distance units compare all ROWS pixels of the column
-    // (vertical) or of the centre row (horizontal) with the centre, so no window
-    // select precedes them. Vertical entry: the codes of rows r .. r + WINDOW - 1
-    // in folded order (tap k: row k + WINDOW when k < r, row k otherwise; a 2:1
-    // select of the first ROWS - WINDOW taps); horizontal entry: the codes of
-    // columns x .. x + WINDOW - 1 (an 18:1 select of WINDOW codes).
-    localparam int APW = ROWS * PW;
-    logic [APW-1:0] k_px_q;                  // the ROWS pixels
+    // FPGA target: no window select of pixels. The kernel register takes the
+    // ROWS pixels of the column (vertical) or of the centre row (horizontal) in
+    // folded order, WINDOW of them: pixel k is row (column) k + WINDOW when
+    // k < a, k otherwise (a = r, or x; a 2:1 select of the first ROWS - WINDOW),
+    // so every pixel of the window once. WINDOW distance units compare them with
+    // the centre. Their codes are the vertical entry as the census buffer folds
+    // it (mcadsw_census); the horizontal entry, the codes of columns x .. x +
+    // WINDOW - 1 in order, is them rotated by x: code j is unit (j + x) mod WINDOW.
+    localparam int WPX = WINDOW * PW;
+    logic [WPX-1:0] k_px_q;                  // the window's pixels, folded
     logic [PW-1:0]  k_ctr_q;                 // the centre
     logic [RB-1:0]  k_at_q;                  // row r (vertical) or pixel x (horizontal)
 
+    // Rows (pixels) a .. a + WINDOW - 1 of ROWS pixels px (row j at j*PW) in folded order.
+    function automatic logic [WPX-1:0] fold_pixels(input logic [ROWS*PW-1:0] px, input logic [RB-1:0] a);
+      fold_pixels = px[WPX-1:0];
+      for (int k = 0; k < ROWS - WINDOW; k++)
+        if (k < 32'(a)) fold_pixels[k*PW +: PW] = px[(k + WINDOW)*PW +: PW];
+    endfunction
     // A column's rows as pixels: Y, U, V of row j interleaved at j*PW.
-    function automatic logic [APW-1:0] column_pixels(input logic [3*CW-1:0] col);
+    function automatic logic [ROWS*PW-1:0] column_pixels(input logic [3*CW-1:0] col);
       for (int j = 0; j < ROWS; j++)
         column_pixels[j*PW +: PW] = {col[2*CW + j*8 +: 8], col[CW + j*8 +: 8], col[j*8 +: 8]};
     endfunction
 
     always_ff @(posedge clk_i) begin
       if (s1_q) begin
-        k_px_q  <= column_pixels(column);
+        k_px_q  <= fold_pixels(column_pixels(column), s1_r_q);
         k_ctr_q <= centre_pixel(column, s1_r_q);
         k_at_q  <= s1_r_q;
       end else if (state_q == HORZ) begin
-        k_px_q  <= hrow_q;
+        k_px_q  <= fold_pixels(hrow_q, RB'(c_q));
         k_ctr_q <= hrow_q[(32'(c_q) + RADIUS)*PW +: PW];
         k_at_q  <= RB'(c_q);
       end
     end
 
-    // The kernel: the codes of all ROWS pixels, as the vertical entry (folded)
-    // and the horizontal entry (columns x .. x + WINDOW - 1).
-    function automatic logic [ROWS*WB-1:0] row_codes(input logic [APW-1:0] px, input logic [PW-1:0] ctr,
-                                                     input logic [NTHR*DCB-1:0] thr);
-      for (int j = 0; j < ROWS; j++) row_codes[j*WB +: WB] = code_of(cdist(px[j*PW +: PW], ctr), thr);
+    function automatic logic [ENTRY-1:0] window_codes(input logic [WPX-1:0] px, input logic [PW-1:0] ctr,
+                                                      input logic [NTHR*DCB-1:0] thr);
+      for (int k = 0; k < WINDOW; k++) window_codes[k*WB +: WB] = code_of(cdist(px[k*PW +: PW], ctr), thr);
     endfunction
-    function automatic logic [VENTRY-1:0] fold(input logic [ROWS*WB-1:0] codes, input logic [RB-1:0] r);
-      fold = codes[VENTRY-1:0];
-      for (int k = 0; k < ROWS - WINDOW; k++)
-        if (k < 32'(r)) fold[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
+    // Code j of the horizontal entry: unit (j + x) mod WINDOW, a rotation.
+    function automatic logic [ENTRY-1:0] unfold(input logic [ENTRY-1:0] codes, input logic [RB-1:0] x);
+      unfold = ENTRY'({codes, codes} >> (32'(x)*WB));
     endfunction
-    logic [ROWS*WB-1:0] k_codes;
-    logic [VENTRY-1:0]  k_ventry;
-    logic [ENTRY-1:0]   k_hentry;
-    assign k_codes  = row_codes(k_px_q, k_ctr_q, thr_i);
-    assign k_ventry = fold(k_codes, k_at_q);
-    assign k_hentry = ENTRY'(k_codes >> (32'(k_at_q)*WB));
+    logic [ENTRY-1:0]  k_codes;
+    logic [VENTRY-1:0] k_ventry;
+    logic [ENTRY-1:0]  k_hentry;
+    assign k_codes  = window_codes(k_px_q, k_ctr_q, thr_i);
+    assign k_ventry = k_codes;
+    assign k_hentry = unfold(k_codes, k_at_q);
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
       logic [VENTRY-1:0] mem_q [2*VGRP];
       always_ff @(posedge clk_i) begin
