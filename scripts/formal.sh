@@ -26,7 +26,7 @@ checks=(
   "mem_ctrl|mcadsw_mem_ctrl.sv|10|s/assign write_sel = hold_q ? hold_wr_q : wr_req_i;/assign write_sel = hold_q ? hold_wr_q : wr_req_i \&\& !any_rd;/"
   "axi_master|mcadsw_axi_master.sv|10|s/assign contig     = mem_addr_i == ob_next_q \&\& mem_addr_i\[11:0\] != 12'd0;/assign contig     = mem_addr_i == ob_next_q;/"
   "depth_fifo|mcadsw_depth_fifo.sv|8|s/        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);/        tail_q <= tail_q;/"
-  "cost_agg|mcadsw_sum_tree.sv mcadsw_cost_agg.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv|28|s/    else if (bank_full) wbank_q <= !wbank_q;/    else if (bank_full) wbank_q <= wbank_q;/"
+  "cost_agg|mcadsw_cost_agg.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv mcadsw_sum_tree.sv|28|s/    else if (bank_full) wbank_q <= !wbank_q;/    else if (bank_full) wbank_q <= wbank_q;/"
   "frame_ctrl|mcadsw_frame_ctrl.sv|24|s/state_q != StCheck \&\& state_d == StIdle) done_d = 1'b1;/state_q != StCheck \&\& state_d != StCheck) done_d = 1'b1;/"
 )
 
