@@ -187,7 +187,8 @@ module mcadsw_axi_master #(
       wbeat_q   <= '0;
     end else begin
       if (wr_take) begin
-        wbuf_q[32'(wwr_q[DB-1:0])*36 +: 36] <= {mem_be_i, mem_wdata_i};
+        for (int i = 0; i < WD; i++)      // decoded: no shifter across the buffer
+          if (wwr_q[DB-1:0] == DB'(i)) wbuf_q[i*36 +: 36] <= {mem_be_i, mem_wdata_i};
         wwr_q <= wwr_q + 1'b1;
       end
       if (w_go) wrd_q <= wrd_q + 1'b1;

@@ -144,14 +144,18 @@ module mcadsw_depth_fifo #(
       ready_q <= '0;
       wofs_q  <= '0;
     end else begin
+      // Writes decoded slot by slot and group by group (constant part-selects): a
+      // part-select at a computed offset would be a bit-granular shifter.
       if (desc_push_i) begin
-        desc_q[32'(tail_q)*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
+        for (int r = 0; r < ROWSQ; r++)
+          if (tail_q == PB'(r)) desc_q[r*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
         tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
       end
       if (disp_valid_i) begin
-        for (int m = 0; m < HAGG; m++)
-          pix_q[(32'(fill_q)*BLOCK + 32'(disp_grp_i)*HAGG + m)*VB +: VB] <=
-              disp_i[m*VB +: VB];
+        for (int r = 0; r < ROWSQ; r++)
+          for (int g = 0; g < BLOCK / HAGG; g++)
+            if (fill_q == PB'(r) && disp_grp_i == GB'(g))
+              pix_q[(r*BLOCK + g*HAGG)*VB +: HAGG*VB] <= disp_i;
         if (disp_grp_i == GB'(BLOCK / HAGG - 1)) fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
       end
       if (wr_req_o && wr_gnt_i) begin

@@ -68,10 +68,14 @@ module mcadsw_strip_stage #(
   end
 
   // The stage holds the words column by column (column b, row y at byte
-  // b*(ROWS-1) + y), so the columns leave it as whole slices.
+  // b*(ROWS-1) + y), so the columns leave it as whole slices. The write is
+  // decoded row by row (constant part-selects): a part-select at a computed
+  // offset would be a bit-granular shifter across the whole stage.
   always_ff @(posedge clk_i) begin
     if (wr_i && !last_o)
-      for (int b = 0; b < 4; b++) stage_q[(b*(ROWS - 1) + 32'(row_q))*8 +: 8] <= data_i[b*8 +: 8];
+      for (int r = 0; r < ROWS - 1; r++)
+        if (row_q == RB'(r))
+          for (int b = 0; b < 4; b++) stage_q[(b*(ROWS - 1) + r)*8 +: 8] <= data_i[b*8 +: 8];
   end
 
   for (genvar b = 0; b < 4; b++) begin : g_col

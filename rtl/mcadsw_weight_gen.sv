@@ -462,7 +462,10 @@ module mcadsw_weight_gen #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (s1_q) hrow_q[32'(s1_c_q)*PW +: PW] <= centre_pixel(column, s1_r_q);
+    // Decoded pixel by pixel (constant part-selects, no shifter across the row).
+    if (s1_q)
+      for (int c = 0; c < COLS; c++)
+        if (s1_c_q == XB'(c)) hrow_q[c*PW +: PW] <= centre_pixel(column, s1_r_q);
   end
 
   // ---- Weight buffers: two row slots, one word per aggregator read -----------------
@@ -512,7 +515,8 @@ module mcadsw_weight_gen #(
         k_at_q  <= s1_r_q;
       end else if (state_q == HORZ) begin
         k_px_q  <= fold_pixels(hrow_q, RB'(c_q));
-        k_ctr_q <= hrow_q[(32'(c_q) + RADIUS)*PW +: PW];
+        for (int c = 0; c < BLOCK; c++)
+          if (c_q == XB'(c)) k_ctr_q <= hrow_q[(c + RADIUS)*PW +: PW];
         k_at_q  <= RB'(c_q);
       end
     end

@@ -239,14 +239,19 @@ module mcadsw_win_reader #(
   // of a strip plane (image row clamp(y0 + r)) shows the head word; the head is
   // popped after the row unless the next row maps to the same image row (rows
   // above the image share row 0's word, rows below share the last row's).
+  // The FIFO is a ring: entries written in place (a decoded write) and read at the
+  // head pointer, so no entry moves (a shifting queue would put a 3:1 select in
+  // front of every bit).
+  localparam int FPB = (OUTS > 1) ? $clog2(OUTS) : 1;
   logic [OUTS*32-1:0] fifo_q;
+  logic [FPB-1:0]     fwr_q, frd_q;      // the entry written next, the head
   logic [OB-1:0]      fcount_q;
   logic               pop, pop_word;
   logic signed [CW+1:0] rsy_q;       // y0 + rs_row, unclamped
   // A strip word is ready when its response is; byte b is column
   // clamp(x0 + 4s + b), i.e. byte b, or the edge column's byte where clamped.
   logic [31:0] head;
-  assign head        = fifo_q[31:0];
+  assign head        = fifo_q[32'(frd_q)*32 +: 32];
   assign pix_valid_o = busy_q && !rs_done && fcount_q != '0;
   for (genvar b = 0; b < 4; b++) begin : g_byte
     int c;
@@ -280,6 +285,8 @@ module mcadsw_win_reader #(
       rsy_q        <= '0;
       inflight_q   <= '0;
       fifo_q       <= '0;
+      fwr_q        <= '0;
+      frd_q        <= '0;
       fcount_q     <= '0;
     end else begin
       if (start_i && !busy_q) begin
@@ -326,22 +333,13 @@ module mcadsw_win_reader #(
         end
       end
       // FIFO: push the response, pop the word after its last row.
-      begin
-        logic [OUTS*32-1:0] f;
-        logic [OB-1:0]      n;
-        f = fifo_q;
-        n = fcount_q;
-        if (pop_word) begin
-          f = f >> 32;
-          n = n - OB'(1);
-        end
-        if (rvalid_i) begin
-          f[32'(n)*32 +: 32] = rdata_i;
-          n = n + OB'(1);
-        end
-        fifo_q   <= f;
-        fcount_q <= n;
+      if (rvalid_i) begin
+        for (int i = 0; i < OUTS; i++)
+          if (fwr_q == FPB'(i)) fifo_q[i*32 +: 32] <= rdata_i;
+        fwr_q <= (fwr_q == FPB'(OUTS - 1)) ? '0 : fwr_q + FPB'(1);
       end
+      if (pop_word) frd_q <= (frd_q == FPB'(OUTS - 1)) ? '0 : frd_q + FPB'(1);
+      fcount_q <= fcount_q + OB'(rvalid_i) - OB'(pop_word);
       inflight_q <= inflight_q + (req_o && gnt_i ? OB'(len_q) : '0) - OB'(pop_word);
       if (pop) begin
         rs_q  <= next_pos(rs_q, RB'(ROWS - 1), strips_q);

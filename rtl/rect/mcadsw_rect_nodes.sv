@@ -162,11 +162,13 @@ module mcadsw_rect_nodes #(
       umin_q <= BIG; vmin_q <= BIG; umax_q <= SMALL; vmax_q <= SMALL;
     end else if (busy_q && word_valid_i) begin
       if (v_q) begin
-        node_v_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
+        for (int n = 0; n < NODES; n++)   // decoded: no shifter across the store
+          if (32'(cj_q) * NODE_COLS + 32'(ci_q) == n) node_v_o[n * NB +: NB] <= val;
         vmin_q <= smin3(vmin_q, lo_a, lo_b);
         vmax_q <= smax3(vmax_q, hi_a, hi_b);
       end else begin
-        node_u_o[(32'(cj_q) * NODE_COLS + 32'(ci_q)) * NB +: NB] <= val;
+        for (int n = 0; n < NODES; n++)   // decoded: no shifter across the store
+          if (32'(cj_q) * NODE_COLS + 32'(ci_q) == n) node_u_o[n * NB +: NB] <= val;
         umin_q <= smin3(umin_q, lo_a, lo_b);
         umax_q <= smax3(umax_q, hi_a, hi_b);
       end
