@@ -5,7 +5,10 @@
 // configuration the engine registered at the start, checked in the cycle after it.
 // Combinational: the engine registers err_o and ok_o at the end of that cycle, and the
 // frame controller samples them in its Check state; a non-zero code rejects the start
-// before anything is read or written.
+// before anything is read or written. The plane sizes (products of a stride and a
+// height) are the one registered part: computed from the configuration as it is
+// registered (cap_*_i at capture_i, the engine's start), so that no multiplier lies
+// in front of the 44-bit compares in the check's cycle.
 //
 // Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
 // address space. The planes a mode reads and writes (docs/memory_map.md):
@@ -23,6 +26,15 @@ module mcadsw_cfg_check #(
   parameter int NB   = $clog2(DMAX + 1),              // D bits
   parameter int SB   = AW + CW                        // plane sizes: stride x height (or x columns), exact
 ) (
+  input  logic            clk_i,
+  input  logic            rst_ni,
+  // The configuration being registered (the engine's capture inputs), for the sizes
+  input  logic            capture_i,
+  input  logic [AW-1:0]   cap_stride_i,
+  input  logic [AW-1:0]   cap_out_stride_i,
+  input  logic [AW-1:0]   cap_tile_stride_i,
+  input  logic [CW-1:0]   cap_width_i,
+  input  logic [CW-1:0]   cap_height_i,
   // Planes (byte addresses)
   input  logic [AW-1:0]   base_ly_i,
   input  logic [AW-1:0]   base_lu_i,
@@ -48,7 +60,8 @@ module mcadsw_cfg_check #(
   // mcadsw_pkg::ErrNone, or the first failing check's code
   output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
   output logic            ok_o,              // err_o == ErrNone
-  // The sizes of the checked planes, for the rectifier's check (mcadsw_rect_check)
+  // The sizes of the checked planes, for the rectifier's check (mcadsw_rect_check);
+  // registered: valid from the cycle after capture_i
   output logic [SB-1:0]   in_size_o,         // an input plane
   output logic [SB-1:0]   size_o,            // stride x height: dR, the mask
   output logic [SB-1:0]   out_size_o         // out stride x height: the disparity plane, dL
@@ -64,9 +77,18 @@ module mcadsw_cfg_check #(
     EB'(mcadsw_pkg::ErrDisp), EB'(mcadsw_pkg::ErrHeight), EB'(mcadsw_pkg::ErrWidth)};
   logic [NCHECK-1:0] fail;
 
+  // a < b + b_size, exactly: an address below an end at or past 2^AW always is, so
+  // the compare needs only the end's low AW bits (the sum itself is shared by the
+  // pairs of a plane: synthesis merges the identical adders).
+  function automatic logic below_end(input logic [AW-1:0] a, input logic [AW-1:0] b,
+                                     input logic [SB-1:0] b_size);
+    logic [SB:0] end_;
+    end_      = (SB + 1)'(b) + (SB + 1)'(b_size);
+    below_end = (end_ >> AW) != '0 || a < AW'(end_);
+  endfunction
   function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
-    overlaps = (SB'(a) < SB'(b) + b_size) && (SB'(b) < SB'(a) + a_size);
+    overlaps = below_end(a, b, b_size) && below_end(b, a, a_size);
   endfunction
   function automatic logic beyond(input logic [AW-1:0] base, input logic [SB-1:0] size);
     logic [SB:0] end_;
@@ -94,20 +116,28 @@ module mcadsw_cfg_check #(
   assign wr_en   = {lr_i, lr_i, lr_i, 1'b1};
   assign wr_outs = 4'b0101;
 
+  // The sizes, registered with the configuration. The input planes: raster, stride x
+  // height; column-tiled, tile x the columns of 4 pixels.
+  logic [SB-1:0] size, in_size, out_size;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      {size, in_size, out_size} <= '0;
+    end else if (capture_i) begin : p_capture
+      logic [CW-1:0] wcols;            // columns of 4 pixels
+      wcols    = cap_width_i + CW'(3);
+      wcols    = wcols >> 2;
+      size     <= SB'(cap_stride_i) * SB'(cap_height_i);
+      in_size  <= (cap_tile_stride_i != '0) ? SB'(cap_tile_stride_i) * SB'(wcols)
+                                            : SB'(cap_stride_i) * SB'(cap_height_i);
+      out_size <= SB'(cap_out_stride_i) * SB'(cap_height_i);
+    end
+  end
+
   always_comb begin
-    logic [SB-1:0] size, in_size, out_size;
     logic [CW:0]   out_bytes;          // bytes of an output row
     logic          misaligned, overlap, past;
     logic          tiled;
-    logic [CW-1:0] wcols;              // columns of 4 pixels
     tiled     = tile_stride_i != '0;
-    wcols     = width_i + CW'(3);
-    wcols     = wcols >> 2;
-    size      = SB'(stride_i) * SB'(height_i);
-    // The input planes: raster, stride x height; column-tiled, tile x the
-    // columns of 4 pixels.
-    in_size   = tiled ? SB'(tile_stride_i) * SB'(wcols) : size;
-    out_size  = SB'(out_stride_i) * SB'(height_i);
     out_bytes = sub_i ? {width_i, 1'b0} : {1'b0, width_i};
     misaligned = 1'b0;
     past       = 1'b0;
@@ -149,14 +179,15 @@ module mcadsw_cfg_check #(
     fail[11] = lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
                         base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
                         base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
-    in_size_o  = in_size;
-    size_o     = size;
-    out_size_o = out_size;
     ok_o  = fail == '0;
     err_o = mcadsw_pkg::ErrNone;
     for (int c = NCHECK - 1; c >= 0; c--)
       if (fail[c]) err_o = CODES[c*mcadsw_pkg::ERR_BITS +: mcadsw_pkg::ERR_BITS];
   end
+
+  assign in_size_o  = in_size;
+  assign size_o     = size;
+  assign out_size_o = out_size;
 
 endmodule
 

@@ -171,6 +171,9 @@ module mcadsw_engine #(
   logic cfg_ok;
   logic [SB-1:0] in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
+    .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_stride_i),
+    .cap_out_stride_i (cfg_out_stride_i), .cap_tile_stride_i (cfg_tile_stride_i),
+    .cap_width_i (cfg_width_i), .cap_height_i (cfg_height_i),
     .base_ly_i (cfg_ly_q), .base_lu_i (cfg_lu_q), .base_lv_i (cfg_lv_q),
     .base_ry_i (cfg_ry_q), .base_ru_i (cfg_ru_q), .base_rv_i (cfg_rv_q),
     .base_out_i (cfg_out_q), .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q),
@@ -402,10 +405,7 @@ module mcadsw_engine #(
   // LY LU LV RY RU RV.
   logic [5:0] rect_planes;
   assign rect_planes = lr_q ? 6'b111111 : cfg_right_q ? 6'b111001 : 6'b001111;
-  // The engine's plane sizes for the check, registered (the configuration is fixed
-  // from the cycle after the start; the check starts two cycles later).
-  logic [SB-1:0] in_size_q, size_q, out_size_q;
-  always_ff @(posedge clk_i) {in_size_q, size_q, out_size_q} <= {in_size, size, out_size};
+  // The engine's plane sizes for the check: registered with the configuration.
   logic rchk_busy_unused;
   mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
     .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
@@ -415,13 +415,13 @@ module mcadsw_engine #(
     .planes_i (rect_planes),
     .raw_base_i ({raw_rv_q, raw_ru_q, raw_ry_q, raw_lv_q, raw_lu_q, raw_ly_q}),
     .rect_base_i ({cfg_rv_q, cfg_ru_q, cfg_ry_q, cfg_lv_q, cfg_lu_q, cfg_ly_q}),
-    .rect_size_i (in_size_q),
+    .rect_size_i (in_size),
     .mesh_base_i ({mesh_r_q, mesh_l_q}), .valid_base_i ({valid_r_q, valid_l_q}),
     .mesh_nx_i (mesh_nx_q), .mesh_ny_i (mesh_ny_q),
     // The frame's output planes (mcadsw_cfg_check's write list): the first pass's
     // (the disparity plane, or dL in the LR mode), dR, the disparity plane, the mask.
     .out_base_i ({cfg_mask_q, cfg_out_q, cfg_dr_q, lr_q ? cfg_dl_q : cfg_out_q}),
-    .out_size_i ({size_q, out_size_q, size_q, out_size_q}),
+    .out_size_i ({size, out_size, size, out_size}),
     .outs_i ({lr_q, lr_q, lr_q, 1'b1})
   );
 
