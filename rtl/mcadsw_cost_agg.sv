@@ -287,9 +287,13 @@ module mcadsw_cost_agg #(
   logic                  fc_valid;
   logic [P*HAGG*FB-1:0]  fc;     // copy p, pixel m at (p HAGG + m) FB: the WTA's order
 
+  // FPGA target at P = 1: two of the three horizontal aggregators multiply on the
+  // device's multipliers (62 of the ECP5-85F's 156; the rest of the SoC uses 72, so
+  // all 93 terms would not fit); at P > 1 every term stays a shift.
+  localparam int MULT_AGGS = (mcadsw_pkg::FPGA != 0 && P == 1) ? HAGG - 1 : 0;
   for (genvar p = 0; p < P; p++) begin : g_horz
     mcadsw_horz_agg #(
-      .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB)
+      .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB), .MULT_AGGS(MULT_AGGS)
     ) u_horz_agg (
       .clk_i, .rst_ni,
       .valid_i (h2_valid_q),

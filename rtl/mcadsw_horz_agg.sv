@@ -13,7 +13,10 @@ module mcadsw_horz_agg #(
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int VB     = mcadsw_pkg::VCOST_BITS,
   parameter int FB     = mcadsw_pkg::FCOST_BITS,
-  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA)           // sums as carry-chain adder trees
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),          // sums as carry-chain adder trees
+  // FPGA target: aggregators 0 .. MULT_AGGS - 1 form their terms as products on the
+  // device's multipliers (cost x weight) instead of shifts in LUTs
+  parameter int MULT_AGGS = 0
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -31,6 +34,11 @@ module mcadsw_horz_agg #(
   function automatic logic [FB-1:0] weigh(input logic [VB-1:0] ev, input logic [WB-1:0] e);
     if (e == '0) weigh = '0;
     else weigh = FB'(ev) << (e - WB'(1));
+  endfunction
+  // The weight of code e (0, or 2^(e-1)), for a product.
+  localparam int WVB = (1 << WB) - 1;
+  function automatic logic [WVB-1:0] weight_of(input logic [WB-1:0] e);
+    weight_of = (e == '0) ? '0 : WVB'(1) << (e - WB'(1));
   endfunction
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -50,7 +58,11 @@ module mcadsw_horz_agg #(
       for (genvar j = 0; j < WINDOW; j++) begin : g_term
         logic [FB-1:0] t;
         logic [FB-TB-1:0] t_unused;
-        assign t = weigh(ev_i[(m + j)*VB +: VB], wh_i[(m*WINDOW + j)*WB +: WB]);
+        if (m < MULT_AGGS) begin : g_mult
+          assign t = FB'(ev_i[(m + j)*VB +: VB]) * FB'(weight_of(wh_i[(m*WINDOW + j)*WB +: WB]));
+        end else begin : g_shift
+          assign t = weigh(ev_i[(m + j)*VB +: VB], wh_i[(m*WINDOW + j)*WB +: WB]);
+        end
         assign terms[j*TB +: TB] = t[TB-1:0];
         assign t_unused = t[FB-1:TB];
       end
