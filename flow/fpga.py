@@ -149,7 +149,8 @@ def report(root, sim_summary):
     bars = []
     for k, v in e["need"].items():
         if k != "TRELLIS_FF":
-            bars.append((f"ECP5 {k}", f"{v['used']} of {v['available']}", v["used"] <= v["available"]))
+            bars.append((f"ECP5 {k} (packed by nextpnr)", f"{v['used']} of {v['available']}",
+                         v["used"] <= v["available"]))
     if e.get("utilization"):
         for k, v in e["utilization"].items():
             if k in ("TRELLIS_COMB", "DP16KD", "MULT18X18D"):
@@ -170,7 +171,8 @@ def report(root, sim_summary):
     summary = {"dmax": e["dmax"], "par": e["par"], "target": e["target"],
                "cif_d64_cycles": {"raw": raw, "lr": lr}, "ecp5": e, "xc7z020": x,
                "fmax_mhz": fmax, "fps_cif_d64": fps, "fmax_needed_mhz": need_mhz and round(need_mhz, 2),
-               "steps": {"ecp5_synth": e["synth"], "ecp5_place_route": e.get("place_route"),
+               "steps": {"ecp5_synth": e["synth"], "ecp5_pack": e.get("pack"),
+                         "ecp5_place_route": e.get("place_route"),
                          "xc7_synth": {"seconds": x.get("yosys_seconds"), "peak_MB": x.get("peak_MB")}},
                "bars": [{"bar": b, "value": v, "met": ok} for b, v, ok in bars]}
     (root / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
