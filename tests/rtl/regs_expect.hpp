@@ -28,6 +28,14 @@ inline std::map<uint32_t, uint32_t> writable_bits() {
   for (int i = 0; i < kWeightThresholds; ++i) m[kThr0 + 4 * uint32_t(i)] = low_bits(kThrBits);
   m[kIrqEnable] = (1u << kIrqDoneLsb) | (1u << kIrqErrorLsb);
   m[kCtrl] = low_bits(kCtrlModeWidth) << kCtrlModeLsb;
+  // Rectification (register map 1.2)
+  m[kRectCtrl] = (1u << kRectEnableLsb) | (low_bits(kRectStepWidth) << kRectStepLsb);
+  m[kRawSize] = m[kSize];
+  m[kRawStride] = ~0u;
+  for (uint32_t o = kRawLy; o < kMeshL; o += 4) m[o] = ~0u;
+  m[kMeshL] = m[kMeshR] = ~0u;
+  m[kMeshNodes] = (low_bits(kSizeBits) << kMeshNxLsb) | (low_bits(kSizeBits) << kMeshNyLsb);
+  m[kValidL] = m[kValidR] = ~0u;
   return m;
 }
 
