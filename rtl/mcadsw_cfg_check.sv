@@ -8,7 +8,7 @@
 // before anything is read or written. The plane sizes (products of a stride and a
 // height) are the one registered part: computed from the configuration as it is
 // registered (cap_*_i at capture_i, the engine's start), so that no multiplier lies
-// in front of the 44-bit compares in the check's cycle.
+// in front of the address compares in the check's cycle.
 //
 // Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
 // address space. The planes a mode reads and writes (docs/memory_map.md):

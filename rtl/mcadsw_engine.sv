@@ -405,7 +405,7 @@ module mcadsw_engine #(
   // LY LU LV RY RU RV.
   logic [5:0] rect_planes;
   assign rect_planes = lr_q ? 6'b111111 : cfg_right_q ? 6'b111001 : 6'b001111;
-  // The engine's plane sizes for the check: registered with the configuration.
+  // in_size, size, out_size (mcadsw_cfg_check's) are registered with the configuration.
   logic rchk_busy_unused;
   mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
     .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
