@@ -223,9 +223,8 @@ module mcadsw_cost_agg #(
   logic [RB-1:0] h0_row_q, h1_row_q, h2_row_q, h3_row_q;
   logic [DB-1:0] h0_d_q, h1_d_q, h2_d_q, h3_d_q;
   logic [GB-1:0] h0_grp_q, h1_grp_q, h2_grp_q, h3_grp_q;
-  logic [CLB-1:0] h0_lcol_q, h1_lcol_q;
   localparam int PPW = (WINDOW + HAGG - 1) * VB;   // one copy's ping-pong read
-  logic [P*PPW-1:0] pp_rd, pp_rd_q;
+  logic [P*PPW-1:0] pp_rd_q;     // the read of h1, registered in the buffer
 
   for (genvar p = 0; p < P; p++) begin : g_pingpong
     mcadsw_pingpong #(
@@ -236,22 +235,23 @@ module mcadsw_cost_agg #(
       .wr_bank_i (wbank_q),
       .wr_grp_i  (v2_grp_q),
       .wr_data_i (ev[p*LANES*VB +: LANES*VB]),
+      .wr_last_i (v2_lcol_q),
+      .rd_en_i   (h1_valid_q),
       .rd_bank_i (h1_bank_q),
       .rd_grp_i  (h1_grp_q),
-      .rd_last_i (h1_lcol_q),
-      .rd_data_o (pp_rd[p*PPW +: PPW])
+      .rd_data_o (pp_rd_q[p*PPW +: PPW])
     );
   end
 
   // ---- Horizontal side: 6 output groups per full bank --------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q,
        h0_slot_q, h0_lanes_q} <= '0;
     end else if (bank_full) begin
-      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q, h0_lcol_q,
+      {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q,
        h0_slot_q, h0_lanes_q} <= {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0),
-                                  v2_lcol_q, v2_slot_q, v2_lanes_q};
+                                  v2_slot_q, v2_lanes_q};
     end else if (h0_valid_q) begin
       h0_valid_q <= h0_grp_q != GB'(GROUPS - 1);
       h0_grp_q   <= h0_grp_q + GB'(1);
@@ -266,20 +266,18 @@ module mcadsw_cost_agg #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q,
        h1_slot_q, h1_lanes_q} <= '0;
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q} <= '0;
       {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <= '0;
-      pp_rd_q <= '0;
     end else begin
-      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q, h1_lcol_q,
+      {h1_valid_q, h1_first_q, h1_last_q, h1_bank_q, h1_row_q, h1_d_q, h1_grp_q,
        h1_slot_q, h1_lanes_q} <= {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q,
-                                  h0_grp_q, h0_lcol_q, h0_slot_q, h0_lanes_q};
+                                  h0_grp_q, h0_slot_q, h0_lanes_q};
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q} <=
           {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q, h1_lanes_q};
       {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <=
           {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q};
-      if (h1_valid_q) pp_rd_q <= pp_rd;
     end
   end
 
@@ -364,6 +362,25 @@ module mcadsw_cost_agg #(
   // has finished the previous one.
   `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
   `MCADSW_ASSERT(BankHandedOverWhenRead, !(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
+
+  // The ping-pong buffer clamps at the border as it writes, so it takes a bank's
+  // groups in order 0, 1, .., GROUPS - 1; its shifted read (FPGA target) takes them
+  // so too, in consecutive cycles. A write or read of group g > 0 follows that of g - 1.
+`ifdef MCADSW_CHECKS
+  // verilator coverage_off
+  logic          v2_was_valid_q, h1_was_valid_q;
+  logic [GB-1:0] v2_was_grp_q, h1_was_grp_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) {v2_was_valid_q, v2_was_grp_q, h1_was_valid_q, h1_was_grp_q} <= '0;
+    else {v2_was_valid_q, v2_was_grp_q, h1_was_valid_q, h1_was_grp_q} <=
+        {v2_valid_q, v2_grp_q, h1_valid_q, h1_grp_q};
+  end
+  // verilator coverage_on
+`endif
+  `MCADSW_ASSERT(WriteGroupsInOrder, !(v2_valid_q && v2_grp_q != '0 &&
+                                       !(v2_was_valid_q && v2_was_grp_q + GB'(1) == v2_grp_q)))
+  `MCADSW_ASSERT(ReadGroupsInOrder, !(h1_valid_q && h1_grp_q != '0 &&
+                                      !(h1_was_valid_q && h1_was_grp_q + GB'(1) == h1_grp_q)))
 
 `ifdef FORMAL
   // Ping-pong ownership, proven by `make formal` (formal/cost_agg_props.sv): a

@@ -25,6 +25,7 @@ module mcadsw_depth_fifo #(
   parameter int ROWSQ = 4,                    // rows queued or in flight
   parameter int AW    = 32,
   parameter int CW    = 12,
+  parameter bit FPGA  = 1'(mcadsw_pkg::FPGA),  // values in four LUT-RAM banks (below)
   parameter int GB    = $clog2(BLOCK / HAGG)
 ) (
   input  logic               clk_i,
@@ -57,9 +58,8 @@ module mcadsw_depth_fifo #(
   localparam int PB = (ROWSQ > 1) ? $clog2(ROWSQ) : 1;
   localparam int DESC = AW + CW + 5;
 
-  // Row slots: descriptor and the BLOCK values of each queued row.
+  // Row slots: descriptor and (below) the BLOCK values of each queued row.
   logic [ROWSQ*DESC-1:0]      desc_q;
-  logic [ROWSQ*BLOCK*VB-1:0]  pix_q;
   logic [PB-1:0]              head_q, tail_q, fill_q;  // oldest row, next free, row being filled
   logic [QB-1:0]              count_q;                  // rows with a descriptor
   logic [QB-1:0]              ready_q;                  // rows complete, not yet written
@@ -96,34 +96,111 @@ module mcadsw_depth_fifo #(
   assign mem_x = !mirror_i ? word_x :
                  {1'b0, xend_i} - word_x - (wide_i ? (CW + 1)'(2) : (CW + 1)'(4));
 
-  // The head row's values: a ROWSQ:1 selection shared by the four byte lanes,
-  // then a BLOCK:1 selection each.
-  logic [BLOCK*VB-1:0] h_row;
-  always_comb begin
-    h_row = '0;
-    for (int r = 0; r < ROWSQ; r++)
-      if (head_q == PB'(r)) h_row = pix_q[r*BLOCK*VB +: BLOCK*VB];
-  end
-
+  // Byte b of the word: pass column word_x + its offset in the word, place p in
+  // the row, enable, value v (VB bits).
+  logic [4*5-1:0]  byte_p;
+  logic [4*VB-1:0] byte_v;
   for (genvar b = 0; b < 4; b++) begin : g_byte
     // The pass column byte b belongs to.
     localparam int OFS_RAW = b, OFS_WIDE = b / 2, OFS_RAW_M = 3 - b, OFS_WIDE_M = 1 - b / 2;
     logic [CW:0]   x;
     logic [4:0]    p;                  // its place in the row
-    logic [VB-1:0] v;
     logic [15:0]   v16;
     assign x = word_x + (!mirror_i ? (wide_i ? (CW + 1)'(OFS_WIDE) : (CW + 1)'(OFS_RAW))
                                     : (wide_i ? (CW + 1)'(OFS_WIDE_M) : (CW + 1)'(OFS_RAW_M)));
     assign p = 5'(x - {1'b0, h_x});
+    assign byte_p[b*5 +: 5] = p;
     assign wr_be_o[b] = x >= {1'b0, h_first} && x < h_end;
-    always_comb begin
-      v = '0;
-      for (int i = 0; i < BLOCK; i++)
-        if (p == 5'(i)) v = h_row[i*VB +: VB];
-    end
-    assign v16 = 16'(v);
+    assign v16 = 16'(byte_v[b*VB +: VB]);
     assign wr_wdata_o[b*8 +: 8] = !wr_be_o[b] ? 8'h00 :
                                   (wide_i && b % 2 == 1) ? v16[15:8] : v16[7:0];
+  end
+
+  // Row slots' values. Writes: the aggregator's group g holds places HAGG*g ..
+  // HAGG*g + HAGG - 1 of the row being filled.
+  if (FPGA) begin : g_ram
+    // FPGA target: four banks of LUT RAM, place p of slot r in bank p % 4 at word
+    // {r, p / 4}. A group's HAGG <= 4 consecutive places fall in distinct banks, and
+    // a word's 4 (raw) or 2 (wide) consecutive places too: one write and one read
+    // port a bank, and a 4:1 select a byte instead of a BLOCK:1 one.
+    localparam int WPR = (BLOCK + 3) / 4;            // words of a row in a bank
+    localparam int WRB = $clog2(WPR);
+    if (HAGG > 4) begin : g_bad_param
+      mcadsw_error_depth_fifo_hagg u_error ();
+    end
+    logic [4*VB-1:0] bank_rd;
+    logic [4:0]      plo;              // the place of the word's lowest column
+    assign plo = 5'(word_x - {1'b0, h_x});
+    for (genvar k = 0; k < 4; k++) begin : g_bank
+      logic [VB-1:0]      mem [ROWSQ * (1 << WRB)];
+      logic               we;
+      logic [WRB-1:0]     wword;
+      logic [VB-1:0]      wdata;
+      logic [4:0]         rp;          // the place of the word this bank holds
+      always_comb begin
+        we = 1'b0;
+        wword = '0;
+        wdata = '0;
+        for (int g = 0; g < BLOCK / HAGG; g++)
+          for (int j = 0; j < HAGG; j++)
+            if ((g*HAGG + j) % 4 == k && disp_grp_i == GB'(g)) begin
+              we = disp_valid_i;
+              wword = WRB'((g*HAGG + j) / 4);
+              wdata = disp_i[j*VB +: VB];
+            end
+      end
+      always_ff @(posedge clk_i)
+        if (we) mem[{fill_q, wword}] <= wdata;
+      // Of the word's places plo .. plo + 3, the one in this bank.
+      assign rp = plo + 5'((k - 32'(plo)) & 3);
+      assign bank_rd[k*VB +: VB] = mem[{head_q, WRB'(rp >> 2)}];
+    end
+    for (genvar b = 0; b < 4; b++) begin : g_sel
+      logic [VB-1:0] v;
+      logic [1:0]    bk;
+      assign bk = byte_p[b*5 +: 2];
+      always_comb begin
+        v = '0;
+        for (int k = 0; k < 4; k++)
+          if (bk == 2'(k)) v = bank_rd[k*VB +: VB];
+      end
+      assign byte_v[b*VB +: VB] = v;
+    end
+    logic p_unused;                    // a byte's bank is its place's two low bits
+    assign p_unused = ^byte_p;
+  end else begin : g_regs
+    // ASIC target: the slots in flip-flops; the head row a ROWSQ:1 selection shared
+    // by the four byte lanes, then a BLOCK:1 selection each.
+    logic [ROWSQ*BLOCK*VB-1:0] pix_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        pix_q <= '0;
+      end else if (disp_valid_i) begin
+        // Decoded slot by slot and group by group (constant part-selects): a
+        // part-select at a computed offset would be a bit-granular shifter.
+        for (int r = 0; r < ROWSQ; r++)
+          for (int g = 0; g < BLOCK / HAGG; g++)
+            if (fill_q == PB'(r) && disp_grp_i == GB'(g))
+              pix_q[(r*BLOCK + g*HAGG)*VB +: HAGG*VB] <= disp_i;
+      end
+    end
+    logic [BLOCK*VB-1:0] h_row;
+    always_comb begin
+      h_row = '0;
+      for (int r = 0; r < ROWSQ; r++)
+        if (head_q == PB'(r)) h_row = pix_q[r*BLOCK*VB +: BLOCK*VB];
+    end
+    for (genvar b = 0; b < 4; b++) begin : g_sel
+      logic [VB-1:0] v;
+      logic [4:0]    p;
+      assign p = byte_p[b*5 +: 5];
+      always_comb begin
+        v = '0;
+        for (int i = 0; i < BLOCK; i++)
+          if (p == 5'(i)) v = h_row[i*VB +: VB];
+      end
+      assign byte_v[b*VB +: VB] = v;
+    end
   end
   assign wr_req_o  = ready_q != '0;
   assign wr_addr_o = h_addr + (wide_i ? AW'({mem_x, 1'b0}) : AW'(mem_x));
@@ -136,7 +213,6 @@ module mcadsw_depth_fifo #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       desc_q  <= '0;
-      pix_q   <= '0;
       head_q  <= '0;
       tail_q  <= '0;
       fill_q  <= '0;
@@ -144,20 +220,15 @@ module mcadsw_depth_fifo #(
       ready_q <= '0;
       wofs_q  <= '0;
     end else begin
-      // Writes decoded slot by slot and group by group (constant part-selects): a
-      // part-select at a computed offset would be a bit-granular shifter.
+      // Decoded slot by slot (constant part-selects): a part-select at a computed
+      // offset would be a bit-granular shifter.
       if (desc_push_i) begin
         for (int r = 0; r < ROWSQ; r++)
           if (tail_q == PB'(r)) desc_q[r*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
         tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
       end
-      if (disp_valid_i) begin
-        for (int r = 0; r < ROWSQ; r++)
-          for (int g = 0; g < BLOCK / HAGG; g++)
-            if (fill_q == PB'(r) && disp_grp_i == GB'(g))
-              pix_q[(r*BLOCK + g*HAGG)*VB +: HAGG*VB] <= disp_i;
-        if (disp_grp_i == GB'(BLOCK / HAGG - 1)) fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
-      end
+      if (disp_valid_i && disp_grp_i == GB'(BLOCK / HAGG - 1))
+        fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
       if (wr_req_o && wr_gnt_i) begin
         wofs_q <= wofs_q + (wide_i ? 5'd2 : 5'd4);
         if (row_written) begin
