@@ -37,28 +37,33 @@ build: configure
 test: build
 	@cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 
-# A configuration's build: DMAX=, PAR= or FPGA=1 on the command line select
-# build/dmax<DMAX>_par<PAR>[_fpga] (defaults 64, 1 and the ASIC target); otherwise the
-# default build.
+# A configuration's build: DMAX=, PAR=, FPGA=1 or RECT=0 on the command line select
+# build/dmax<DMAX>_par<PAR>[_fpga][_norect] (defaults 64, 1, the ASIC target, the
+# rectifier built in); otherwise the default build.
 ifneq ($(filter-out 0 1,$(or $(FPGA),0)),)
 $(error FPGA=$(FPGA): 1 builds the FPGA target, 0 or nothing the ASIC's)
 endif
+ifneq ($(filter-out 0 1,$(or $(RECT),1)),)
+$(error RECT=$(RECT): 0 builds the engine without the rectifier, 1 or nothing with it)
+endif
+comma   := ,
 FPGA_ON := $(filter 1,$(FPGA))
-CFG_SET := $(strip $(DMAX)$(PAR)$(FPGA_ON))
-CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1)$(if $(FPGA_ON),_fpga),$(BUILD_DIR))
+NORECT  := $(filter 0,$(RECT))
+CFG_SET := $(strip $(DMAX)$(PAR)$(FPGA_ON)$(NORECT))
+CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1)$(if $(FPGA_ON),_fpga)$(if $(NORECT),_norect),$(BUILD_DIR))
 CFG_DEP := $(if $(CFG_SET),sim-build,build)
 
-## sim-build: DMAX=<n> PAR=<p> FPGA=1: the reference, RTL and harness for DMAX (1..128) disparities,
-##   PAR (1, 2, 4) a step, the FPGA target's memory shapes, in build/dmax<n>_par<p>[_fpga]; make sim
-##   and sim-random with DMAX=, PAR= or FPGA=1 use it
+## sim-build: DMAX=<n> PAR=<p> FPGA=1 RECT=0: the reference, RTL and harness for DMAX (1..128)
+##   disparities, PAR (1, 2, 4) a step, the FPGA target's memory shapes, without the rectifier, in
+##   build/dmax<n>_par<p>[_fpga][_norect]; make sim and sim-random with DMAX=, PAR=, FPGA=1 or RECT=0 use it
 sim-build: bootstrap
 	@cmake -S . -B $(CFG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX=$(or $(DMAX),64) \
-	  -DMCADSW_PAR=$(or $(PAR),1) -DMCADSW_FPGA=$(if $(FPGA_ON),ON,OFF) > /dev/null
+	  -DMCADSW_PAR=$(or $(PAR),1) -DMCADSW_FPGA=$(if $(FPGA_ON),ON,OFF) -DMCADSW_RECT=$(if $(NORECT),OFF,ON) > /dev/null
 	@cmake --build $(CFG_DIR) -j $(JOBS) --target mcadsw_sim mcadsw_sim_random
-	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1), $(if $(FPGA_ON),FPGA,ASIC) target)"
+	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1), $(if $(FPGA_ON),FPGA,ASIC) target$(if $(NORECT),$(comma) without the rectifier))"
 
 ## sim: the engine regression on the bundled pairs, every pixel against the reference
-##   (build/sim/summary.json; CASE=<name> one case, WAVES=1 an FST, DMAX= PAR= FPGA=1 a configuration)
+##   (build/sim/summary.json; CASE=<name> one case, WAVES=1 an FST, DMAX= PAR= FPGA=1 RECT=0 a configuration)
 sim: $(CFG_DEP)
 	@scripts/sim_regression.sh $(CFG_DIR) "$(CASE)" "$(WAVES)"
 
@@ -114,7 +119,8 @@ power: gen-rtl-pkg
 	  --gen-rtl-pkg $(GEN_RTL_PKG)
 
 ## fpga: the FPGA target of the SoC: ECP5 synth_ecp5 in the ULX3S shell, cells by block, place and route
-##   and bitstream (nextpnr-ecp5, ecppack) when it fits; XC7Z020 estimate (Yosys synth_xilinx); bars and
+##   and bitstream (nextpnr-ecp5, ecppack) when it fits, and the same without the rectifier beside it
+##   (build/fpga/ecp5_norect); XC7Z020 estimate (Yosys synth_xilinx); bars and
 ##   frames a second from make sim FPGA=1 (build/fpga/summary.json, report.md; DMAX= PAR= as make synth;
 ##   TOP=mcadsw_regs a quick 7-series check, in build/fpga_<module>)
 FPGA_ROOT := $(abspath $(BUILD_DIR))/$(if $(filter-out 64_1,$(or $(DMAX),64)_$(or $(PAR),1)),fpga_dmax$(or $(DMAX),64)_par$(or $(PAR),1),fpga)
@@ -125,6 +131,8 @@ ifneq ($(TOP),)
 	  --top $(TOP) --out $(abspath $(BUILD_DIR))/fpga_$(TOP) --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG)
 else
 	@rc=0; python3 flow/ecp5.py soc --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5 \
+	  --gen-rtl-pkg $(GEN_RTL_PKG) || rc=$$?; [ $$rc -le 1 ] || exit $$rc; \
+	 rc=0; python3 flow/ecp5.py soc --no-rect --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5_norect \
 	  --gen-rtl-pkg $(GEN_RTL_PKG) || rc=$$?; [ $$rc -le 1 ] || exit $$rc; \
 	 python3 flow/synth.py fpga $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --out $(FPGA_ROOT)/xc7 \
 	  --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG) || exit $$?; \

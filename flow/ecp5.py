@@ -295,17 +295,20 @@ def soc(a):
     t0 = time.time()
     fpga = not a.asic
     pkg = out / "mcadsw_pkg.sv"
-    pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, fpga))
+    pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, fpga, no_rect=a.no_rect))
     rtl = ROOT / "rtl"
-    files = [pkg] + [rtl / f for f in rtl_list(no_pkg=True)] + [rtl / "board" / "mcadsw_ulx3s.sv"]
+    modules = rtl_list(no_pkg=True, no_rect=a.no_rect)
+    files = [pkg] + [rtl / f for f in modules] + [rtl / "board" / "mcadsw_ulx3s.sv"]
     target = "FPGA" if fpga else "ASIC"
-    log(f"synth_ecp5 of the SoC in the ULX3S shell ({target} target, DMAX {a.dmax}, PAR {a.par}) into {out}"
-        " (the whole SoC: about 15 minutes, 4 GB)")
+    log(f"synth_ecp5 of the SoC{' without the rectifier' if a.no_rect else ''} in the ULX3S shell "
+        f"({target} target, DMAX {a.dmax}, PAR {a.par}) into {out} (the whole SoC: about 7 minutes, 1.5 GB)")
     s = synth(files, "mcadsw_ulx3s", out, include=rtl)
     total = stat_cells(out / "stat.txt")
     by_mod, insts = cells_by_module(out / "netlist.json")
     # Every module of rtl/mcadsw.f (packages aside) and the shell must have cells of its own.
-    expect = [f[:-3] for f in rtl_list(no_pkg=True) if not f.endswith("_pkg.sv")] + ["board/mcadsw_ulx3s"]
+    # (Without the rectifier, its stand-ins of rect/mcadsw_rect_none.sv have none: left out.)
+    expect = [f[:-3] for f in modules if not f.endswith("_pkg.sv") and not f.endswith("_none.sv")] \
+        + ["board/mcadsw_ulx3s"]
     blocks = {"instances": insts,
               "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in expect}}
     (out / "blocks.json").write_text(json.dumps(blocks, indent=1) + "\n")
@@ -322,7 +325,7 @@ def soc(a):
     log("packed: " + ", ".join(f"{k} {need[k]} of {DEVICE[k]}" for k in DEVICE)
         + f" (before packing: TRELLIS_COMB {estimate['TRELLIS_COMB']})")
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
-               "par": int(a.par), "board": a.board, "freq_mhz": a.freq,
+               "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "freq_mhz": a.freq,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
@@ -387,6 +390,8 @@ def main(argv):
     so.add_argument("--asic", action="store_true", help="the ASIC target's package (default: the FPGA target's)")
     so.add_argument("--dmax", default="64")
     so.add_argument("--par", default="1")
+    so.add_argument("--no-rect", action="store_true",
+                    help="the SoC without the rectifier (gen_rtl_pkg --no-rect, rect/mcadsw_rect_none.sv)")
     so.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
     so.add_argument("--freq", type=float, default=75.0,
                     help="nextpnr's constraint for clocks without one (the lpf and the PLL give the engine's)")

@@ -68,13 +68,20 @@ def indent(lines):
     return "".join(f"  | {line}\n" for line in lines)
 
 
-def rtl_list(no_pkg=False):
-    """The files of rtl/mcadsw.f, relative to the RTL folder."""
+def rtl_list(no_pkg=False, no_rect=False):
+    """The files of rtl/mcadsw.f, relative to the RTL folder; no_rect: the engine without
+    the rectifier (rtl/rect/'s modules replaced by rect/mcadsw_rect_none.sv, as
+    scripts/rtl_files.sh --no-rect)."""
     files = []
     for line in (ROOT / "rtl" / "mcadsw.f").read_text().splitlines():
         line = line.split("//")[0].strip()
-        if line and not (no_pkg and line == "mcadsw_pkg.sv"):
-            files.append(line)
+        if not line or (no_pkg and line == "mcadsw_pkg.sv"):
+            continue
+        if no_rect and line.startswith("rect/") and line != "rect/mcadsw_rect_pkg.sv":
+            continue
+        files.append(line)
+    if no_rect:
+        files.append("rect/mcadsw_rect_none.sv")
     return files
 
 
@@ -191,14 +198,15 @@ class Run:
                 raise
 
 
-def gen_package(gen, dmax, par, fpga=False):
+def gen_package(gen, dmax, par, fpga=False, no_rect=False):
     """The package of the configuration from gen_rtl_pkg, the one check of DMAX
-    and PAR (exit 2 with its message); FPGA: the FPGA target's."""
+    and PAR (exit 2 with its message); FPGA: the FPGA target's; no_rect: without the
+    rectifier (RECT = 0)."""
     if not (Path(gen).is_file() and os.access(gen, os.X_OK)):
         raise FlowError(f"gen_rtl_pkg not found at {gen} (make synth builds it; or: "
                         f"cmake --build build --target gen_rtl_pkg)", 2)
-    r = subprocess.run([gen, "--dmax", dmax, "--par", par] + (["--fpga"] if fpga else []),
-                       capture_output=True, text=True)
+    r = subprocess.run([gen, "--dmax", dmax, "--par", par] + (["--fpga"] if fpga else [])
+                       + (["--no-rect"] if no_rect else []), capture_output=True, text=True)
     if r.returncode != 0:
         raise FlowError(r.stderr.strip() or f"gen_rtl_pkg failed (exit {r.returncode})", 2)
     return r.stdout

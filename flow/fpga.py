@@ -168,17 +168,49 @@ def report(root, sim_summary):
     for name, cyc in (("raw", raw), ("lr", lr)):
         if cyc and fmax:
             fps[name] = round(fmax * 1e6 / cyc, 1)
+    # The SoC without the rectifier (flow/ecp5.py soc --no-rect), when make fpga built it: the
+    # configuration that fits, reported beside the whole SoC with the same cycles (its frames
+    # without rectification are the same frames). Its bars are figures, not the bars.
+    n, n_rows, n_fps = None, [], {}
+    npath = root / "ecp5_norect" / "summary.json"
+    if npath.is_file():
+        n = json.loads(npath.read_text())
+        n_fmax = min((v["achieved"] for v in (n.get("fmax_mhz") or {}).values()), default=None)
+        for k, v in n["need"].items():
+            if k != "TRELLIS_FF":
+                n_rows.append((f"ECP5 {k} (packed by nextpnr)", f"{v['used']} of {v['available']}",
+                               v["used"] <= v["available"]))
+        n_rows.append(("ECP5 placed and routed", "yes" if n.get("place_route") else "no",
+                       bool(n.get("place_route"))))
+        if need_mhz:
+            n_rows.append((f"ECP5 Fmax >= {need_mhz:.1f} MHz", f"{n_fmax:.1f} MHz" if n_fmax else "not placed",
+                           bool(n_fmax and n_fmax >= need_mhz)))
+        for name, cyc in (("raw", raw), ("lr", lr)):
+            if cyc and n_fmax:
+                n_fps[name] = round(n_fmax * 1e6 / cyc, 1)
     summary = {"dmax": e["dmax"], "par": e["par"], "target": e["target"],
                "cif_d64_cycles": {"raw": raw, "lr": lr}, "ecp5": e, "xc7z020": x,
                "fmax_mhz": fmax, "fps_cif_d64": fps, "fmax_needed_mhz": need_mhz and round(need_mhz, 2),
                "steps": {"ecp5_synth": e["synth"], "ecp5_pack": e.get("pack"),
                          "ecp5_place_route": e.get("place_route"),
-                         "xc7_synth": {"seconds": x.get("yosys_seconds"), "peak_MB": x.get("peak_MB")}},
+                         "xc7_synth": {"seconds": x.get("yosys_seconds"), "peak_MB": x.get("peak_MB")},
+                         "ecp5_norect_synth": n and n["synth"], "ecp5_norect_pack": n and n.get("pack"),
+                         "ecp5_norect_place_route": n and n.get("place_route")},
                "bars": [{"bar": b, "value": v, "met": ok} for b, v, ok in bars]}
+    if n:
+        summary["ecp5_norect"] = {"ecp5": n, "fps_cif_d64": n_fps,
+                                  "rows": [{"bar": b, "value": v, "met": ok} for b, v, ok in n_rows]}
     (root / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     md = [f"# make fpga: {e['target']} target, DMAX = {e['dmax']}, PAR = {e['par']}", "",
           "## Bars", "", "| bar | value | met |", "|---|---|---|"]
     md += [f"| {b} | {v} | {'yes' if ok else '**no**'} |" for b, v, ok in bars]
+    if n:
+        md += ["", "## ECP5 without the rectifier (flow/ecp5.py soc --no-rect)", "",
+               "The largest configuration that fits: the same SoC with rtl/rect/mcadsw_rect_none.sv",
+               "for the rectifier (RECT_CTRL.ENABLE rejected, code 24); frames a second "
+               + (f"raw {n_fps.get('raw')}, LR {n_fps.get('lr')}" if n_fps else "not measured") + ".", "",
+               "| figure | value | met |", "|---|---|---|"]
+        md += [f"| {b} | {v} | {'yes' if ok else '**no**'} |" for b, v, ok in n_rows]
     md += ["", f"## ECP5 ({e['board']}): the SoC's cells by RTL module", "",
            "From the flattened netlist, each cell by the source line it keeps (flip-flops, carry",
            "chains, multipliers; ABC's LUTs and the RAMs keep none: `flow/ecp5.py block` gives a",
@@ -196,7 +228,7 @@ def report(root, sim_summary):
     if e.get("problems"):
         md += ["", "## Problems", ""] + [f"- {p}" for p in e["problems"]]
     (root / "report.md").write_text("\n".join(md) + "\n")
-    print("\n".join(md[:len(bars) + 6]))
+    print("\n".join(md[:len(bars) + 6 + (len(n_rows) + 8 if n else 0)]))
     log(f"summary {root / 'summary.json'}, report {root / 'report.md'}")
     return 0 if all(ok for _, _, ok in bars) else 1
 

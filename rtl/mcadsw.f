@@ -6,7 +6,9 @@
 // prints it as paths). One file a line, relative to this folder, the package
 // first; `verilator -f mcadsw.f` and `iverilog -c mcadsw.f` work from rtl/.
 // A configuration other than DMAX 64 / PAR 1 replaces mcadsw_pkg.sv with its own
-// (make sim-build, make synth DMAX=<n> PAR=<p>).
+// (make sim-build, make synth DMAX=<n> PAR=<p>). A build without the rectifier
+// (package RECT = 0) reads rect/mcadsw_rect_none.sv instead of the rect/ modules
+// below (scripts/rtl_files.sh --no-rect).
 mcadsw_pkg.sv
 rect/mcadsw_rect_pkg.sv
 mcadsw_axi_master.sv

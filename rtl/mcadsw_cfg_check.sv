@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Configuration check of a frame (docs/registers.md, error codes 1-12): the
+// Configuration check of a frame (docs/registers.md, error codes 1-12 and 24): the
 // configuration the engine registered at the start, checked in the cycle after it.
 // Combinational: the engine registers err_o and ok_o at the end of that cycle, and the
 // frame controller samples them in its Check state; a non-zero code rejects the start
@@ -53,6 +53,7 @@ module mcadsw_cfg_check #(
   input  logic            sub_i,             // sub-pixel output
   input  logic            lr_i,              // LR mode
   input  logic            right_i,           // right view as base
+  input  logic            rect_i,            // RECT_CTRL.ENABLE
   input  logic [7:0]      lr_t_i,
   input  logic [CW-1:0]   width_i,
   input  logic [CW-1:0]   height_i,
@@ -68,9 +69,10 @@ module mcadsw_cfg_check #(
 );
 
   // The checks in priority order, check c failing gives code CODES[c].
-  localparam int NCHECK = 12;
+  localparam int NCHECK = 13;
   localparam int EB = mcadsw_pkg::ERR_BITS;
   localparam logic [NCHECK*EB-1:0] CODES = {
+    EB'(mcadsw_pkg::ErrNoRect),
     EB'(mcadsw_pkg::ErrLrColour), EB'(mcadsw_pkg::ErrLrWidth), EB'(mcadsw_pkg::ErrLrTolerance),
     EB'(mcadsw_pkg::ErrBeyond), EB'(mcadsw_pkg::ErrMode), EB'(mcadsw_pkg::ErrOutStride),
     EB'(mcadsw_pkg::ErrOverlap), EB'(mcadsw_pkg::ErrAlign), EB'(mcadsw_pkg::ErrStride),
@@ -179,6 +181,8 @@ module mcadsw_cfg_check #(
     fail[11] = lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
                         base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
                         base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
+    // A build without the rectifier (mcadsw_pkg::RECT 0) rejects rectification.
+    fail[12] = rect_i && mcadsw_pkg::RECT == 0;
     ok_o  = fail == '0;
     err_o = mcadsw_pkg::ErrNone;
     for (int c = NCHECK - 1; c >= 0; c--)

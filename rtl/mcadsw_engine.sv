@@ -179,7 +179,7 @@ module mcadsw_engine #(
     .base_out_i (cfg_out_q), .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q),
     .base_mask_i (cfg_mask_q), .stride_i (stride_q), .out_stride_i (out_stride_q),
     .tile_stride_i (tile_q),
-    .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .lr_t_i (lr_t_q),
+    .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .rect_i (rect_q), .lr_t_i (lr_t_q),
     .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
     .err_o (cfg_err), .ok_o (cfg_ok),
     .in_size_o (in_size), .size_o (size), .out_size_o (out_size)

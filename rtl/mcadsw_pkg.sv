@@ -18,6 +18,7 @@ package mcadsw_pkg;
   localparam int DISP_BITS        = 6;  // disparity 0..DMAX-1
   localparam int PAR              = 1;  // disparities a step (1, 2, 4)
   localparam int FPGA             = 0;  // target: 0 the ASIC, 1 an FPGA (block-RAM shapes)
+  localparam int RECT             = 1;  // the rectifier: 1 built in, 0 left out
   localparam int BLOCK            = 18;  // output block 18x18
   localparam int LANES            = 8;  // vertical aggregation lanes
   localparam int HAGG             = 3;  // horizontal aggregators
@@ -44,7 +45,7 @@ package mcadsw_pkg;
   localparam int REG_SPAN = 256;  // bytes decoded
   localparam logic [31:0] ID_VALUE = 32'h4D434144;
   localparam int VERSION_MAJOR = 1;
-  localparam int VERSION_MINOR = 2;
+  localparam int VERSION_MINOR = 3;
   // Byte offsets
   localparam int REG_ID             = 'h00;  // RO identification, "MCAD"
   localparam int REG_VERSION        = 'h04;  // RO register map version
@@ -95,7 +96,7 @@ package mcadsw_pkg;
   localparam int REG_VALID_L        = 'hC0;  // RW rectification: the left view's validity bitmap (written)
   localparam int REG_VALID_R        = 'hC4;  // RW rectification: the right view's validity bitmap (written)
   // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,
-  // 13..15 a frame ended early, 16..23 rectification (docs/registers.md)
+  // 13..15 a frame ended early, 16..23 rectification, 24 no rectifier (docs/registers.md)
   localparam int ERR_BITS = 5;
   typedef enum logic [ERR_BITS-1:0] {
     ErrNone          = 5'd0,
@@ -121,7 +122,8 @@ package mcadsw_pkg;
     ErrRectOverlap   = 5'd20,
     ErrRectBeyond    = 5'd21,
     ErrMeshRange     = 5'd22,
-    ErrRectFootprint = 5'd23
+    ErrRectFootprint = 5'd23,
+    ErrNoRect        = 5'd24
   } err_e;
   // Fields: <register>_<field>_LSB and _W
   localparam int ID_VALUE_LSB           = 0;
@@ -134,6 +136,8 @@ package mcadsw_pkg;
   localparam int HWCONFIG_DMAX_W        = 8;
   localparam int HWCONFIG_PAR_LSB       = 8;
   localparam int HWCONFIG_PAR_W         = 4;
+  localparam int HWCONFIG_NORECT_LSB    = 12;
+  localparam int HWCONFIG_NORECT_W      = 1;
   localparam int CTRL_START_LSB         = 0;
   localparam int CTRL_START_W           = 1;
   localparam int CTRL_ABORT_LSB         = 1;

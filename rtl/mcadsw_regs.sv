@@ -362,7 +362,8 @@ module mcadsw_regs #(
   assign cur[S_VER*32 +: 32]    = 32'(mcadsw_pkg::VERSION_MAJOR << mcadsw_pkg::VERSION_MAJOR_LSB) |
                                   32'(mcadsw_pkg::VERSION_MINOR << mcadsw_pkg::VERSION_MINOR_LSB);
   assign cur[S_HWCFG*32 +: 32]  = 32'(DMAX << mcadsw_pkg::HWCONFIG_DMAX_LSB) |
-                                  32'(PAR << mcadsw_pkg::HWCONFIG_PAR_LSB);
+                                  32'(PAR << mcadsw_pkg::HWCONFIG_PAR_LSB) |
+                                  32'((mcadsw_pkg::RECT == 0 ? 1 : 0) << mcadsw_pkg::HWCONFIG_NORECT_LSB);
   assign cur[S_CTRL*32 +: 32]   = 32'(mode_q) << F_MODE;
   assign cur[S_STATUS*32 +: 32] = (32'(busy_i) << F_BUSY) | (32'(done_q) << F_DONE) |
                                   (32'(error_q) << F_ERROR) | (32'(error_code_i) << F_CODE);

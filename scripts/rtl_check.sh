@@ -12,7 +12,8 @@
 #                                  primitives they instantiate from tests/fpga/ecp5_cells_stub.sv)
 # A second argument, a package file, replaces rtl/mcadsw_pkg.sv: another
 # configuration's (the FPGA target's, build/rtl/fpga/mcadsw_pkg.sv, elaborates the
-# branches the default package leaves out).
+# branches the default package leaves out); a package with RECT = 0 is checked with the
+# file list without the rectifier (scripts/rtl_files.sh --no-rect).
 # Exits non-zero on any warning or error. Used by `make lint` and by ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -36,7 +37,9 @@ in_list() {
   for item in "$@"; do [ "$item" = "$needle" ] && return 0; done
   return 1
 }
-list=$("$root/scripts/rtl_files.sh" --no-pkg .) || { echo "rtl_check: scripts/rtl_files.sh failed" >&2; exit 1; }
+norect=()
+if [ -n "$alt_pkg" ] && grep -qE 'localparam int RECT +=  *0;' "$alt_pkg"; then norect=(--no-rect); fi
+list=$("$root/scripts/rtl_files.sh" --no-pkg "${norect[@]}" .) || { echo "rtl_check: scripts/rtl_files.sh failed" >&2; exit 1; }
 mapfile -t listed <<< "${list//.\//}"
 mods=()
 for f in "${listed[@]}"; do
@@ -47,15 +50,19 @@ for p in "${pkgs[@]:1}"; do
   in_list "$p" "${listed[@]}" || { echo "rtl_check: rtl/$p is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 # The list is the one every tool reads: a source file it does not name is an error
-# (rtl/rect/rect.f, the rectifier's own list for its block tests, is not read here).
+# (rtl/rect/rect.f, the rectifier's own list for its block tests, is not read here;
+# rect/mcadsw_rect_none.sv replaces the rect/ modules without the rectifier, and the
+# rect/ modules it replaces are not in that list).
 for f in *.sv rect/*.sv; do
+  [ "$f" = rect/mcadsw_rect_none.sv ] && continue
+  [ ${#norect[@]} -gt 0 ] && [ "${f#rect/}" != "$f" ] && continue
   in_list "$f" "${pkgs[@]}" "${mods[@]}" || { echo "rtl_check: rtl/$f is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 waivers=()
 [ -f lint_waivers.vlt ] && waivers=(lint_waivers.vlt)
 if [ ${#mods[@]} -eq 0 ]; then echo "rtl_check: no RTL modules"; exit 0; fi
 files=("${alt_pkg:-$pkg}" "${pkgs[@]:1}" "${mods[@]}")
-what=${alt_pkg:+ (package $alt_pkg)}
+what=${alt_pkg:+ (package $alt_pkg${norect:+, without the rectifier})}
 
 # lint_top TOP [FILE...]: verilator -Wall of the RTL (and FILEs) with TOP as the top; fails
 # on any warning.
@@ -66,9 +73,14 @@ lint_top() {
   if grep -q '%Warning' <<<"$out"; then echo "$out"; return 1; fi
 }
 
+# tops_of FILE: the modules a file declares (one, named as the file, but for
+# rect/mcadsw_rect_none.sv).
+tops_of() { sed -n 's/^module \([a-z_0-9]*\).*/\1/p' "$1"; }
+
 run_lint() {
+  local top
   for f in "${mods[@]}"; do
-    lint_top "$(basename "${f%.sv}")" || return 1
+    for top in $(tops_of "$f"); do lint_top "$top" || return 1; done
   done
   echo "rtl_check: verilator --lint-only -Wall clean on ${#mods[@]} modules$what"
 }
@@ -96,9 +108,12 @@ run_yosys() {
   # as the top from that parsed design (design -load), each step announced, so a
   # warning or an error names its module.
   local script="read_verilog -sv ${files[*]}; design -save parsed"
+  local n=0
   for f in "${mods[@]}"; do
-    top=$(basename "${f%.sv}")
-    script+="; design -load parsed; log -stdout rtl_check: elaborating $top; hierarchy -check -top $top; proc"
+    for top in $(tops_of "$f"); do
+      script+="; design -load parsed; log -stdout rtl_check: elaborating $top; hierarchy -check -top $top; proc"
+      n=$((n + 1))
+    done
   done
   out=$(yosys -q -p "$script" 2>&1) || {
     echo "$out"; echo "rtl_check: yosys FAILED for $(grep -o 'rtl_check: elaborating [a-z_0-9]*' <<<"$out" | tail -1 | cut -d' ' -f3)" >&2
@@ -106,7 +121,7 @@ run_yosys() {
   if grep -qi 'warning' <<<"$out"; then
     echo "$out"; echo "rtl_check: yosys warned (the module is the last 'elaborating' line above the warning)" >&2; return 1
   fi
-  [ "$(grep -c '^rtl_check: elaborating ' <<<"$out")" = "${#mods[@]}" ] || {
+  [ "$(grep -c '^rtl_check: elaborating ' <<<"$out")" = "$n" ] || {
     echo "$out"; echo "rtl_check: yosys did not elaborate every module" >&2; return 1; }
   echo "rtl_check: yosys 0.23 parses and elaborates ${#mods[@]} modules$what"
 }

@@ -82,12 +82,21 @@ dmax=$(awk -F= '/^MCADSW_DMAX:/ {print $2}' "$build/CMakeCache.txt" 2>/dev/null)
 dmax=${dmax:-64}
 for i in "${!cases[@]}"; do cases[$i]=${cases[$i]//DMAX/$dmax}; done
 
+# A build without the rectifier (CMake MCADSW_RECT=OFF, make sim RECT=0) leaves out the
+# rectified cases, and says so.
+norect=$(awk -F= '/^MCADSW_RECT:/ {print $2}' "$build/CMakeCache.txt" 2>/dev/null)
 selected=()
+skipped=()
 for c in "${cases[@]}"; do
   IFS='|' read -r name set pair d scale extra <<<"$c"
   if [ -n "$only" ] && [ "$only" != "$name" ]; then continue; fi
+  if [ "$norect" = OFF ] && [ "${set#raw/}" != "$set" ]; then skipped+=("$name"); continue; fi
   selected+=("$c")
 done
+if [ ${#skipped[@]} -gt 0 ]; then
+  echo "sim_regression: a build without the rectifier: ${#skipped[@]} rectified case(s) left out (${skipped[*]})"
+  if [ ${#selected[@]} -eq 0 ]; then exit 0; fi
+fi
 if [ ${#selected[@]} -eq 0 ]; then
   echo "sim_regression: unknown case '$only'; cases:" >&2
   for c in "${cases[@]}"; do echo "  ${c%%|*}" >&2; done

@@ -181,6 +181,9 @@ int main(int argc, char** argv) {
     if (!gt.empty() && (masks.empty() || !(scale > 0)))
       throw std::invalid_argument("--gt needs --scale S > 0 and --masks DIR");
     if (!calib.empty() && !mesh.empty()) throw std::invalid_argument("--calib and --mesh do not combine");
+    if ((!calib.empty() || !mesh.empty()) && !mcadsw::kRect)
+      throw std::invalid_argument("--calib / --mesh: this build has no rectifier (MCADSW_RECT=OFF: the engine "
+                                  "rejects RECT_CTRL.ENABLE with code 24); rectified frames need a build with it");
     if (step && calib.empty() && mesh.empty()) throw std::invalid_argument("--step needs --calib or --mesh");
     if (!step) step = 16;
     if ((!calib.empty() || !mesh.empty()) && crop.area() > 0 && (crop.x % step != 0 || crop.y % step != 0))

@@ -63,6 +63,11 @@ module mcadsw_rect #(
   input  logic               mem_rvalid_i,
   input  logic [31:0]        mem_rdata_i
 );
+
+  // Built in only when the package says so (mcadsw_rect_none.sv otherwise).
+  if (mcadsw_pkg::RECT == 0) begin : g_no_rect
+    mcadsw_error_rect_in_a_build_without_it u_error ();
+  end
   // ---- Frame geometry ----------------------------------------------------------------------
   // Registered from the configuration every cycle (no reset, no enable): the inputs are
   // held from the start on, so from the cycle after the start these are the frame's. The

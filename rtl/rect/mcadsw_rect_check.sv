@@ -50,6 +50,11 @@ module mcadsw_rect_check #(
   input  logic [4*SB-1:0] out_size_i,
   input  logic [3:0]      outs_i              // bit k: output plane k written
 );
+
+  // Built in only when the package says so (mcadsw_rect_none.sv otherwise).
+  if (mcadsw_pkg::RECT == 0) begin : g_no_rect
+    mcadsw_error_rect_in_a_build_without_it u_error ();
+  end
   localparam int NR = 20;                     // regions
   localparam int RB = 5;                      // region index bits
 

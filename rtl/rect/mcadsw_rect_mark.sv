@@ -45,6 +45,11 @@ module mcadsw_rect_mark #(
   input  logic               mem_rvalid_i,
   input  logic [31:0]        mem_rdata_i
 );
+
+  // Built in only when the package says so (mcadsw_rect_none.sv otherwise).
+  if (mcadsw_pkg::RECT == 0) begin : g_no_rect
+    mcadsw_error_rect_in_a_build_without_it u_error ();
+  end
   localparam int FB = $clog2(FD);
 
   // ---- Frame geometry --------------------------------------------------------------------------

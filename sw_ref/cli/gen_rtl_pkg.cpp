@@ -6,10 +6,11 @@
 // C++; with `regs-doc`, docs/registers.md. The committed files are checked
 // against this output by tests.
 //
-//   gen_rtl_pkg [--dmax N] [--par P] [--fpga]
+//   gen_rtl_pkg [--dmax N] [--par P] [--fpga] [--no-rect]
 //                                      the package of that configuration (default:
-//                                      the build's MCADSW_DMAX / MCADSW_PAR / MCADSW_FPGA;
-//                                      --fpga: the FPGA target's memory shapes,
+//                                      the build's MCADSW_DMAX / MCADSW_PAR / MCADSW_FPGA /
+//                                      MCADSW_RECT; --fpga: the FPGA target's memory shapes,
+//                                      --no-rect: without the rectifier,
 //                                      docs/architecture.md 3.11)
 //   gen_rtl_pkg regs-doc               docs/registers.md
 //   gen_rtl_pkg rect-pkg               rtl/rect/mcadsw_rect_pkg.sv
@@ -17,7 +18,7 @@
 // The one check of a configuration (CMake, make synth, make fpga call this):
 // DMAX an integer from 1 to 128, PAR 1, 2 or 4, DMAX a multiple of PAR; anything
 // else is a message on stderr and exit 2, nothing on stdout. Only DMAX, DISP_BITS,
-// PAR and FPGA of the package depend on the configuration.
+// PAR, FPGA and RECT of the package depend on the configuration.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -53,7 +54,7 @@ void print_regs_pkg() {
   // Icarus 11 crashes on a variable of a package enum type (docs/architecture.md,
   // tool support), so the RTL carries codes as logic [ERR_BITS-1:0] named by these.
   std::printf("  // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,\n");
-  std::printf("  // 13..15 a frame ended early, 16..23 rectification (docs/registers.md)\n");
+  std::printf("  // 13..15 a frame ended early, 16..23 rectification, 24 no rectifier (docs/registers.md)\n");
   std::printf("  localparam int ERR_BITS = %d;\n", kErrCodeBits);
   std::printf("  typedef enum logic [ERR_BITS-1:0] {\n");
   const int nerr = int(sizeof(kErrors) / sizeof(kErrors[0]));
@@ -160,6 +161,7 @@ int main(int argc, char** argv) {
   const char* dmax_arg = nullptr;
   const char* par_arg = nullptr;
   bool fpga = kFpga;  // the build's target unless --fpga
+  bool rect = kRect;  // the build's rectifier unless --no-rect
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--dmax") == 0 && i + 1 < argc) {
       dmax_arg = argv[++i];
@@ -167,8 +169,10 @@ int main(int argc, char** argv) {
       par_arg = argv[++i];
     } else if (std::strcmp(argv[i], "--fpga") == 0) {
       fpga = true;
+    } else if (std::strcmp(argv[i], "--no-rect") == 0) {
+      rect = false;
     } else {
-      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] [--fpga] | gen_rtl_pkg regs-doc | gen_rtl_pkg rect-pkg\n");
+      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] [--fpga] [--no-rect] | gen_rtl_pkg regs-doc | gen_rtl_pkg rect-pkg\n");
       return 2;
     }
   }
@@ -210,6 +214,7 @@ int main(int argc, char** argv) {
   p("DISP_BITS", bits_for(dmax - 1), "disparity 0..DMAX-1");
   p("PAR", par, "disparities a step (1, 2, 4)");
   p("FPGA", fpga ? 1 : 0, "target: 0 the ASIC, 1 an FPGA (block-RAM shapes)");
+  p("RECT", rect ? 1 : 0, "the rectifier: 1 built in, 0 left out");
   p("BLOCK", kBlock, "output block 18x18");
   p("LANES", kLanes, "vertical aggregation lanes");
   p("HAGG", kHorzAggregators, "horizontal aggregators");

@@ -3,9 +3,10 @@
 # SPDX-License-Identifier: Apache-2.0
 
 # Another configuration: the reference, the RTL and the harness built
-# for DMAX disparities, PAR a step, the ASIC or (FPGA = 1) the FPGA target, in their
-# own build directory (BUILD/dmax<DMAX>_par<PAR>[_fpga], as `make sim-build DMAX=<DMAX>
-# PAR=<PAR> FPGA=<FPGA>`), then
+# for DMAX disparities, PAR a step, the ASIC or (FPGA = 1) the FPGA target, with or
+# (RECT = 0) without the rectifier, in their own build directory
+# (BUILD/dmax<DMAX>_par<PAR>[_fpga][_norect], as `make sim-build DMAX=<DMAX> PAR=<PAR>
+# FPGA=<FPGA> RECT=<RECT>`), then
 #   - on the FPGA target, the block benches of the blocks whose buffers it reshapes
 #     (census, weight generator, cost aggregator: docs/architecture.md 3.11);
 #   - the reference's tests (the fast kernels against the plain model for every D
@@ -13,24 +14,31 @@
 #   - the engine's tests (crops at D = DMAX with random memory timing, invalid
 #     configurations: D = DMAX + 1 is code 3);
 #   - mcadsw_sim on a Teddy crop at D = DMAX in every output mode, bit-exact;
-#   - mcadsw_sim_random: random cases with D up to DMAX.
-#   tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA]
+#   - mcadsw_sim_random: random cases with D up to DMAX (none rectified without the rectifier;
+#     its engine tests then check that RECT_CTRL.ENABLE is rejected, code 24).
+#   tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA] [RECT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-parent=${1:?usage: tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA]}
+parent=${1:?usage: tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA] [RECT]}
 dmax=${2:-128}
 cases=${3:-20}
 par=${4:-1}
 fpga=${5:-0}
+rect=${6:-1}
 case $fpga in
   0) suffix=; target=ASIC; fpga_opt=OFF; blocks=() ;;
   1) suffix=_fpga; target=FPGA; fpga_opt=ON; blocks=(rtl_census_test rtl_weight_gen_test rtl_cost_agg_test) ;;
   *) echo "dmax: FPGA='$fpga': 0 or 1" >&2; exit 2 ;;
 esac
+case $rect in
+  1) rect_opt=ON; with="" ;;
+  0) rect_opt=OFF; suffix=${suffix}_norect; with=", without the rectifier" ;;
+  *) echo "dmax: RECT='$rect': 0 or 1" >&2; exit 2 ;;
+esac
 dir=$parent/dmax${dmax}_par$par$suffix
-echo "dmax: configuring and building $dir (DMAX = $dmax, PAR = $par, $target target)"
+echo "dmax: configuring and building $dir (DMAX = $dmax, PAR = $par, $target target$with)"
 cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$dmax" -DMCADSW_PAR="$par" \
-  -DMCADSW_FPGA="$fpga_opt" > "$dir.configure.log" 2>&1 ||
+  -DMCADSW_FPGA="$fpga_opt" -DMCADSW_RECT="$rect_opt" > "$dir.configure.log" 2>&1 ||
   { tail -20 "$dir.configure.log"; echo "dmax: configure failed" >&2; exit 1; }
 cmake --build "$dir" -j "$(nproc)" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random "${blocks[@]}" \
   > "$dir.build.log" 2>&1 ||

@@ -5,7 +5,8 @@
 # make fpga's report (flow/fpga.py report) on hand-written step figures (tests/fpga/report/):
 # a design over the ECP5's LUT4 sites fails its bars and is not placed; a placed one
 # below 30 frames a second fails the Fmax bar, with the frames a second computed from the
-# CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); missing figures exit 2.
+# CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); missing figures exit 2;
+# the SoC without the rectifier, placed, reported beside the whole SoC that does not fit.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 fix=$root/tests/fpga/report
@@ -38,4 +39,13 @@ setup ecp5_summary.json; rm "$tmp/fpga/xc7/summary.json"; run
 [ "$rc" = 2 ] || fail "missing figures: exit $rc, expected 2"
 grep -q 'missing figures of a step' <<<"$out" || fail "message: $out"
 [ ! -e "$tmp/fpga/summary.json" ] || fail "a summary was written"
-echo "report_test: 3 cases passed"
+# 4. Beside the SoC over the device, the SoC without the rectifier placed at 70.25 MHz: its
+# figures in their own section and summary key; the whole SoC's bars still fail (exit 1).
+setup ecp5_summary.json; mkdir -p "$tmp/fpga/ecp5_norect"
+cp "$fix/ecp5_summary_placed.json" "$tmp/fpga/ecp5_norect/summary.json"; run
+[ "$rc" = 1 ] || fail "whole SoC over the device: exit $rc, expected 1"
+grep -q '## ECP5 without the rectifier' <<<"$out" || fail "no section without the rectifier: $out"
+grep -q '| ECP5 Fmax >= 66.8 MHz | 70.2 MHz | yes |' <<<"$out" || fail "Fmax without the rectifier: $out"
+python3 -c "import json,sys; s=json.load(open(sys.argv[1])); assert s['ecp5_norect']['fps_cif_d64']=={'raw':31.5,'lr':20.7}, s; assert s['fps_cif_d64']=={}" "$tmp/fpga/summary.json" \
+  || fail "frames a second without the rectifier"
+echo "report_test: 4 cases passed"

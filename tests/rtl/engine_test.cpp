@@ -457,6 +457,7 @@ std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng)
 // equal the reference's, in the raw, sub-pixel, right-view and LR modes, raster and
 // tiled, at S = 8, 16, 32, with random memory timing.
 TEST(Engine, RectifiedFramesMatchReference) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
   std::mt19937 rng(32);
   for (int k = 0; k < 8; ++k) {
     std::uniform_int_distribution<int> wd(12, 90), hd(6, 50);
@@ -489,6 +490,7 @@ TEST(Engine, RectifiedFramesMatchReference) {
 // Faults in the rectify pass: a reset and a CTRL.ABORT while it runs, then clean
 // frames (the rectifier's state starts again; nothing of the aborted frame leaks).
 TEST(Engine, RectifyPassFaults) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
   std::mt19937 rng(33);
   std::vector<sim::Frame> frames;
   EngineOptions opt;
@@ -518,6 +520,7 @@ TEST(Engine, RectifyPassFaults) {
 // rejected with its code, DONE and ERROR set, and nothing written; 16 .. 21
 // before anything is read, 22 and 23 after the check phase read the meshes.
 TEST(Engine, RejectsBadRectificationAndWritesNothing) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
   // A valid frame: 64 x 40 from raw views of 80 x 50 at S = 16 (5 x 4 nodes a view).
   sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
   good.rect = true;
@@ -598,6 +601,32 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
       EXPECT_EQ(r.bus.bad_writes, 0) << "the engine wrote to memory";
       EXPECT_EQ(r.bus.bad_reads, 0) << r.bus.describe();
     }
+}
+
+// A build without the rectifier (MCADSW_RECT=OFF, package RECT = 0): RECT_CTRL.ENABLE
+// is rejected with code 24 and nothing read or written; the engine's codes 1 .. 12 come
+// first; a frame without rectification runs.
+TEST(Engine, RectificationRejectedWithoutTheRectifier) {
+  if (kRect) GTEST_SKIP() << "a build with the rectifier (code 24 needs MCADSW_RECT=OFF)";
+  sim::RawConfig cfg{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
+  cfg.rect = true;
+  cfg.rect_step = 4;
+  cfg.raw_width = 80;
+  cfg.raw_height = 50;
+  cfg.raw_stride = 80;
+  cfg.raw_base = {0x10000, 0x11000, 0x12000, 0x13000, 0x14000, 0x15000};
+  cfg.mesh_base = {0x20000, 0x21000};
+  cfg.valid_base = {0x22000, 0x23000};
+  cfg.mesh_nx = 5;
+  cfg.mesh_ny = 4;
+  expect_rejected(sim::run_raw(cfg, {}, 3000), 24, "rectification without the rectifier");
+  sim::RawConfig first = cfg;
+  first.width = 0;
+  expect_rejected(sim::run_raw(first, {}, 3000), 1, "width 0 and rectification");
+  std::mt19937 rng(34);
+  Config plain;
+  plain.disparities = 5;
+  expect_exact(sim::run_engine(test::random_yuv(30, 20, rng), test::random_yuv(30, 20, rng), plain, {}));
 }
 
 // Invalid configurations: the engine reports the error code of docs/memory_map.md,

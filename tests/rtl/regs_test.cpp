@@ -110,8 +110,8 @@ TEST_P(Regs, IdentificationAndResetValues) {
   EXPECT_EQ(b.axi.read(kId, &resp), kIdValue);
   EXPECT_EQ(resp, kOkay);
   EXPECT_EQ(b.axi.read(kVersion), kVersionMajor << kVersionMajorLsb | kVersionMinor << kVersionMinorLsb);
-  EXPECT_EQ(b.axi.read(kHwConfig),
-            uint32_t(kDmax) << kHwConfigDmaxLsb | uint32_t(kPar) << kHwConfigParLsb);
+  EXPECT_EQ(b.axi.read(kHwConfig), uint32_t(kDmax) << kHwConfigDmaxLsb | uint32_t(kPar) << kHwConfigParLsb |
+                                       uint32_t(!kRect) << kHwConfigNoRectLsb);
   for (const auto& [off, bits] : writable_bits()) EXPECT_EQ(b.axi.read(off), 0u) << "offset " << off;
   EXPECT_EQ(b.axi.read(kStatus), 0u);
   EXPECT_EQ(b.axi.read(kIrqStatus), 0u);

@@ -69,6 +69,7 @@ struct Identity {
   uint32_t id = 0;
   int version_major = 0, version_minor = 0;
   int dmax = 0, par = 0;      // build parameters
+  bool rect = false;          // the rectifier is built in (HWCONFIG.NORECT 0; map 1.3)
   // The block answers with the ID and a register map version this driver knows.
   bool compatible() const {
     return id == regs::kIdValue && version_major == int(regs::kVersionMajor) &&
@@ -103,6 +104,7 @@ class Engine {
     const uint32_t hw = bus_.read(regs::kHwConfig);
     i.dmax = int(field(hw, regs::kHwConfigDmaxLsb, 8));
     i.par = int(field(hw, regs::kHwConfigParLsb, 4));
+    i.rect = field(hw, regs::kHwConfigNoRectLsb, 1) == 0;
     return i;
   }
 

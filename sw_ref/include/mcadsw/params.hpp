@@ -93,6 +93,12 @@ inline constexpr int kMaxHeight = 2048;
 #define MCADSW_FPGA 0
 #endif
 inline constexpr bool kFpga = MCADSW_FPGA != 0;
+// The rectifier in the RTL (CMake MCADSW_RECT, `make sim RECT=0`; docs/architecture.md
+// 3.11): 1 built in, 0 left out (a smaller engine that rejects RECT_CTRL.ENABLE, code 24).
+#ifndef MCADSW_RECT
+#define MCADSW_RECT 1
+#endif
+inline constexpr bool kRect = MCADSW_RECT != 0;
 
 // ---- Exact integer widths ----------------------------------------------------
 // Each bound is the largest value the quantity can take; the bit widths follow.

@@ -80,11 +80,11 @@ inline constexpr uint32_t kSpan = 0x100;  // address bits decoded: offsets 0 .. 
 // ---- Constants read from ID and VERSION ---------------------------------------------------
 inline constexpr uint32_t kIdValue = 0x4D434144;  // "MCAD"
 inline constexpr uint32_t kVersionMajor = 1;
-inline constexpr uint32_t kVersionMinor = 2;  // 1: TILE_STRIDE; 2: rectification
+inline constexpr uint32_t kVersionMinor = 3;  // 1: TILE_STRIDE; 2: rectification; 3: HWCONFIG.NORECT
 
 // ---- Fields (lsb, width) ---------------------------------------------------------------
 inline constexpr int kVersionMinorLsb = 0, kVersionMajorLsb = 8;
-inline constexpr int kHwConfigDmaxLsb = 0, kHwConfigParLsb = 8;
+inline constexpr int kHwConfigDmaxLsb = 0, kHwConfigParLsb = 8, kHwConfigNoRectLsb = 12;
 inline constexpr int kCtrlStartLsb = 0;
 inline constexpr int kCtrlAbortLsb = 1;
 inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
@@ -164,6 +164,8 @@ inline constexpr Error kErrors[] = {
     {23, "RectFootprint",
      "rectification: a tile's source rectangle beyond the 64 x 32 tile buffer (docs/algorithm.md "
      "13.8); nothing written"},
+    // 24: checked with 1..12, after them (rtl/mcadsw_cfg_check.sv); nothing read or written.
+    {24, "NoRect", "RECT_CTRL.ENABLE set in a build without the rectifier (HWCONFIG.NORECT 1)"},
 };
 
 // The text of an error code (STATUS.ERROR_CODE), for messages.
@@ -242,6 +244,8 @@ inline constexpr Field kFields[] = {
     {"VERSION", "MAJOR", kVersionMajorLsb, 8, Access::kRO, "major version"},
     {"HWCONFIG", "DMAX", kHwConfigDmaxLsb, 8, Access::kRO, "largest D of this build"},
     {"HWCONFIG", "PAR", kHwConfigParLsb, 4, Access::kRO, "disparities a step of this build"},
+    {"HWCONFIG", "NORECT", kHwConfigNoRectLsb, 1, Access::kRO,
+     "1: this build has no rectifier (RECT_CTRL.ENABLE is rejected with code 24)"},
     {"CTRL", "START", kCtrlStartLsb, 1, Access::kWO,
      "write 1: start a frame with the registers as they are after this write; ignored while "
      "busy; reads 0"},
