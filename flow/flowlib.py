@@ -136,12 +136,25 @@ class Run:
             self.procs.pop(pid).returncode = rc
         return pid, rc, ru.ru_maxrss // 1024
 
-    def run(self, cmd, out_path=None, err_path=None, **kw):
-        """Runs cmd to its end: (exit code, peak MB, seconds)."""
+    def run(self, cmd, out_path=None, err_path=None, limit_s=None, **kw):
+        """Runs cmd to its end: (exit code, peak MB, seconds). limit_s: stopped (its process
+        group sent SIGTERM) after that many seconds; the caller tells by the seconds."""
         t0 = time.time()
         with open(out_path or os.devnull, "w") as o, open(err_path or os.devnull, "w") as e:
             p = self.start(cmd, stdout=o, stderr=e, **kw)
+            timer = None
+            if limit_s:
+                def stop_it():
+                    try:
+                        os.killpg(p.pid, signal.SIGTERM)
+                    except OSError:
+                        pass
+                timer = threading.Timer(limit_s, stop_it)
+                timer.daemon = True
+                timer.start()
             _, rc, mb = self.reap(p.pid)
+            if timer:
+                timer.cancel()
         return rc, mb, int(time.time() - t0)
 
     def stop(self):

@@ -183,8 +183,12 @@ def report(root, sim_summary):
         n_rows.append(("ECP5 placed and routed", "yes" if n.get("place_route") else "no",
                        bool(n.get("place_route"))))
         if need_mhz:
-            n_rows.append((f"ECP5 Fmax >= {need_mhz:.1f} MHz", f"{n_fmax:.1f} MHz" if n_fmax else "not placed",
+            n_rows.append((f"ECP5 Fmax >= {need_mhz:.1f} MHz", f"{n_fmax:.1f} MHz" if n_fmax else "not routed",
                            bool(n_fmax and n_fmax >= need_mhz)))
+            placed = n.get("placed_fmax_mhz")
+            if placed and not n_fmax:
+                n_rows.append(("ECP5 clock estimate after placement (routing unfinished)", f"{placed:.1f} MHz",
+                               placed >= need_mhz))
         for name, cyc in (("raw", raw), ("lr", lr)):
             if cyc and n_fmax:
                 n_fps[name] = round(n_fmax * 1e6 / cyc, 1)
