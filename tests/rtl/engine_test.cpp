@@ -516,23 +516,28 @@ TEST(Engine, RectifyPassFaults) {
   }
 }
 
+// A valid rectified frame: 64 x 40 from raw views of 80 x 50 at S = 16 (5 x 4 nodes a view).
+sim::RawConfig rectified_config() {
+  sim::RawConfig c{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
+  c.rect = true;
+  c.rect_step = 4;
+  c.raw_width = 80;
+  c.raw_height = 50;
+  c.raw_stride = 80;
+  c.raw_base = {0x10000, 0x11000, 0x12000, 0x13000, 0x14000, 0x15000};
+  c.mesh_base = {0x20000, 0x21000};
+  c.valid_base = {0x22000, 0x23000};
+  c.mesh_nx = 5;
+  c.mesh_ny = 4;
+  return c;
+}
+
 // The rectification's configuration errors (register map 1.2, codes 16 .. 23): each
 // rejected with its code, DONE and ERROR set, and nothing written; 16 .. 21
 // before anything is read, 22 and 23 after the check phase read the meshes.
 TEST(Engine, RejectsBadRectificationAndWritesNothing) {
   if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
-  // A valid frame: 64 x 40 from raw views of 80 x 50 at S = 16 (5 x 4 nodes a view).
-  sim::RawConfig good{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
-  good.rect = true;
-  good.rect_step = 4;
-  good.raw_width = 80;
-  good.raw_height = 50;
-  good.raw_stride = 80;
-  good.raw_base = {0x10000, 0x11000, 0x12000, 0x13000, 0x14000, 0x15000};
-  good.mesh_base = {0x20000, 0x21000};
-  good.valid_base = {0x22000, 0x23000};
-  good.mesh_nx = 5;
-  good.mesh_ny = 4;
+  const sim::RawConfig good = rectified_config();
   BadConfigs bad{good, {}};
   const auto with = [&](const char* what, int code, auto change) { bad.add(what, code, change); };
   with("step 2", 16, [](auto& c) { c.rect_step = 2; });
@@ -608,17 +613,7 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
 // first; a frame without rectification runs.
 TEST(Engine, RectificationRejectedWithoutTheRectifier) {
   if (kRect) GTEST_SKIP() << "a build with the rectifier (code 24 needs MCADSW_RECT=OFF)";
-  sim::RawConfig cfg{0x1000, 0x2000, 0x3000, 0x4000, 0x5000, 64, 64, 64, 40, 16};
-  cfg.rect = true;
-  cfg.rect_step = 4;
-  cfg.raw_width = 80;
-  cfg.raw_height = 50;
-  cfg.raw_stride = 80;
-  cfg.raw_base = {0x10000, 0x11000, 0x12000, 0x13000, 0x14000, 0x15000};
-  cfg.mesh_base = {0x20000, 0x21000};
-  cfg.valid_base = {0x22000, 0x23000};
-  cfg.mesh_nx = 5;
-  cfg.mesh_ny = 4;
+  const sim::RawConfig cfg = rectified_config();
   expect_rejected(sim::run_raw(cfg, {}, 3000), 24, "rectification without the rectifier");
   sim::RawConfig first = cfg;
   first.width = 0;
