@@ -22,6 +22,9 @@ the same way (used by the smoke run, and by a negative test on a hand-written re
 `block` synthesises one module of rtl/mcadsw.f (with its submodules) for ECP5 with the
 package of the ASIC or (--fpga) the FPGA target, and lists its cells (DIR/cells.json):
 the per-block figures of docs/results.md.
+`block` and `soc` also estimate the netlist's longest register-to-register paths before
+placement (flow/ecp5_paths.py, DIR/paths.json): where the clock's limit lies, in seconds
+instead of the hours nextpnr takes to route the SoC and report its critical path.
 `soc` is the ECP5 half of make fpga: the SoC top (mcadsw_top: registers, AXI4 master,
 engine with its LR post stage and rectifier) of the FPGA target inside the ULX3S board
 shell (rtl/board/mcadsw_ulx3s.sv, pins constraints/ulx3s.lpf), synthesised flat (as
@@ -41,6 +44,7 @@ import time
 from pathlib import Path
 
 from flowlib import FlowError, ROOT, Run, gen_package, log, rtl_list, tail, PREFIX
+import ecp5_paths
 
 VENV_BIN = ROOT / ".venv" / "bin"
 
@@ -273,8 +277,9 @@ def block(a):
         + "".join(f", {k} = {v}" for k, v in params.items()) + f") into {out}")
     s = synth(files, a.top, out, params=params, include=ROOT / "rtl")
     cells = {k: v for k, v in stat_cells(out / "stat.txt").items() if not k.startswith("$")}
+    paths = estimate_paths(out / "netlist.json", out / "paths.json")
     summary = {"top": a.top, "target": target, "dmax": int(a.dmax), "par": int(a.par),
-               "params": params, "cells": cells, "synth": s}
+               "params": params, "cells": cells, "estimated_path_ns": paths, "synth": s}
     (out / "cells.json").write_text(json.dumps(summary, indent=1) + "\n")
     log(", ".join(f"{k} {v}" for k, v in sorted(cells.items())) + f"; {s['seconds']} s, peak {s['peak_MB']} MB")
     return 0
@@ -316,11 +321,24 @@ def cells_by_module(netlist):
     return by_mod, sorted(insts)
 
 
+def estimate_paths(netlist, out_json, groups=40):
+    """flow/ecp5_paths.py on a netlist: its longest register-to-register path groups into
+    OUT_JSON; returns the worst estimate (ns). A guide before place and route, not a figure."""
+    ends, cells, pred = ecp5_paths.analyse(netlist)
+    gs = ecp5_paths.groups(ends, cells, pred)[:groups]
+    worst = gs[0]["ns"] if gs else 0.0
+    Path(out_json).write_text(json.dumps({"worst_ns": worst, "groups": gs}, indent=1) + "\n")
+    if gs:
+        log(f"estimated longest path before placement {worst:.1f} ns: {gs[0]['from']} -> {gs[0]['to']} "
+            f"(flow/ecp5_paths.py; all groups in {out_json})")
+    return worst
+
+
 def soc(a):
     out = Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
-              "summary.json", "blocks.json"):
+              "summary.json", "blocks.json", "paths.json"):
         (out / f).unlink(missing_ok=True)
     t0 = time.time()
     fpga = not a.asic
@@ -348,6 +366,7 @@ def soc(a):
                 "DP16KD": total.get("DP16KD", 0), "MULT18X18D": total.get("MULT18X18D", 0)}
     log(f"{len(insts)} instances; cells with a source line, by module: "
         + ", ".join(f"{m.split('/')[-1]} {sum(c.values())}" for m, c in blocks["cells_by_module"].items()))
+    paths = estimate_paths(out / "netlist.json", out / "paths.json")
     lpf = ROOT / "constraints" / "ulx3s.lpf"
     packed, pk = pack(out, a.board, lpf=lpf)
     need = {k: packed.get(k, (estimate[k], DEVICE[k]))[0] for k in DEVICE}
@@ -359,7 +378,7 @@ def soc(a):
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
-               "synth": s, "pack": pk, "place_route": None, "problems": []}
+               "synth": s, "pack": pk, "estimated_path_ns": paths, "place_route": None, "problems": []}
     if empty:
         summary["problems"].append("modules without cells (optimised away): " + ", ".join(empty))
     if over:
