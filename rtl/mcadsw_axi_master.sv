@@ -23,6 +23,11 @@
 // transaction has its response.
 // Responses: RRESP / BRESP SLVERR or DECERR (bit 1 set) pulse rd_err_o /
 // wr_err_o.
+// SLICE (the FPGA target): requests are granted into a two-entry buffer, the
+// grant is its room (a register), and the reads and writes above are taken from
+// the buffer's head: the engine's request paths end at the buffer instead of
+// running through this block's decisions and back as the grant. Entries already
+// granted go out during a drain; the idles count them.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -31,7 +36,8 @@ module mcadsw_axi_master #(
   parameter int BL    = 16,   // longest write burst, beats
   parameter int WD    = 16,   // write buffer, beats (at least BL)
   parameter int ROUTS = 32,   // read beats in flight
-  parameter int BOUTS = 7     // write bursts waiting for B
+  parameter int BOUTS = 7,    // write bursts waiting for B
+  parameter bit SLICE = 1'(mcadsw_pkg::FPGA)  // requests through a two-entry buffer
 ) (
   input  logic          clk_i,
   input  logic          rst_ni,
@@ -99,14 +105,67 @@ module mcadsw_axi_master #(
   assign m_rready_o  = 1'b1;
   assign m_bready_o  = 1'b1;
 
+  // ---- The request taken: the port's, or the head of the buffer (SLICE) --------------
+  logic          s_req, s_we, s_drain, s_buf_wr, s_buf_any;
+  logic [3:0]    s_be, s_len;
+  logic [AW-1:0] s_addr;
+  logic [31:0]   s_wdata;
+  logic          rd_take, wr_take;
+  if (SLICE) begin : g_slice
+    localparam int EW = 1 + 4 + AW + 4 + 32;   // {we, be, addr, len, wdata}
+    logic [2*EW-1:0] ent_q;                    // entry 0: the head
+    logic [1:0]      n_q;
+    logic            accept, pop;
+    assign mem_gnt_o = !drain_i && n_q != 2'd2;
+    assign accept    = mem_req_i && mem_gnt_o;
+    assign pop       = rd_take || wr_take;
+    assign s_req     = n_q != 2'd0;
+    assign {s_we, s_be, s_addr, s_len, s_wdata} = ent_q[0 +: EW];
+    assign s_drain   = 1'b0;                   // granted before the drain: they go out
+    assign s_buf_any = n_q != 2'd0;
+    assign s_buf_wr  = (n_q != 2'd0 && ent_q[EW-1]) || (n_q == 2'd2 && ent_q[2*EW-1]);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ent_q <= '0;
+        n_q   <= '0;
+      end else begin
+        logic [2*EW-1:0] e;
+        logic [1:0]      n;
+        e = ent_q;
+        n = n_q;
+        if (pop) begin
+          e = e >> EW;
+          n = n - 2'd1;
+        end
+        if (accept) begin
+          if (n == 2'd0) e[0 +: EW] = {mem_we_i, mem_be_i, mem_addr_i, mem_len_i, mem_wdata_i};
+          else           e[EW +: EW] = {mem_we_i, mem_be_i, mem_addr_i, mem_len_i, mem_wdata_i};
+          n = n + 2'd1;
+        end
+        ent_q <= e;
+        n_q   <= n;
+      end
+    end
+  end else begin : g_port
+    assign s_req     = mem_req_i;
+    assign s_we      = mem_we_i;
+    assign s_be      = mem_be_i;
+    assign s_addr    = mem_addr_i;
+    assign s_len     = mem_len_i;
+    assign s_wdata   = mem_wdata_i;
+    assign s_drain   = drain_i;
+    assign s_buf_any = 1'b0;
+    assign s_buf_wr  = 1'b0;
+    assign mem_gnt_o = rd_take || wr_take;
+  end
+
   // ---- Reads ---------------------------------------------------------------------------
   logic          arvalid_q;
   logic [AW-1:0] araddr_q;
   logic [3:0]    arlen_q;
   logic [RB-1:0] rd_out_q;                 // beats of reads taken from the engine, R not yet seen
-  logic          rd_take;
-  assign rd_take = mem_req_i && !mem_we_i && !drain_i && (!arvalid_q || m_arready_i) &&
-                   (RB + 1)'(rd_out_q) + (RB + 1)'(mem_len_i) < (RB + 1)'(ROUTS);
+  assign rd_take = s_req && !s_we && !s_drain && (!arvalid_q || m_arready_i) &&
+                   (RB + 1)'(rd_out_q) + (RB + 1)'(s_len) < (RB + 1)'(ROUTS);
   assign m_arvalid_o  = arvalid_q;
   assign m_araddr_o   = araddr_q;
   assign m_arlen_o    = 8'(arlen_q);
@@ -123,12 +182,12 @@ module mcadsw_axi_master #(
     end else begin
       if (rd_take) begin
         arvalid_q <= 1'b1;
-        araddr_q  <= mem_addr_i;
-        arlen_q   <= mem_len_i;
+        araddr_q  <= s_addr;
+        arlen_q   <= s_len;
       end else if (m_arready_i) begin
         arvalid_q <= 1'b0;
       end
-      rd_out_q <= rd_out_q + (rd_take ? RB'(mem_len_i) + RB'(1) : '0) - RB'(m_rvalid_i);
+      rd_out_q <= rd_out_q + (rd_take ? RB'(s_len) + RB'(1) : '0) - RB'(m_rvalid_i);
     end
   end
 
@@ -148,13 +207,12 @@ module mcadsw_axi_master #(
   logic                  desc_room;
   assign desc_room = awq_n_q != 2'(ND) && wlq_n_q != 2'(ND);
 
-  logic wr_req, contig, need_close, wr_take, do_close;
-  assign wr_req     = mem_req_i && mem_we_i && !drain_i;
-  assign contig     = mem_addr_i == ob_next_q && mem_addr_i[11:0] != 12'd0;
+  logic wr_req, contig, need_close, do_close;
+  assign wr_req     = s_req && s_we && !s_drain;
+  assign contig     = s_addr == ob_next_q && s_addr[11:0] != 12'd0;
   assign need_close = ob_n_q != '0 && (ob_n_q == NB'(BL) || !contig);
   assign wr_take    = wr_req && !wbuf_full && (!need_close || desc_room);
   assign do_close   = ob_n_q != '0 && desc_room && (!wr_req || need_close);
-  assign mem_gnt_o  = rd_take || wr_take;
 
   // ---- AW, W, B -------------------------------------------------------------------------
   logic [BB-1:0] b_out_q;                  // AWs accepted, B not yet seen
@@ -188,20 +246,20 @@ module mcadsw_axi_master #(
     end else begin
       if (wr_take) begin
         for (int i = 0; i < WD; i++)      // decoded: no shifter across the buffer
-          if (wwr_q[DB-1:0] == DB'(i)) wbuf_q[i*36 +: 36] <= {mem_be_i, mem_wdata_i};
+          if (wwr_q[DB-1:0] == DB'(i)) wbuf_q[i*36 +: 36] <= {s_be, s_wdata};
         wwr_q <= wwr_q + 1'b1;
       end
       if (w_go) wrd_q <= wrd_q + 1'b1;
       // The open burst: continued, closed, or started.
       if (wr_take && (ob_n_q == '0 || do_close)) begin
-        ob_addr_q <= mem_addr_i;
+        ob_addr_q <= s_addr;
         ob_n_q    <= NB'(1);
       end else if (wr_take) begin
         ob_n_q <= ob_n_q + NB'(1);
       end else if (do_close) begin
         ob_n_q <= '0;
       end
-      if (wr_take) ob_next_q <= mem_addr_i + AW'(4);
+      if (wr_take) ob_next_q <= s_addr + AW'(4);
       // AW queue: shift out at the head (slot 0), append at awq_n.
       begin
         logic [ND*(AW+LB)-1:0] q;
@@ -240,9 +298,9 @@ module mcadsw_axi_master #(
     end
   end
 
-  assign wr_idle_o = !(mem_req_i && mem_we_i) && ob_n_q == '0 && awq_n_q == 2'd0 &&
+  assign wr_idle_o = !(mem_req_i && mem_we_i) && !s_buf_wr && ob_n_q == '0 && awq_n_q == 2'd0 &&
                      wlq_n_q == 2'd0 && b_out_q == '0;
-  assign idle_o    = wr_idle_o && rd_out_q == '0;
+  assign idle_o    = wr_idle_o && rd_out_q == '0 && !s_buf_any;
 
   // The beats of a burst are counted, RLAST is checked in simulation only.
   logic unused;
@@ -269,7 +327,7 @@ module mcadsw_axi_master #(
         n = n - RB'(1);
       end
       if (rd_take) begin
-        q[32'(n)*4 +: 4] = mem_len_i;
+        q[32'(n)*4 +: 4] = s_len;
         n = n + RB'(1);
       end
       rlen_q   <= q;

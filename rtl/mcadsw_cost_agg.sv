@@ -180,9 +180,32 @@ module mcadsw_cost_agg #(
        v1_lanes_q} <= {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q,
                        lanes};
       {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q,
-       v2_lanes_q} <= {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q,
-                       v1_slot_q, v1_lanes_q};
+       v2_lanes_q} <= v1x;
     end
+  end
+
+  // The tags of v1 reach v2 with the vertical sums: one cycle, or VLAT = 3 on the
+  // FPGA target (mcadsw_vert_agg's latency: inputs and products registered first).
+  localparam int VLAT = (mcadsw_pkg::FPGA != 0) ? 3 : 1;
+  localparam int VTW  = 3 + RB + DB + GB + CLB + 1 + P;
+  logic [VTW-1:0] v1t, v1x;
+  logic           vx_busy;            // tags on their way from v1 to v2
+  assign v1t = {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
+                v1_lanes_q};
+  if (VLAT > 1) begin : g_vdelay
+    logic [(VLAT-1)*VTW-1:0] vd_q;    // stage i at i VTW, its valid bit on top
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) vd_q <= '0;
+      else vd_q <= ((VLAT-1)*VTW)'({vd_q, v1t});
+    end
+    assign v1x = vd_q[(VLAT-2)*VTW +: VTW];
+    always_comb begin
+      vx_busy = 1'b0;
+      for (int i = 0; i < VLAT - 1; i++) vx_busy = vx_busy || vd_q[i*VTW + VTW - 1];
+    end
+  end else begin : g_vdirect
+    assign v1x     = v1t;
+    assign vx_busy = 1'b0;
   end
 
   // Copy p (disparity d + p) takes right lanes P - 1 - p .. P - 1 - p + LANES - 1.
@@ -285,10 +308,10 @@ module mcadsw_cost_agg #(
   logic                  fc_valid;
   logic [P*HAGG*FB-1:0]  fc;     // copy p, pixel m at (p HAGG + m) FB: the WTA's order
 
-  // FPGA target at P = 1: two of the three horizontal aggregators multiply on the
-  // device's multipliers (62 of the ECP5-85F's 156; the rest of the SoC uses 72, so
-  // all 93 terms would not fit); at P > 1 every term stays a shift.
-  localparam int MULT_AGGS = (mcadsw_pkg::FPGA != 0 && P == 1) ? HAGG - 1 : 0;
+  // FPGA target at P = 1: the three horizontal aggregators multiply on the device's
+  // multipliers (93 of the ECP5-85F's 156; the rest of the SoC uses 28); at P > 1 every
+  // term stays a shift.
+  localparam int MULT_AGGS = (mcadsw_pkg::FPGA != 0 && P == 1) ? HAGG : 0;
   for (genvar p = 0; p < P; p++) begin : g_horz
     mcadsw_horz_agg #(
       .HAGG(HAGG), .WINDOW(WINDOW), .WB(WB), .VB(VB), .FB(FB), .MULT_AGGS(MULT_AGGS)
@@ -344,7 +367,7 @@ module mcadsw_cost_agg #(
   end
   assign disp_row_o = disp_row_q;
 
-  assign busy_o = busy_q || v1_valid_q || v2_valid_q || h0_valid_q || h1_valid_q ||
+  assign busy_o = busy_q || v1_valid_q || vx_busy || v2_valid_q || h0_valid_q || h1_valid_q ||
                   h2_valid_q || h3_valid_q || disp_valid_o;
   // The sub-pixel stages follow the disparities by two cycles.
   logic sub_d1_q;
@@ -360,6 +383,7 @@ module mcadsw_cost_agg #(
   // the following cycles; the read in h1 in the same cycle as a write returns the
   // word from before it), and a bank is handed over only when the horizontal side
   // has finished the previous one.
+  `MCADSW_ASSERT(EvWithItsTags, ev_valid == v2_valid_q)
   `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
   `MCADSW_ASSERT(BankHandedOverWhenRead, !(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
 

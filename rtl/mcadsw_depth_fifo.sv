@@ -56,10 +56,8 @@ module mcadsw_depth_fifo #(
 
   localparam int QB = $clog2(ROWSQ + 1);
   localparam int PB = (ROWSQ > 1) ? $clog2(ROWSQ) : 1;
-  localparam int DESC = AW + CW + 5;
 
   // Row slots: descriptor and (below) the BLOCK values of each queued row.
-  logic [ROWSQ*DESC-1:0]      desc_q;
   logic [PB-1:0]              head_q, tail_q, fill_q;  // oldest row, next free, row being filled
   logic [QB-1:0]              count_q;                  // rows with a descriptor
   logic [QB-1:0]              ready_q;                  // rows complete, not yet written
@@ -69,48 +67,92 @@ module mcadsw_depth_fifo #(
   assign empty_o = count_q == '0;
 
   // ---- The row at the head, written word by word -----------------------------------
-  logic [AW-1:0] h_addr;
-  logic [CW-1:0] h_x;
-  logic [4:0]    h_n;
-  logic [CW:0]   h_end;                // one past the last column
-  assign {h_addr, h_x, h_n} = desc_q[32'(head_q)*DESC +: DESC];
-  assign h_end = {1'b0, h_x} + (CW + 1)'(h_n);
-
   // The row's first column inside the image: h_x, or xlo in the first block.
   // The word being written holds columns word_x .. word_x + 3 (raw) or
   // word_x .. word_x + 1 (wide), aligned: first_w (at or left of h_first) plus
   // wofs_q. Mirrored, those columns are one aligned memory word too (xend is a
   // multiple of 4), in reverse order, and the row is written from its last word
   // (last_w, holding column h_end - 1) down, so that memory addresses ascend in
-  // both cases: one AXI4 INCR burst a row (mcadsw_axi_master).
-  logic [CW-1:0] h_first;
-  assign h_first = (h_x < CW'(xlo_i)) ? CW'(xlo_i) : h_x;
-  logic [CW:0] first_w, last_w, h_last, word_x;
-  assign h_last  = h_end - (CW + 1)'(1);
-  assign first_w = wide_i ? {1'b0, h_first[CW-1:1], 1'b0} : {1'b0, h_first[CW-1:2], 2'b00};
-  assign last_w  = wide_i ? {h_last[CW:1], 1'b0} : {h_last[CW:2], 2'b00};
-  assign word_x  = !mirror_i ? first_w + (CW + 1)'(wofs_q) : last_w - (CW + 1)'(wofs_q);
-  logic h_last_lsb_unused;             // a word holds 2 or 4 columns: bit 0 never selects it
-  assign h_last_lsb_unused = h_last[0];
-  logic [CW:0] mem_x;                  // first image column of the memory word
-  assign mem_x = !mirror_i ? word_x :
-                 {1'b0, xend_i} - word_x - (wide_i ? (CW + 1)'(2) : (CW + 1)'(4));
+  // both cases: one AXI4 INCR burst a row (mcadsw_axi_master). The row is written
+  // when wofs_q reaches last_w - first_w (h_span).
+  // Columns are counted from h_x, as places in the row (5 bits: a word's columns
+  // lie 3 before h_x to 3 after h_end): the word's lowest column is place
+  // h_pw0 +- wofs_q (h_pw0: first_w - h_x, or last_w - h_x mirrored), a column is
+  // inside the image from place h_pf = h_first - h_x (0..3) to h_n - 1. The word's
+  // address is h_addr plus its first image column (times 2, wide): the row's first
+  // word's address h_a0 plus wofs_q (times 2).
+  // row_info: those values of a row, from its descriptor and the frame
+  // configuration: {h_a0, h_pw0, h_pf, h_n, h_span}.
+  localparam int RI = AW + 5 + 2 + 5 + 5;
+  function automatic logic [RI-1:0] row_info(input logic [AW-1:0] addr, input logic [CW-1:0] x,
+                                             input logic [4:0] n, input logic wide, input logic mirror,
+                                             input logic [1:0] xlo, input logic [CW-1:0] xend);
+    logic [CW-1:0] first;
+    logic [CW:0]   e, fw, lw, m0;
+    logic [CW:1]   last;                           // a word holds 2 or 4 columns: bit 0 never selects it
+    e     = {1'b0, x} + (CW + 1)'(n);              // one past the last column
+    first = (x < CW'(xlo)) ? CW'(xlo) : x;
+    last  = CW'((e - (CW + 1)'(1)) >> 1);
+    fw    = wide ? {1'b0, first[CW-1:1], 1'b0} : {1'b0, first[CW-1:2], 2'b00};
+    lw    = wide ? {last[CW:1], 1'b0} : {last[CW:2], 2'b00};
+    m0    = !mirror ? fw : {1'b0, xend} - lw - (wide ? (CW + 1)'(2) : (CW + 1)'(4));
+    row_info = {addr + (wide ? AW'({m0, 1'b0}) : AW'(m0)), 5'((mirror ? lw : fw) - {1'b0, x}),
+                2'(first - x), n, 5'(lw - fw)};
+  endfunction
+  logic [RI-1:0] h_info;
+  logic [AW-1:0] h_a0;
+  logic [4:0]    h_pw0, h_n, h_span, pword;
+  logic [1:0]    h_pf;
+  assign {h_a0, h_pw0, h_pf, h_n, h_span} = h_info;
+  assign pword = !mirror_i ? h_pw0 + wofs_q : h_pw0 - wofs_q;   // the word's lowest column
+  if (FPGA) begin : g_info_regs
+    // FPGA target: each slot's row_info, worked out at the push (the frame
+    // configuration is stable): the head's writes start from registers.
+    logic [ROWSQ*RI-1:0] info_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        info_q <= '0;
+      end else if (desc_push_i) begin
+        for (int r = 0; r < ROWSQ; r++)
+          if (tail_q == PB'(r)) info_q[r*RI +: RI] <= row_info(desc_addr_i, desc_x_i, desc_n_i,
+                                                                      wide_i, mirror_i, xlo_i, xend_i);
+      end
+    end
+    assign h_info = info_q[32'(head_q)*RI +: RI];
+  end else begin : g_info_comb
+    // ASIC target: the descriptors; the head's row_info from its descriptor.
+    localparam int DESC = AW + CW + 5;
+    logic [ROWSQ*DESC-1:0] desc_q;
+    logic [AW-1:0]         h_addr;
+    logic [CW-1:0]         d_x;
+    logic [4:0]            d_n;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        desc_q <= '0;
+      end else if (desc_push_i) begin
+        // Decoded slot by slot (constant part-selects): a part-select at a computed
+        // offset would be a bit-granular shifter.
+        for (int r = 0; r < ROWSQ; r++)
+          if (tail_q == PB'(r)) desc_q[r*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
+      end
+    end
+    assign {h_addr, d_x, d_n} = desc_q[32'(head_q)*DESC +: DESC];
+    assign h_info = row_info(h_addr, d_x, d_n, wide_i, mirror_i, xlo_i, xend_i);
+  end
 
-  // Byte b of the word: pass column word_x + its offset in the word, place p in
-  // the row, enable, value v (VB bits).
+  // Byte b of the word: its column's place p in the row (the word's lowest plus its
+  // offset in the word), enable, value v (VB bits).
   logic [4*5-1:0]  byte_p;
   logic [4*VB-1:0] byte_v;
   for (genvar b = 0; b < 4; b++) begin : g_byte
-    // The pass column byte b belongs to.
+    // The place of the pass column byte b belongs to.
     localparam int OFS_RAW = b, OFS_WIDE = b / 2, OFS_RAW_M = 3 - b, OFS_WIDE_M = 1 - b / 2;
-    logic [CW:0]   x;
-    logic [4:0]    p;                  // its place in the row
+    logic [4:0]    p;
     logic [15:0]   v16;
-    assign x = word_x + (!mirror_i ? (wide_i ? (CW + 1)'(OFS_WIDE) : (CW + 1)'(OFS_RAW))
-                                    : (wide_i ? (CW + 1)'(OFS_WIDE_M) : (CW + 1)'(OFS_RAW_M)));
-    assign p = 5'(x - {1'b0, h_x});
+    assign p = pword + (!mirror_i ? (wide_i ? 5'(OFS_WIDE) : 5'(OFS_RAW))
+                                  : (wide_i ? 5'(OFS_WIDE_M) : 5'(OFS_RAW_M)));
     assign byte_p[b*5 +: 5] = p;
-    assign wr_be_o[b] = x >= {1'b0, h_first} && x < h_end;
+    assign wr_be_o[b] = p >= 5'(h_pf) && p < h_n;
     assign v16 = 16'(byte_v[b*VB +: VB]);
     assign wr_wdata_o[b*8 +: 8] = !wr_be_o[b] ? 8'h00 :
                                   (wide_i && b % 2 == 1) ? v16[15:8] : v16[7:0];
@@ -130,7 +172,7 @@ module mcadsw_depth_fifo #(
     end
     logic [4*VB-1:0] bank_rd;
     logic [4:0]      plo;              // the place of the word's lowest column
-    assign plo = 5'(word_x - {1'b0, h_x});
+    assign plo = pword;
     for (genvar k = 0; k < 4; k++) begin : g_bank
       logic [VB-1:0]      mem [ROWSQ * (1 << WRB)];
       logic               we;
@@ -203,16 +245,13 @@ module mcadsw_depth_fifo #(
     end
   end
   assign wr_req_o  = ready_q != '0;
-  assign wr_addr_o = h_addr + (wide_i ? AW'({mem_x, 1'b0}) : AW'(mem_x));
+  assign wr_addr_o = h_a0 + (wide_i ? AW'({wofs_q, 1'b0}) : AW'(wofs_q));
 
   logic row_written;
-  assign row_written = wr_req_o && wr_gnt_i &&
-                       (!mirror_i ? word_x + (wide_i ? (CW + 1)'(2) : (CW + 1)'(4)) >= h_end
-                                  : word_x <= first_w);
+  assign row_written = wr_req_o && wr_gnt_i && wofs_q == h_span;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      desc_q  <= '0;
       head_q  <= '0;
       tail_q  <= '0;
       fill_q  <= '0;
@@ -220,13 +259,7 @@ module mcadsw_depth_fifo #(
       ready_q <= '0;
       wofs_q  <= '0;
     end else begin
-      // Decoded slot by slot (constant part-selects): a part-select at a computed
-      // offset would be a bit-granular shifter.
-      if (desc_push_i) begin
-        for (int r = 0; r < ROWSQ; r++)
-          if (tail_q == PB'(r)) desc_q[r*DESC +: DESC] <= {desc_addr_i, desc_x_i, desc_n_i};
-        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
-      end
+      if (desc_push_i) tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
       if (disp_valid_i && disp_grp_i == GB'(BLOCK / HAGG - 1))
         fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
       if (wr_req_o && wr_gnt_i) begin

@@ -5,7 +5,9 @@
 // buffer; Eq. 3). For each of LANES columns, the census costs of all WINDOW
 // pixels of the column are computed in parallel, each is shifted by its one-hot
 // vertical weight (weight code e: 0 -> 0, e -> 2^(e-1), docs/algorithm.md) and
-// the WINDOW products are summed. One column group per cycle, result registered.
+// the WINDOW products are summed. One column group per cycle, result registered:
+// one cycle after valid_i, or LAT = 3 on the FPGA target, whose inputs (block-RAM
+// reads behind the window selects) and products are registered first.
 `default_nettype none
 
 module mcadsw_vert_agg #(
@@ -23,7 +25,7 @@ module mcadsw_vert_agg #(
   input  logic [LANES*WINDOW*CB-1:0] cen_l_i,  // left census codes
   input  logic [LANES*WINDOW*CB-1:0] cen_r_i,  // right census codes at x - d
   input  logic [LANES*WINDOW*WB-1:0] wv_i,     // vertical weight codes
-  // Vertical aggregated costs Ev of the group, one cycle later
+  // Vertical aggregated costs Ev of the group, LAT cycles later
   output logic                      valid_o,
   output logic [LANES*VB-1:0]       ev_o
 );
@@ -51,32 +53,45 @@ module mcadsw_vert_agg #(
     else weigh = VB'(cost) << (e - WB'(1));
   endfunction
 
+  localparam int LAT = FPGA ? 3 : 1;   // cycles from valid_i to valid_o
+  logic [LAT-1:0] valid_q;             // valid_i, one bit a cycle of the pipeline
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else valid_o <= valid_i;
+    if (!rst_ni) valid_q <= '0;
+    else valid_q <= LAT'({valid_q, valid_i});
   end
+  assign valid_o = valid_q[LAT-1];
 
   if (FPGA) begin : g_fpga_sum
-    // FPGA target: each lane's WINDOW products (TB bits: a cost below 8 shifted
-    // by at most 2^WB - 2) summed by a balanced tree of carry-chain adders; the
-    // sum is below 2^VB (g_bad_param above), so VB bits of it are exact.
+    // FPGA target, three stages: the inputs registered; the WINDOW products of each
+    // lane (TB bits: a cost below 8 shifted by at most 2^WB - 2) registered; their
+    // sum by a balanced tree of carry-chain adders, registered. The sum is below
+    // 2^VB (g_bad_param above), so VB bits of it are exact.
     localparam int TB = CNTB + (1 << WB) - 2;
     localparam int SW = TB + $clog2(WINDOW);
+    logic [LANES*WINDOW*CB-1:0] cen_l_q, cen_r_q;
+    logic [LANES*WINDOW*WB-1:0] wv_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) {cen_l_q, cen_r_q, wv_q} <= '0;
+      else if (valid_i) {cen_l_q, cen_r_q, wv_q} <= {cen_l_i, cen_r_i, wv_i};
+    end
     for (genvar ln = 0; ln < LANES; ln++) begin : g_lane
-      logic [WINDOW*TB-1:0] terms;
+      logic [WINDOW*TB-1:0] terms_q;
       logic [SW-1:0]        sum;
       for (genvar k = 0; k < WINDOW; k++) begin : g_term
         logic [VB-1:0] t;
         logic [VB-TB-1:0] t_unused;
-        assign t = weigh(hamming(cen_l_i[(ln*WINDOW + k)*CB +: CB], cen_r_i[(ln*WINDOW + k)*CB +: CB]),
-                         wv_i[(ln*WINDOW + k)*WB +: WB]);
-        assign terms[k*TB +: TB] = t[TB-1:0];
+        assign t = weigh(hamming(cen_l_q[(ln*WINDOW + k)*CB +: CB], cen_r_q[(ln*WINDOW + k)*CB +: CB]),
+                         wv_q[(ln*WINDOW + k)*WB +: WB]);
+        always_ff @(posedge clk_i or negedge rst_ni) begin
+          if (!rst_ni) terms_q[k*TB +: TB] <= '0;
+          else if (valid_q[0]) terms_q[k*TB +: TB] <= t[TB-1:0];
+        end
         assign t_unused = t[VB-1:TB];
       end
-      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms), .sum_o(sum));
+      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms_q), .sum_o(sum));
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) ev_o[ln*VB +: VB] <= '0;
-        else if (valid_i) ev_o[ln*VB +: VB] <= VB'(sum);
+        else if (valid_q[1]) ev_o[ln*VB +: VB] <= VB'(sum);
       end
     end
   end else begin : g_asic_sum

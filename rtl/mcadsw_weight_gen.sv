@@ -186,6 +186,7 @@ module mcadsw_weight_gen #(
   logic           rslot_q;         // oldest row not handed out
   logic           k_done_q;        // the kernel's last write of a row (stage 2)
   logic           k_slot2_q;
+  logic           w_done, w_slot;  // the last write of a row done (stage 2, FPGA: 3), its slot
 
   assign gen_busy = state_q != IDLE;
 
@@ -277,14 +278,14 @@ module mcadsw_weight_gen #(
       for (int s = 0; s < 2; s++) begin
         if (state_q == ROW && !occ_q[wslot_q] && wslot_q == 1'(s)) occ_q[s] <= 1'b1;
         else if (hrd_en_i && hrd_rel_i && hrd_slot_i == 1'(s)) occ_q[s] <= 1'b0;
-        if (k_done_q && k_slot2_q == 1'(s)) rdy_q[s] <= 1'b1;
+        if (w_done && w_slot == 1'(s)) rdy_q[s] <= 1'b1;
         else if (row_take_i && rslot_q == 1'(s)) rdy_q[s] <= 1'b0;
       end
       if (row_take_i) rslot_q <= !rslot_q;
     end
   end
 
-  assign busy_o      = l_busy_q || pend_q || gen_busy || k_done_q;
+  assign busy_o      = l_busy_q || pend_q || gen_busy || k_done_q || w_done;
   assign row_ready_o = rdy_q[rslot_q];
   assign rd_slot_o   = rslot_q;
 
@@ -529,27 +530,53 @@ module mcadsw_weight_gen #(
     function automatic logic [ENTRY-1:0] unfold(input logic [ENTRY-1:0] codes, input logic [RB-1:0] x);
       unfold = ENTRY'({codes, codes} >> (32'(x)*WB));
     endfunction
-    logic [ENTRY-1:0]  k_codes;
+    // Stage 3 (FPGA target only): stage 2's codes registered, then placed and
+    // written; the row is ready a cycle later than on the ASIC target.
+    logic [ENTRY-1:0]  k3_codes_q;
+    logic [RB-1:0]     k3_at_q;
+    logic              k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q;
+    logic [2:0]        k3_pos_q;
+    logic [VAB-1:0]    k3_vaddr_q;
+    logic [HAB-1:0]    k3_haddr_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        {k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q} <= '0;
+      end else begin
+        {k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q} <= {k_vert_q, k_horz_q, k_done_q, k_slot2_q};
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (k_vert_q || k_horz_q) begin
+        k3_codes_q <= window_codes(k_px_q, k_ctr_q, thr_i);
+        k3_at_q    <= k_at_q;
+        k3_pos_q   <= k_pos_q;
+        k3_vaddr_q <= k_vaddr;
+        k3_haddr_q <= k_haddr;
+      end
+    end
+    assign w_done = k3_done_q;
+    assign w_slot = k3_slot_q;
     logic [VENTRY-1:0] k_ventry;
     logic [ENTRY-1:0]  k_hentry;
-    assign k_codes  = window_codes(k_px_q, k_ctr_q, thr_i);
-    assign k_ventry = k_codes;
-    assign k_hentry = unfold(k_codes, k_at_q);
+    assign k_ventry = k3_codes_q;
+    assign k_hentry = unfold(k3_codes_q, k3_at_q);
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
       logic [VENTRY-1:0] mem_q [2*VGRP];
       always_ff @(posedge clk_i) begin
-        if (k_vert_q && k_pos_q == 3'(e)) mem_q[k_vaddr] <= k_ventry;
+        if (k3_vert_q && k3_pos_q == 3'(e)) mem_q[k3_vaddr_q] <= k_ventry;
         if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
       end
     end
     for (genvar e = 0; e < HAGG; e++) begin : g_hmem
       logic [ENTRY-1:0] mem_q [2*HGRP];
       always_ff @(posedge clk_i) begin
-        if (k_horz_q && k_pos_q == 3'(e)) mem_q[k_haddr] <= k_hentry;
+        if (k3_horz_q && k3_pos_q == 3'(e)) mem_q[k3_haddr_q] <= k_hentry;
         if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
       end
     end
   end else begin : g_asic_kernel
+    assign w_done = k_done_q;
+    assign w_slot = k_slot2_q;
     // ASIC target: rows r .. r + WINDOW - 1 of the column, as pixels: each plane's
     // window is one of BLOCK row offsets (an AND-OR multiplexer, not a
     // bit-granular shifter), then Y, U, V are interleaved at constant positions;

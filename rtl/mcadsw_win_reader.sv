@@ -185,7 +185,6 @@ module mcadsw_win_reader #(
   assign ycur      = ylo_q + CW'(p_k);
   assign yterm     = tiled ? AW'(ycur) << 2 : yoff_q;
   assign addr_next = base_i[32'(p_plane)*AW +: AW] + yterm + xo_q;
-  assign pos_next  = adv_pos(pos_q, len_next, klast_q, strips_q);
 
   // Burst length of pos_q's word: tiled, the words to the strip plane's last,
   // to the 4 KiB boundary, at most BL; raster, 1.
@@ -220,10 +219,18 @@ module mcadsw_win_reader #(
   assign mul_a = tiled ? AW'(xoff_q[CW-1:2]) : AW'(ylo_q);
   assign mul_b = tiled ? tile_i : stride_i;
   assign prod0 = mul_a * mul_b;
+  // pos_next: adv_pos(pos_q, len_next, ...), its test made without the sum: the
+  // burst ends the strip plane's column (next: the next plane or strip) when it
+  // takes every word left (tiled: they fit BL and the page; raster: the last).
+  logic col_end;
+  assign col_end  = tiled ? words_left <= (RB + 1)'(BL) && 11'(words_left) <= page_left
+                          : p_k == klast_q;
+  assign pos_next = col_end ? next_pos({pos_q[QW-1:RB], klast_q}, klast_q, strips_q)
+                            : {pos_q[QW-1:RB], p_k + RB'(len_next)};
   logic advance;                     // addr_q takes addr_next: pos_q moves on
   assign advance = (busy_q && init_q == '0 && !addr_ok_q) || (req_o && gnt_i);
   logic strip_end;                   // pos_q's burst ends its strip (all planes)
-  assign strip_end = pos_next[RB-1:0] == '0 && p_plane == PB'(PLANES - 1);
+  assign strip_end = col_end && p_plane == PB'(PLANES - 1);
   logic [CW-1:0] xoff_next;
   assign xoff_next = mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
 
@@ -322,7 +329,7 @@ module mcadsw_win_reader #(
         pos_q  <= pos_next;
         // Raster (one word a burst): the next image row, or row clamp(y0) of
         // the next plane or strip.
-        yoff_q <= pos_next[RB-1:0] == '0 ? yoff0_q : yoff_q + stride_i;
+        yoff_q <= col_end ? yoff0_q : yoff_q + stride_i;
         if (strip_end) begin
           // The next strip: its memory word, one word column on or the same.
           xabs_q <= xabs_q + (CW + 2)'(4);

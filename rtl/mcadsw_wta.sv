@@ -139,6 +139,22 @@ module mcadsw_wta #(
     end
   end
 
+  // (2k - 1) den for k = 1 .. 8 as shifts and at most two adders: no multiplier
+  // (synth_ecp5 puts a product by a constant on an 18x18 multiplier: slow, and 42
+  // of the ECP5's 156). den < 2^(FB+2), so 15 den fits FB + 6 bits.
+  function automatic logic [FB+5:0] odd_times(input logic [FB+5:0] den, input int k);
+    case (k)
+      1:       odd_times = den;
+      2:       odd_times = (den << 1) + den;                 // 3
+      3:       odd_times = (den << 2) + den;                 // 5
+      4:       odd_times = (den << 3) - den;                 // 7
+      5:       odd_times = (den << 3) + den;                 // 9
+      6:       odd_times = (den << 3) + (den << 1) + den;    // 11
+      7:       odd_times = (den << 3) + (den << 2) + den;    // 13
+      default: odd_times = (den << 4) - den;                 // 15
+    endcase
+  endfunction
+
   always_ff @(posedge clk_i) begin
     if (valid_i && last_i) begin
       a_c0_q <= win_cost;
@@ -168,7 +184,7 @@ module mcadsw_wta #(
         n16 = {1'b0, b_num_q[m*(FB+1) +: FB+1], 4'b0000};
         den = (FB + 6)'(b_den_q[m*(FB+2) +: FB+2]);
         q = '0;
-        for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= (FB + 6)'(2 * k - 1) * den);
+        for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= odd_times(den, k));
         if (!b_ok_q[m] || den == '0) q = '0;
         sub_o[m*SPB +: SPB] <= b_neg_q[m] ? {b_d_q[m*DB +: DB], 4'b0000} - SPB'(q)
                                           : {b_d_q[m*DB +: DB], 4'b0000} + SPB'(q);
