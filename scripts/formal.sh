@@ -24,8 +24,8 @@ command -v yosys > /dev/null || { echo "formal: yosys missing (run scripts/boots
 # --selftest (sed expression on the block's file)
 checks=(
   "mem_ctrl|mcadsw_mem_ctrl.sv|10|s/assign write_sel = hold_q ? hold_wr_q : wr_req_i;/assign write_sel = hold_q ? hold_wr_q : wr_req_i \&\& !any_rd;/"
-  "axi_master|mcadsw_axi_master.sv|10|s/assign contig     = mem_addr_i == ob_next_q \&\& mem_addr_i\[11:0\] != 12'd0;/assign contig     = mem_addr_i == ob_next_q;/"
-  "depth_fifo|mcadsw_depth_fifo.sv|8|s/        tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);/        tail_q <= tail_q;/"
+  "axi_master|mcadsw_axi_master.sv|10|s/assign contig     = s_addr == ob_next_q \&\& s_addr\[11:0\] != 12'd0;/assign contig     = s_addr == ob_next_q;/"
+  "depth_fifo|mcadsw_depth_fifo.sv|8|s/if (desc_push_i) tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);/if (desc_push_i) tail_q <= tail_q;/"
   "cost_agg|mcadsw_cost_agg.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv mcadsw_sum_tree.sv|28|s/    else if (bank_full) wbank_q <= !wbank_q;/    else if (bank_full) wbank_q <= wbank_q;/"
   "frame_ctrl|mcadsw_frame_ctrl.sv|24|s/state_q != StCheck \&\& state_d == StIdle) done_d = 1'b1;/state_q != StCheck \&\& state_d != StCheck) done_d = 1'b1;/"
 )
@@ -58,8 +58,13 @@ for c in "${checks[@]}"; do
   [ -z "$only" ] || [[ " $only " == *" $name "* ]] || continue
   t0=$(date +%s)
   if [ "$mode" = --selftest ]; then
-    if run_check "$name" "$file" "$depth" "$mut"; then
+    rm -f "$out/$name.mutant.log"
+    rc=0
+    run_check "$name" "$file" "$depth" "$mut" || rc=$?
+    if [ "$rc" = 0 ]; then
       echo "formal selftest: $name mutant PASSED the proof: the properties miss it" >&2; status=1
+    elif [ "$rc" = 2 ]; then
+      echo "formal selftest: $name mutant not applied: its sed expression no longer matches rtl/$file" >&2; status=1
     elif ! grep -q "model found: FAIL" "$out/$name.mutant.log"; then
       echo "formal selftest: $name mutant: no counterexample (log $out/$name.mutant.log)" >&2; status=1
     else echo "formal selftest: $name mutant fails the proof with a counterexample, as it must ($(( $(date +%s) - t0 )) s)"; fi
