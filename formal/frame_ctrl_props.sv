@@ -25,6 +25,7 @@ module frame_ctrl_props (
   input logic        cfg_right_i,
   input logic        cfg_rect_i,
   input logic [mcadsw_pkg::ERR_BITS-1:0] err_i,
+  input logic        chk_done_i,         // free: the check may take any number of cycles
   input logic        rchk_done_i,
   input logic [2:0]  rchk_err_i,
   input logic        rect_done_i,
@@ -47,7 +48,7 @@ module frame_ctrl_props (
 
   mcadsw_frame_ctrl dut (
     .clk_i, .rst_ni, .start_i, .cfg_lr_i, .cfg_right_i, .cfg_rect_i, .err_i,
-    .ok_i (err_i == mcadsw_pkg::ErrNone), .accept_o (accept),
+    .ok_i (err_i == mcadsw_pkg::ErrNone), .chk_done_i, .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i, .rchk_err_i,
     .rect_start_o (rect_start), .rect_done_i, .rect_err_i, .rect_sel_o (rect_sel),
     .mark_start_o (mark_start), .mark_done_i, .mark_sel_o (mark_sel), .mark_phase_o (mark_phase),

@@ -10,6 +10,13 @@
 // registered (cap_*_i at capture_i, the engine's start), so that no multiplier lies
 // in front of the address compares in the check's cycle.
 //
+// SEQ (the FPGA target): the plane checks (overlap, beyond the address space) run one
+// pair of planes a cycle, 42 cycles (4 written planes x 10, and 2 stages) from the cycle after capture_i, through one
+// overlap unit instead of 30 (a frame decides them once; on an FPGA the parallel
+// compares were about 3k LUT sites). done_o is low until they are decided and the
+// engine's frame controller waits for it; without SEQ done_o is always high and the
+// check is the combinational one described above.
+//
 // Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
 // address space. The planes a mode reads and writes (docs/memory_map.md):
 //   read   base view Y, U, V and match view Y (the left view as base, or the right
@@ -24,7 +31,8 @@ module mcadsw_cfg_check #(
   parameter int CW   = 12,                            // width / height bits
   parameter int DMAX = mcadsw_pkg::DMAX,              // largest D this build supports
   parameter int NB   = $clog2(DMAX + 1),              // D bits
-  parameter int SB   = AW + CW                        // plane sizes: stride x height (or x columns), exact
+  parameter int SB   = AW + CW,                       // plane sizes: stride x height (or x columns), exact
+  parameter bit SEQ  = 1'(mcadsw_pkg::FPGA)           // plane checks a pair a cycle (done_o)
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
@@ -61,6 +69,8 @@ module mcadsw_cfg_check #(
   // mcadsw_pkg::ErrNone, or the first failing check's code
   output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
   output logic            ok_o,              // err_o == ErrNone
+  output logic            done_o,            // err_o and ok_o are the configuration's (SEQ: low
+                                             // from the cycle after capture_i for 42 cycles)
   // The sizes of the checked planes, for the rectifier's check (mcadsw_rect_check);
   // registered: valid from the cycle after capture_i
   output logic [SB-1:0]   in_size_o,         // an input plane
@@ -82,11 +92,12 @@ module mcadsw_cfg_check #(
   // a < b + b_size, exactly: an address below an end at or past 2^AW always is, so
   // the compare needs only the end's low AW bits (the sum itself is shared by the
   // pairs of a plane: synthesis merges the identical adders).
+  function automatic logic below(input logic [AW-1:0] a, input logic [SB:0] end_);
+    below = (end_ >> AW) != '0 || a < AW'(end_);
+  endfunction
   function automatic logic below_end(input logic [AW-1:0] a, input logic [AW-1:0] b,
                                      input logic [SB-1:0] b_size);
-    logic [SB:0] end_;
-    end_      = (SB + 1)'(b) + (SB + 1)'(b_size);
-    below_end = (end_ >> AW) != '0 || a < AW'(end_);
+    below_end = below(a, (SB + 1)'(b) + (SB + 1)'(b_size));
   endfunction
   function automatic logic overlaps(input logic [AW-1:0] a, input logic [SB-1:0] a_size,
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
@@ -135,31 +146,125 @@ module mcadsw_cfg_check #(
     end
   end
 
+  // The plane checks: any enabled plane beyond the address space (past), any written
+  // plane overlapping another enabled plane (overlap).
+  logic overlap, past;
+  if (!SEQ) begin : g_par
+    always_comb begin
+      past    = 1'b0;
+      overlap = 1'b0;
+      for (int i = 0; i < NIN; i++)
+        past = past || (in_en[i] && beyond(in_base[i*AW +: AW], in_size));
+      for (int o = 0; o < NWR; o++) begin
+        past = past || (wr_en[o] && beyond(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size));
+        for (int i = 0; i < NIN; i++)
+          overlap = overlap || (wr_en[o] && in_en[i] &&
+                                overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                         in_base[i*AW +: AW], in_size));
+        for (int p = 0; p < NWR; p++)       // each pair once: p > o
+          overlap = overlap || (p > o && wr_en[o] && wr_en[p] &&
+                                overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
+                                         wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
+      end
+    end
+    assign done_o = 1'b1;
+  end else begin : g_seq
+    // Step (o, x), o the written plane (0..NWR-1), x any plane (0..NWR-1 the written
+    // ones, NWR.. the read ones): both planes' ends beyond the address space, and
+    // their overlap when they are a pair (x read, or written and x > o). Every
+    // written plane is an o and every read plane an x, so every plane's end is
+    // checked; the steps x <= o of written planes only repeat ends. Three stages a
+    // step (timing): the planes' select, their ends, the compares.
+    localparam int NPL = NWR + NIN;
+    logic [$clog2(NWR)-1:0] o_q;
+    logic [$clog2(NPL)-1:0] x_q;
+    logic                   busy_q, overlap_q, past_q;
+    logic [AW-1:0]          a_base, b_base, a_base1_q, b_base1_q, a_base2_q, b_base2_q;
+    logic [SB-1:0]          a_size, b_size, a_size1_q, b_size1_q;
+    logic [SB:0]            a_end2_q, b_end2_q;
+    logic                   a_en, b_en, pair;
+    logic [1:0]             v_q, a_en_q, b_en_q, pair_q;   // [0] stage 1, [1] stage 2
+    always_comb begin
+      a_base = wr_base[o_q*AW +: AW];
+      a_size = wr_outs[o_q] ? out_size : size;
+      a_en   = wr_en[o_q];
+      if (32'(x_q) < NWR) begin
+        b_base = wr_base[2'(x_q)*AW +: AW];
+        b_size = wr_outs[2'(x_q)] ? out_size : size;
+        b_en   = wr_en[2'(x_q)];
+        pair   = 32'(x_q) > 32'(o_q);
+      end else begin
+        b_base = in_base[3'(32'(x_q) - NWR)*AW +: AW];
+        b_size = in_size;
+        b_en   = in_en[3'(32'(x_q) - NWR)];
+        pair   = 1'b1;
+      end
+    end
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        {busy_q, overlap_q, past_q} <= '0;
+        o_q <= '0;
+        x_q <= '0;
+        {v_q, a_en_q, b_en_q, pair_q} <= '0;
+        {a_base1_q, b_base1_q, a_base2_q, b_base2_q, a_size1_q, b_size1_q, a_end2_q, b_end2_q} <= '0;
+      end else if (capture_i) begin
+        {busy_q, overlap_q, past_q} <= 3'b100;
+        o_q <= '0;
+        x_q <= '0;
+        v_q <= '0;
+      end else begin
+        // stage 0: the step's planes
+        v_q[0]    <= busy_q;
+        a_en_q[0] <= a_en;
+        b_en_q[0] <= b_en;
+        pair_q[0] <= pair;
+        a_base1_q <= a_base;
+        b_base1_q <= b_base;
+        a_size1_q <= a_size;
+        b_size1_q <= b_size;
+        if (busy_q) begin
+          if (32'(x_q) == NPL - 1) begin
+            x_q <= '0;
+            o_q <= o_q + 1'b1;
+            if (32'(o_q) == NWR - 1) busy_q <= 1'b0;
+          end else begin
+            x_q <= x_q + 1'b1;
+          end
+        end
+        // stage 1: their ends, exact
+        v_q[1]    <= v_q[0];
+        a_en_q[1] <= a_en_q[0];
+        b_en_q[1] <= b_en_q[0];
+        pair_q[1] <= pair_q[0];
+        a_base2_q <= a_base1_q;
+        b_base2_q <= b_base1_q;
+        a_end2_q  <= (SB + 1)'(a_base1_q) + (SB + 1)'(a_size1_q);
+        b_end2_q  <= (SB + 1)'(b_base1_q) + (SB + 1)'(b_size1_q);
+        // stage 2: beyond the address space; each below the other's end
+        if (v_q[1]) begin
+          past_q    <= past_q || (a_en_q[1] && a_end2_q > (SB + 1)'(64'd1 << AW)) ||
+                                 (b_en_q[1] && b_end2_q > (SB + 1)'(64'd1 << AW));
+          overlap_q <= overlap_q || (pair_q[1] && a_en_q[1] && b_en_q[1] &&
+                                     below(a_base2_q, b_end2_q) && below(b_base2_q, a_end2_q));
+        end
+      end
+    end
+    assign overlap = overlap_q;
+    assign past    = past_q;
+    assign done_o  = !busy_q && v_q == 2'b00;
+  end
+
   always_comb begin
     logic [CW:0]   out_bytes;          // bytes of an output row
-    logic          misaligned, overlap, past;
+    logic          misaligned;
     logic          tiled;
     tiled     = tile_stride_i != '0;
     out_bytes = sub_i ? {width_i, 1'b0} : {1'b0, width_i};
     misaligned = 1'b0;
-    past       = 1'b0;
-    overlap    = 1'b0;
-    for (int i = 0; i < NIN; i++) begin
+    for (int i = 0; i < NIN; i++)
       misaligned = misaligned || (in_en[i] && in_base[i*AW +: 2] != 2'b00);
-      past       = past || (in_en[i] && beyond(in_base[i*AW +: AW], in_size));
-    end
-    for (int o = 0; o < NWR; o++) begin
+    for (int o = 0; o < NWR; o++)
       misaligned = misaligned || (wr_en[o] && wr_base[o*AW +: 2] != 2'b00);
-      past       = past || (wr_en[o] && beyond(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size));
-      for (int i = 0; i < NIN; i++)
-        overlap = overlap || (wr_en[o] && in_en[i] &&
-                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
-                                       in_base[i*AW +: AW], in_size));
-      for (int p = 0; p < NWR; p++)         // each pair once: p > o
-        overlap = overlap || (p > o && wr_en[o] && wr_en[p] &&
-                              overlaps(wr_base[o*AW +: AW], wr_outs[o] ? out_size : size,
-                                       wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
-    end
     // Each check on its own; the code is the first failing one's, the verdict
     // an OR of all (flat, so the frame controller's branch does not wait for the
     // priority chain).

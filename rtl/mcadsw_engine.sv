@@ -168,7 +168,7 @@ module mcadsw_engine #(
 
   localparam int SB = AW + CW;                      // plane sizes, exact
   logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err;
-  logic cfg_ok;
+  logic cfg_ok, cfg_done;
   logic [SB-1:0] in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
     .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_stride_i),
@@ -181,7 +181,7 @@ module mcadsw_engine #(
     .tile_stride_i (tile_q),
     .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .rect_i (rect_q), .lr_t_i (lr_t_q),
     .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
-    .err_o (cfg_err), .ok_o (cfg_ok),
+    .err_o (cfg_err), .ok_o (cfg_ok), .done_o (cfg_done),
     .in_size_o (in_size), .size_o (size), .out_size_o (out_size)
   );
 
@@ -199,14 +199,16 @@ module mcadsw_engine #(
   // through the check's multipliers and comparators in the frame controller's StSettle;
   // the controller's branch on it starts from flip-flops (timing).
   logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err_q;
-  logic                            cfg_ok_q;
+  logic                            cfg_ok_q, cfg_done_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      cfg_err_q <= mcadsw_pkg::ErrNone;
-      cfg_ok_q  <= 1'b1;
+      cfg_err_q  <= mcadsw_pkg::ErrNone;
+      cfg_ok_q   <= 1'b1;
+      cfg_done_q <= 1'b1;
     end else begin
-      cfg_err_q <= cfg_err;
-      cfg_ok_q  <= cfg_ok;
+      cfg_err_q  <= cfg_err;
+      cfg_ok_q   <= cfg_ok;
+      cfg_done_q <= cfg_done;
     end
   end
 
@@ -214,7 +216,7 @@ module mcadsw_engine #(
     .clk_i, .rst_ni,
     .start_i,
     .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .cfg_rect_i (rect_q), .err_i (cfg_err_q),
-    .ok_i (cfg_ok_q),
+    .ok_i (cfg_ok_q), .chk_done_i (cfg_done_q),
     .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
     .rect_start_o (rect_start), .rect_done_i (rect_done), .rect_err_i (rect_err),

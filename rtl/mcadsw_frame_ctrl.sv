@@ -7,6 +7,7 @@
 // (docs/architecture.md, frame controller and 3.10; docs/memory_map.md, status).
 //
 //   StIdle ── start ──> StSettle ──> StCheck ──(error)──────────────────> StIdle, done + error
+//                                  (waits for the check: chk_done_i)
 //                          │ ok, rectification (RECT_CTRL.ENABLE):
 //                          │   StRectCheck (codes 16..21) -> StRect (the rectify pass;
 //                          │   codes 22, 23) -> StRectDrain (its writes answered) ──┐
@@ -48,6 +49,7 @@ module mcadsw_frame_ctrl (
   input  logic [mcadsw_pkg::ERR_BITS-1:0] err_i,   // valid in StCheck (the check's result registered:
                                             // the configuration settles through it in StSettle)
   input  logic        ok_i,                 // err_i == ErrNone (the check's flat verdict)
+  input  logic        chk_done_i,           // err_i and ok_i decided (StCheck waits for it)
   output logic        accept_o,             // register the configuration now
   // Rectification: the check of its registers, the rectify pass, the mark step
   output logic        rchk_start_o,         // one cycle
@@ -143,7 +145,7 @@ module mcadsw_frame_ctrl (
         code_d  = mcadsw_pkg::ErrNone;
       end
       StSettle: state_d = StCheck;                  // the check's result registered at its end
-      StCheck: begin
+      StCheck: if (chk_done_i) begin
         code_d = err_i;
         if (!ok_i) begin
           state_d = StIdle;
@@ -306,7 +308,7 @@ module mcadsw_frame_ctrl (
   // exactly when there is an error.
   `MCADSW_ASSERT(DoneOnlyWhenIdle, !done_o || !busy_o)
   `MCADSW_ASSERT(ErrorOnlyWithDone, !error_o || done_o)
-  `MCADSW_ASSUME(OkIffNoCode, state_q != StCheck || ok_i == (err_i == mcadsw_pkg::ErrNone))
+  `MCADSW_ASSUME(OkIffNoCode, state_q != StCheck || !chk_done_i || ok_i == (err_i == mcadsw_pkg::ErrNone))
   `MCADSW_ASSERT(CodeIffError, error_o == (error_code_o != mcadsw_pkg::ErrNone))
   // The scheduler starts in the first cycle of a pass; the post stage in its own state.
   `MCADSW_ASSERT(SchedStartInAPass, !sched_start_o || state_q == StLeftPass ||
