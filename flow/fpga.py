@@ -155,11 +155,13 @@ def report(root, sim_summary):
         for k, v in e["utilization"].items():
             if k in ("TRELLIS_COMB", "DP16KD", "MULT18X18D"):
                 bars.append((f"ECP5 {k} (nextpnr)", f"{v['used']} of {v['available']}", v["used"] <= v["available"]))
-    bars.append(("ECP5 placed and routed", "yes" if e.get("place_route") else "no (does not fit)",
-                 bool(e.get("place_route"))))
+    bars.append(("ECP5 placed and routed", pnr_state(e), bool(e.get("place_route"))))
     if need_mhz:
+        placed = e.get("placed_fmax_mhz")
         bars.append((f"ECP5 Fmax >= {FPS_BAR} x {raw} cycles = {need_mhz:.1f} MHz",
-                     f"{fmax:.1f} MHz" if fmax else "not placed", bool(fmax and fmax >= need_mhz)))
+                     f"{fmax:.1f} MHz" if fmax else
+                     f"not routed (estimate after placement {placed:.1f} MHz)" if placed else "not placed",
+                     bool(fmax and fmax >= need_mhz)))
     else:
         bars.append(("CIF D = 64 raw cycles (make sim FPGA=1)", "missing", False))
     for k, (name, cap) in XC7Z020.items():
@@ -168,9 +170,9 @@ def report(root, sim_summary):
     for name, cyc in (("raw", raw), ("lr", lr)):
         if cyc and fmax:
             fps[name] = round(fmax * 1e6 / cyc, 1)
-    # The SoC without the rectifier (flow/ecp5.py soc --no-rect), when make fpga built it: the
-    # configuration that fits, reported beside the whole SoC with the same cycles (its frames
-    # without rectification are the same frames). Its bars are figures, not the issue's bars.
+    # The SoC without the rectifier (flow/ecp5.py soc --no-rect), when make fpga built it:
+    # reported beside the whole SoC with the same cycles (its frames without rectification are
+    # the same frames). Its rows are figures, not the bars.
     n, n_rows, n_fps = None, [], {}
     npath = root / "ecp5_norect" / "summary.json"
     if npath.is_file():
@@ -180,8 +182,7 @@ def report(root, sim_summary):
             if k != "TRELLIS_FF":
                 n_rows.append((f"ECP5 {k} (packed by nextpnr)", f"{v['used']} of {v['available']}",
                                v["used"] <= v["available"]))
-        n_rows.append(("ECP5 placed and routed", "yes" if n.get("place_route") else "no",
-                       bool(n.get("place_route"))))
+        n_rows.append(("ECP5 placed and routed", pnr_state(n), bool(n.get("place_route"))))
         if need_mhz:
             n_rows.append((f"ECP5 Fmax >= {need_mhz:.1f} MHz", f"{n_fmax:.1f} MHz" if n_fmax else "not routed",
                            bool(n_fmax and n_fmax >= need_mhz)))
@@ -210,8 +211,8 @@ def report(root, sim_summary):
     md += [f"| {b} | {v} | {'yes' if ok else '**no**'} |" for b, v, ok in bars]
     if n:
         md += ["", "## ECP5 without the rectifier (flow/ecp5.py soc --no-rect)", "",
-               "The largest configuration that fits: the same SoC with rtl/rect/mcadsw_rect_none.sv",
-               "for the rectifier (RECT_CTRL.ENABLE rejected, code 24); frames a second "
+               "The same SoC with rtl/rect/mcadsw_rect_none.sv for the rectifier (RECT_CTRL.ENABLE",
+               "rejected, code 24); frames a second "
                + (f"raw {n_fps.get('raw')}, LR {n_fps.get('lr')}" if n_fps else "not measured") + ".", "",
                "| figure | value | met |", "|---|---|---|"]
         md += [f"| {b} | {v} | {'yes' if ok else '**no**'} |" for b, v, ok in n_rows]
@@ -235,6 +236,18 @@ def report(root, sim_summary):
     print("\n".join(md[:len(bars) + 6 + (len(n_rows) + 8 if n else 0)]))
     log(f"summary {root / 'summary.json'}, report {root / 'report.md'}")
     return 0 if all(ok for _, _, ok in bars) else 1
+
+
+def pnr_state(e):
+    """Whether an ECP5 summary (flow/ecp5.py soc) was placed and routed, and if not why."""
+    if e.get("place_route"):
+        return "yes"
+    if e.get("over"):
+        return "no (does not fit)"
+    if "placed_fmax_mhz" in e:
+        return ("no (placed; routing unfinished at the time limit)" if e["placed_fmax_mhz"]
+                else "no (placement unfinished at the time limit)")
+    return "not attempted (packed only)"
 
 
 def main(argv):

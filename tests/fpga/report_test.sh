@@ -6,7 +6,8 @@
 # a design over the ECP5's LUT4 sites fails its bars and is not placed; a placed one
 # below 30 frames a second fails the Fmax bar, with the frames a second computed from the
 # CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); missing figures exit 2;
-# the SoC without the rectifier, placed, reported beside the whole SoC that does not fit.
+# the SoC without the rectifier, placed, reported beside the whole SoC that does not fit; a
+# placement whose routing stopped at the time limit, and a design packed only.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 fix=$root/tests/fpga/report
@@ -48,4 +49,15 @@ grep -q '## ECP5 without the rectifier' <<<"$out" || fail "no section without th
 grep -q '| ECP5 Fmax >= 66.8 MHz | 70.2 MHz | yes |' <<<"$out" || fail "Fmax without the rectifier: $out"
 python3 -c "import json,sys; s=json.load(open(sys.argv[1])); assert s['ecp5_norect']['fps_cif_d64']=={'raw':31.5,'lr':20.7}, s; assert s['fps_cif_d64']=={}" "$tmp/fpga/summary.json" \
   || fail "frames a second without the rectifier"
-echo "report_test: 4 cases passed"
+# 5. The SoC fits, placed, routing stopped at the time limit: the placement's estimate in
+# the Fmax row, not met; beside it the SoC without the rectifier packed only (--no-pnr).
+setup ecp5_summary_timeout.json; mkdir -p "$tmp/fpga/ecp5_norect"
+cp "$fix/ecp5_summary_packed.json" "$tmp/fpga/ecp5_norect/summary.json"; run
+[ "$rc" = 1 ] || fail "routing unfinished: exit $rc, expected 1"
+grep -q '| ECP5 TRELLIS_COMB (packed by nextpnr) | 83237 of 83640 | yes |' <<<"$out" || fail "fit: $out"
+grep -q '| ECP5 placed and routed | no (placed; routing unfinished at the time limit) | \*\*no\*\* |' <<<"$out" \
+  || fail "placed, not routed: $out"
+grep -q '| ECP5 Fmax >= 30 x 2226986 cycles = 66.8 MHz | not routed (estimate after placement 30.1 MHz) | \*\*no\*\* |' \
+  <<<"$out" || fail "Fmax after placement: $out"
+grep -q '| ECP5 placed and routed | not attempted (packed only) | \*\*no\*\* |' <<<"$out" || fail "packed only: $out"
+echo "report_test: 5 cases passed"
