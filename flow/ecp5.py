@@ -150,6 +150,14 @@ class PnrTimeout(FlowError):
         self.placed_mhz = placed_mhz
 
 
+class PnrUnplaceable(FlowError):
+    """nextpnr-ecp5 found no legal placement: the design packs within the device but is too
+    full to place (a result, exit 1, not a failed tool)."""
+
+    def __init__(self, msg):
+        super().__init__(msg, 1)
+
+
 def placed_fmax(log_path):
     """nextpnr's clock estimate after placement, before routing (the first "Max frequency"
     line of its log), in MHz, or None."""
@@ -187,6 +195,9 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
                                 if placed else "not placed yet"), placed)
         if rc != 0 or not (out / "nextpnr-report.json").is_file():
             errs = [ln for ln in tail(out / "nextpnr.log", 10**6) if "ERROR" in ln]
+            if any("Unable to find legal placement" in ln for ln in errs):
+                raise PnrUnplaceable("nextpnr-ecp5 found no legal placement (packed within the device, "
+                                     f"too full to place; {out / 'nextpnr.log'})")
             raise FlowError(f"nextpnr-ecp5 failed: {(errs or ['see the log'])[0].strip()} "
                             f"({out / 'nextpnr.log'})", 2)
         rc2, _, secs2 = run_step(run, "ecppack", [tool("yowasp-ecppack"), "--compress", "--input",
@@ -434,6 +445,9 @@ def soc(a):
         except PnrTimeout as t:
             summary["placed_fmax_mhz"] = t.placed_mhz
             summary["problems"].append(str(t))
+        except PnrUnplaceable as u:
+            summary["unplaceable"] = True
+            summary["problems"].append(str(u))
         else:
             util, fmax, problems = check_report(out / "nextpnr-report.json")
             summary["place_route"] = p

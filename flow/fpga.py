@@ -244,6 +244,8 @@ def pnr_state(e):
         return "yes"
     if e.get("over"):
         return "no (does not fit)"
+    if e.get("unplaceable"):
+        return "no (packed within the device; nextpnr found no legal placement)"
     if "placed_fmax_mhz" in e:
         return ("no (placed; routing unfinished at the time limit)" if e["placed_fmax_mhz"]
                 else "no (placement unfinished at the time limit)")

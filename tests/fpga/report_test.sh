@@ -7,7 +7,8 @@
 # below 30 frames a second fails the Fmax bar, with the frames a second computed from the
 # CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); missing figures exit 2;
 # the SoC without the rectifier, placed, reported beside the whole SoC that does not fit; a
-# placement whose routing stopped at the time limit, and a design packed only.
+# placement whose routing stopped at the time limit, a design packed only, and one packed
+# within the device that nextpnr could not place.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 fix=$root/tests/fpga/report
@@ -60,4 +61,10 @@ grep -q '| ECP5 placed and routed | no (placed; routing unfinished at the time l
 grep -q '| ECP5 Fmax >= 30 x 2226986 cycles = 66.8 MHz | not routed (estimate after placement 30.1 MHz) | \*\*no\*\* |' \
   <<<"$out" || fail "Fmax after placement: $out"
 grep -q '| ECP5 placed and routed | not attempted (packed only) | \*\*no\*\* |' <<<"$out" || fail "packed only: $out"
-echo "report_test: 5 cases passed"
+# 6. Packed within the device, but nextpnr found no legal placement: said so, not met.
+setup ecp5_summary_unplaceable.json; run
+[ "$rc" = 1 ] || fail "no legal placement: exit $rc, expected 1"
+grep -q '| ECP5 placed and routed | no (packed within the device; nextpnr found no legal placement) | \*\*no\*\* |' \
+  <<<"$out" || fail "no legal placement: $out"
+grep -q '| ECP5 Fmax >= 30 x 2226986 cycles = 66.8 MHz | not placed | \*\*no\*\* |' <<<"$out" || fail "Fmax not placed: $out"
+echo "report_test: 6 cases passed"
