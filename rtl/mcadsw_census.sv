@@ -468,7 +468,7 @@ module mcadsw_census #(
     logic asic_unused;
     assign asic_unused = ^lsel_q;
     for (genvar l = 0; l < RL; l++) begin : g_lane
-      (* ram_style = "block" *) logic [CWB-1:0] mem_q [RING];
+      (* ram_style = "block", no_rw_check *) logic [CWB-1:0] mem_q [RING];
       logic [CWB-1:0] col_rd_q;
       logic [QB-1:0]  ra;
       assign ra = QB'(wrap(32'(rq) + l, RING));
@@ -476,6 +476,9 @@ module mcadsw_census #(
         if (col_valid_q) mem_q[wq] <= col_q;
         if (rd_en_i) col_rd_q <= mem_q[ra];
       end
+      // The kernel writes ring columns no block in the aggregator reads: no read
+      // meets the write of its column (no_rw_check: docs/architecture.md 3.11).
+      `MCADSW_ASSERT(NoReadOfColumnWritten, !(col_valid_q && rd_en_i && wq == ra))
       for (genvar k = 0; k < WINDOW; k++) begin : g_tap
         if (k < ROWS - WINDOW) begin : g_fold
           assign rd_data_o[(l*WINDOW + k)*CB +: CB] =

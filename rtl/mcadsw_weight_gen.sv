@@ -307,10 +307,11 @@ module mcadsw_weight_gen #(
     // FPGA target: one RAM a plane, a ring column an entry (4 RS deep, ROWS bytes
     // wide: block RAM). A finished strip's 4 columns are held and written one a
     // cycle over the next 4 cycles (a plane's strips are ROWS words apart); the
-    // kernel never reads them that early (ColumnWrittenBeforeRead).
-    (* ram_style = "block" *) logic [CW-1:0] y_mem [4*RS];
-    (* ram_style = "block" *) logic [CW-1:0] u_mem [4*RS];
-    (* ram_style = "block" *) logic [CW-1:0] v_mem [4*RS];
+    // kernel never reads them that early (ColumnWrittenBeforeRead), so no read
+    // meets the write of its entry (no_rw_check: docs/architecture.md 3.11).
+    (* ram_style = "block", no_rw_check *) logic [CW-1:0] y_mem [4*RS];
+    (* ram_style = "block", no_rw_check *) logic [CW-1:0] u_mem [4*RS];
+    (* ram_style = "block", no_rw_check *) logic [CW-1:0] v_mem [4*RS];
     logic [CW-1:0]   y_rd_q, u_rd_q, v_rd_q;
     logic [4*CW-1:0] hold_q;                 // the strip's columns, column 0 first
     logic [2:0]      hn_q;                   // columns still to write (4 .. 0)
@@ -558,22 +559,30 @@ module mcadsw_weight_gen #(
     assign w_slot = k3_slot_q;
     logic [VENTRY-1:0] k_ventry;
     logic [ENTRY-1:0]  k_hentry;
+    logic [VAB-1:0]    vrd_addr;
+    logic [HAB-1:0]    hrd_addr;
+    assign vrd_addr = VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i));
+    assign hrd_addr = HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i));
     assign k_ventry = k3_codes_q;
     assign k_hentry = unfold(k3_codes_q, k3_at_q);
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
-      logic [VENTRY-1:0] mem_q [2*VGRP];
+      (* ram_style = "block", no_rw_check *) logic [VENTRY-1:0] mem_q [2*VGRP];
       always_ff @(posedge clk_i) begin
         if (k3_vert_q && k3_pos_q == 3'(e)) mem_q[k3_vaddr_q] <= k_ventry;
-        if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i))];
+        if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[vrd_addr];
       end
     end
     for (genvar e = 0; e < HAGG; e++) begin : g_hmem
-      logic [ENTRY-1:0] mem_q [2*HGRP];
+      (* ram_style = "block", no_rw_check *) logic [ENTRY-1:0] mem_q [2*HGRP];
       always_ff @(posedge clk_i) begin
         if (k3_horz_q && k3_pos_q == 3'(e)) mem_q[k3_haddr_q] <= k_hentry;
-        if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i))];
+        if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[hrd_addr];
       end
     end
+    // The kernel fills a slot the aggregator does not read: no read meets the
+    // write of its entry (the RAMs are no_rw_check, docs/architecture.md 3.11).
+    `MCADSW_ASSERT(NoVertReadOfEntryWritten, !(k3_vert_q && vrd_en_i && k3_vaddr_q == vrd_addr))
+    `MCADSW_ASSERT(NoHorzReadOfEntryWritten, !(k3_horz_q && hrd_en_i && k3_haddr_q == hrd_addr))
   end else begin : g_asic_kernel
     assign w_done = k_done_q;
     assign w_slot = k_slot2_q;
