@@ -116,6 +116,8 @@ module mcadsw_axi_master #(
     logic [2*EW-1:0] ent_q;                    // entry 0: the head
     logic [1:0]      n_q;
     logic            accept, pop;
+    logic [EW-1:0]   in_ent;                   // the request granted this cycle
+    assign in_ent    = {mem_we_i, mem_be_i, mem_addr_i, mem_len_i, mem_wdata_i};
     assign mem_gnt_o = !drain_i && n_q != 2'd2;
     assign accept    = mem_req_i && mem_gnt_o;
     assign pop       = rd_take || wr_take;
@@ -138,8 +140,8 @@ module mcadsw_axi_master #(
           n = n - 2'd1;
         end
         if (accept) begin
-          if (n == 2'd0) e[0 +: EW] = {mem_we_i, mem_be_i, mem_addr_i, mem_len_i, mem_wdata_i};
-          else           e[EW +: EW] = {mem_we_i, mem_be_i, mem_addr_i, mem_len_i, mem_wdata_i};
+          if (n == 2'd0) e[0 +: EW] = in_ent;
+          else           e[EW +: EW] = in_ent;
           n = n + 2'd1;
         end
         ent_q <= e;

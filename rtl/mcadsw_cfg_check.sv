@@ -11,11 +11,12 @@
 // in front of the address compares in the check's cycle.
 //
 // SEQ (the FPGA target): the plane checks (overlap, beyond the address space) run one
-// pair of planes a cycle, 42 cycles (4 written planes x 10, and 2 stages) from the cycle after capture_i, through one
-// overlap unit instead of 30 (a frame decides them once; on an FPGA the parallel
-// compares were about 3k LUT sites). done_o is low until they are decided and the
-// engine's frame controller waits for it; without SEQ done_o is always high and the
-// check is the combinational one described above.
+// pair of planes a cycle, 42 cycles (4 written planes x 10, and 2 stages) from the
+// cycle after capture_i, through one overlap unit instead of 30 (a frame decides
+// them once; on an FPGA the parallel compares were about 3k LUT sites). done_o is
+// low until they are decided and the engine's frame controller waits for it;
+// without SEQ done_o is always high and the check is the combinational one
+// described above.
 //
 // Plane sizes and ends are exact (AW + CW bits), so no plane wraps around the
 // address space. The planes a mode reads and writes (docs/memory_map.md):
@@ -103,10 +104,12 @@ module mcadsw_cfg_check #(
                                     input logic [AW-1:0] b, input logic [SB-1:0] b_size);
     overlaps = below_end(a, b, b_size) && below_end(b, a, a_size);
   endfunction
+  // A plane's end (base + size, exact) past the address space.
+  function automatic logic past_end(input logic [SB:0] end_);
+    past_end = end_ > (SB + 1)'(64'd1 << AW);
+  endfunction
   function automatic logic beyond(input logic [AW-1:0] base, input logic [SB-1:0] size);
-    logic [SB:0] end_;
-    end_   = (SB + 1)'(base) + (SB + 1)'(size);
-    beyond = end_ > (SB + 1)'(64'd1 << AW);
+    beyond = past_end((SB + 1)'(base) + (SB + 1)'(size));
   endfunction
 
   // The first pass's planes: base view Y, U, V and match view Y.
@@ -242,8 +245,7 @@ module mcadsw_cfg_check #(
         b_end2_q  <= (SB + 1)'(b_base1_q) + (SB + 1)'(b_size1_q);
         // stage 2: beyond the address space; each below the other's end
         if (v_q[1]) begin
-          past_q    <= past_q || (a_en_q[1] && a_end2_q > (SB + 1)'(64'd1 << AW)) ||
-                                 (b_en_q[1] && b_end2_q > (SB + 1)'(64'd1 << AW));
+          past_q    <= past_q || (a_en_q[1] && past_end(a_end2_q)) || (b_en_q[1] && past_end(b_end2_q));
           overlap_q <= overlap_q || (pair_q[1] && a_en_q[1] && b_en_q[1] &&
                                      below(a_base2_q, b_end2_q) && below(b_base2_q, a_end2_q));
         end
