@@ -245,7 +245,8 @@ module mcadsw_cfg_check #(
         b_end2_q  <= (SB + 1)'(b_base1_q) + (SB + 1)'(b_size1_q);
         // stage 2: beyond the address space; each below the other's end
         if (v_q[1]) begin
-          past_q    <= past_q || (a_en_q[1] && past_end(a_end2_q)) || (b_en_q[1] && past_end(b_end2_q));
+          past_q    <= past_q || (a_en_q[1] && past_end(a_end2_q)) ||
+                                 (b_en_q[1] && past_end(b_end2_q));
           overlap_q <= overlap_q || (pair_q[1] && a_en_q[1] && b_en_q[1] &&
                                      below(a_base2_q, b_end2_q) && below(b_base2_q, a_end2_q));
         end
