@@ -162,13 +162,14 @@ mutate: bootstrap
 	@N=$(N) SEED=$(SEED) SAMPLE=$(SAMPLE) MUTANTS="$(MUTANTS)" JOBS=$(JOBS) \
 	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh
 
-## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv and docs/registers.md from params.hpp and regs.hpp
+## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and the C header from params.hpp and regs.hpp
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
 	@$(BUILD_DIR)/bin/gen_rtl_pkg > rtl/mcadsw_pkg.sv
 	@$(BUILD_DIR)/bin/gen_rtl_pkg regs-doc > docs/registers.md
 	@$(BUILD_DIR)/bin/gen_rtl_pkg rect-pkg > rtl/rect/mcadsw_rect_pkg.sv
-	@echo "rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv and docs/registers.md regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp"
+	@$(BUILD_DIR)/bin/gen_rtl_pkg c-header > driver/include/mcadsw/mcadsw_regs.h
+	@echo "rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and driver/include/mcadsw/mcadsw_regs.h regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp"
 
 ## bench: Google Benchmark of the reference and OpenCV's matchers (MDE/s)
 bench: build

@@ -26,6 +26,7 @@
 // the driver a user's firmware uses, over the model's register bus.
 #include "bench_dut.hpp"
 #include "mcadsw/driver.hpp"
+#include "mcadsw/regs.hpp"
 #if VM_COVERAGE
 #include <unistd.h>
 #include <verilated_cov.h>
@@ -310,6 +311,7 @@ class Engine {
     dut_ = make_bench_dut(*ctx_, mem, opt,
                           [this](const std::function<void()>& at_sample) { cycle(at_sample); });
     driver_ = std::make_unique<driver::Engine>(dut_->registers());
+    firmware_ = opt.firmware;
     if (!opt.waves.empty()) {
 #if VM_TRACE_FST
       trace_ = std::make_unique<VerilatedFstC>();
@@ -349,6 +351,7 @@ class Engine {
 
   BenchDut& dut() { return *dut_; }
   driver::Engine& driver() { return *driver_; }
+  Firmware* firmware() { return firmware_; }
 
   // One clock cycle; `at_sample` runs once the cycle's outputs have settled.
   void cycle(const std::function<void()>& at_sample = {}) {
@@ -372,6 +375,7 @@ class Engine {
   std::unique_ptr<VerilatedContext> ctx_ = std::make_unique<VerilatedContext>();
   std::unique_ptr<BenchDut> dut_;
   std::unique_ptr<driver::Engine> driver_;
+  Firmware* firmware_ = nullptr;
 #if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> trace_;
 #endif
@@ -416,14 +420,18 @@ driver::FrameConfig frame_config(const RawConfig& c, const WeightTable& table) {
   return f;
 }
 
-// The configuration through the driver, both interrupts on; the frame starts
-// with start().
+// The configuration through the driver (or EngineOptions::firmware), both
+// interrupts on; the frame starts with start().
 void program(Engine& e, const RawConfig& c, const WeightTable& table) {
+  if (e.firmware()) return e.firmware()->configure(e.dut().registers(), frame_config(c, table));
   e.driver().configure(frame_config(c, table));
   e.driver().enable_interrupts(true, true);
 }
 
-void start(Engine& e) { e.driver().start(); }
+void start(Engine& e) {
+  if (e.firmware()) return e.firmware()->start(e.dut().registers());
+  e.driver().start();
+}
 
 void abort_frame(Engine& e) {
   if (!e.dut().can_abort())
@@ -482,6 +490,7 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const Star
   }
   r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   read_status(e, r);
+  if (e.firmware()) e.firmware()->frame_over(e.dut().registers());
   r.read_bursts -= before.read_bursts;
   r.write_bursts -= before.write_bursts;
 }

@@ -19,7 +19,25 @@
 #include "mcadsw/rectify.hpp"
 #include "mcadsw/ref.hpp"
 
+namespace mcadsw::driver {
+class RegisterBus;
+struct FrameConfig;
+}  // namespace mcadsw::driver
+
 namespace mcadsw::sim {
+
+// Firmware other than the C++ driver (the C header's test, tests/c/): run_engine and
+// run_frames configure and start each frame through it, on the register bus the
+// driver uses, and hand it the bus once the frame is over (after the bench has read
+// status and counters itself, with the driver).
+class Firmware {
+ public:
+  virtual ~Firmware() = default;
+  // Every configuration register, the mode and both interrupt enables.
+  virtual void configure(driver::RegisterBus& bus, const driver::FrameConfig& frame) = 0;
+  virtual void start(driver::RegisterBus& bus) = 0;
+  virtual void frame_over(driver::RegisterBus& bus) = 0;
+};
 
 // Clock period the waves are written with: 95 MHz, the paper's clock and
 // constraints/mcadsw.sdc's `period` (a test checks they agree).
@@ -78,6 +96,7 @@ struct EngineOptions {
   // invalid code at every invalid base pixel (mcadsw::mark_rect_invalid); the
   // rectified planes the mode reads and the bitmaps are compared too.
   std::optional<Rectification> rect;
+  Firmware* firmware = nullptr;  // programs the frames instead of the C++ driver; not owned
 };
 
 struct EngineResult {

@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mcadsw_uio: cannot open %s: %s\n", dev.c_str(), std::strerror(errno));
     return 1;
   }
-  void* map = mmap(nullptr, mcadsw::regs::kSpan, PROT_READ | PROT_WRITE, MAP_SHARED, fd, phys);
+  void* map = mmap(nullptr, MCADSW_REG_SPAN, PROT_READ | PROT_WRITE, MAP_SHARED, fd, phys);
   if (map == MAP_FAILED) {
     std::fprintf(stderr, "mcadsw_uio: cannot map %s: %s\n", dev.c_str(), std::strerror(errno));
     close(fd);
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
                   unsigned(n.stalls));
     }
   } else if (arg < argc) {
-    munmap(map, mcadsw::regs::kSpan);
+    munmap(map, MCADSW_REG_SPAN);
     close(fd);
     return usage();
   } else {
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
     std::printf("busy %d, done %d, error %d (code %d: %s)\n", st.busy, st.done, st.error, st.error_code,
                 mcadsw::driver::error_text(st.error_code));
   }
-  munmap(map, mcadsw::regs::kSpan);
+  munmap(map, MCADSW_REG_SPAN);
   close(fd);
   return rc;
 }

@@ -17,6 +17,8 @@
 #include "Vmcadsw_regs.h"
 #include "axil_driver.hpp"
 #include "mcadsw/driver.hpp"
+#include "mcadsw/params.hpp"
+#include "mcadsw/regs.hpp"
 #include "vbits.hpp"
 
 namespace mcadsw {

@@ -4,21 +4,22 @@
 // Driver of the MCADSW engine (rtl/mcadsw_top.sv) for firmware, the simulation
 // harness and the tests alike: configure a frame from a plain struct, start it,
 // wait for it (poll STATUS, or take the interrupt and read it), read the status
-// and counters, decode error codes. The register map is sw_ref/include/mcadsw/regs.hpp
-// (docs/registers.md); the meaning of each value docs/memory_map.md.
+// and counters, decode error codes. Built on the C header mcadsw/mcadsw_regs.h, the
+// register map C firmware uses too (generated from sw_ref/include/mcadsw/regs.hpp,
+// docs/registers.md); the meaning of each value docs/memory_map.md.
 //
 // A platform gives register access through two functions, RegisterBus::read and
 // ::write, of 32-bit registers at byte offsets from the block's base: the Verilator
 // harness over its AXI4-Lite bus functional model, a Linux program over an mmap of
 // /dev/uioN or /dev/mem (driver/examples/mcadsw_uio.cpp), a bare-metal one over a
-// volatile pointer. Header-only, C++17, no allocation, no exceptions of its own.
+// volatile pointer. Header-only, C++17, no allocation, no exceptions of its own; it
+// needs only this directory (driver/include).
 #pragma once
 
 #include <array>
 #include <cstdint>
 
-#include "mcadsw/params.hpp"
-#include "mcadsw/regs.hpp"
+#include "mcadsw/mcadsw_regs.h"
 
 namespace mcadsw::driver {
 
@@ -44,9 +45,9 @@ struct FrameConfig {
   bool subpixel = false;      // 16-bit output, 16 d + offset
   bool lr = false;            // left-right check, fill, median; writes the mask
   bool right = false;         // the right view as base (not with lr)
-  int lr_tolerance = kLrToleranceDefault;  // T, 0 .. 63
+  int lr_tolerance = MCADSW_LR_T_DEFAULT;  // T, 0 .. MCADSW_LR_T_MAX
   // The weight table as its thresholds (docs/algorithm.md; mcadsw::weight_thresholds()).
-  std::array<uint32_t, kWeightThresholds> thresholds{};
+  std::array<uint32_t, MCADSW_WEIGHT_THRESHOLDS> thresholds{};
   // Rectification (register map 1.2; docs/architecture.md 3.10, docs/algorithm.md 13):
   // with `rect` the engine first resamples the raw planes through the meshes into the
   // planes above (base_ly ..., in their layout: raster with `stride`, or column-tiled
@@ -59,7 +60,7 @@ struct FrameConfig {
   int raw_width = 0, raw_height = 0;  // the raw views, 1 .. 2048 (the frame: width x height)
   uint32_t raw_stride = 0;    // raw planes' bytes a row; column-tiled (tile_stride != 0):
                               // bytes from one 4-pixel column to the next
-  std::array<uint32_t, 6> raw_base{};    // raw planes LY LU LV RY RU RV (the planes the mode reads)
+  std::array<uint32_t, MCADSW_RAW_PLANES> raw_base{};    // raw planes LY LU LV RY RU RV (the planes the mode reads)
   std::array<uint32_t, 2> mesh_base{};   // left, right: nx x ny nodes, u then v, 8 bytes a node
   int mesh_nx = 0, mesh_ny = 0;          // ((width - 1) >> s) + 2, ((height - 1) >> s) + 2
   std::array<uint32_t, 2> valid_base{};  // left, right validity bitmaps (written by the engine)
@@ -72,8 +73,8 @@ struct Identity {
   bool rect = false;          // the rectifier is built in (HWCONFIG.NORECT 0; map 1.3)
   // The block answers with the ID and a register map version this driver knows.
   bool compatible() const {
-    return id == regs::kIdValue && version_major == int(regs::kVersionMajor) &&
-           version_minor >= int(regs::kVersionMinor);
+    return id == MCADSW_ID_MAGIC && version_major == int(MCADSW_MAP_VERSION_MAJOR) &&
+           version_minor >= int(MCADSW_MAP_VERSION_MINOR);
   }
 };
 
@@ -81,7 +82,7 @@ struct Status {
   bool busy = false;
   bool done = false;          // a frame finished or was rejected since start()
   bool error = false;         // ... rejected, or ended by a bus error or an abort
-  int error_code = 0;         // regs::kErrors; error_text() below
+  int error_code = 0;         // enum mcadsw_error; error_text() below
 };
 
 struct Counters {
@@ -89,7 +90,7 @@ struct Counters {
 };
 
 // The text of an error code, for messages.
-inline const char* error_text(int code) { return regs::error_text(code); }
+inline const char* error_text(int code) { return mcadsw_error_text(uint32_t(code)); }
 
 class Engine {
  public:
@@ -97,57 +98,60 @@ class Engine {
 
   Identity identify() {
     Identity i;
-    i.id = bus_.read(regs::kId);
-    const uint32_t v = bus_.read(regs::kVersion);
-    i.version_major = int(field(v, regs::kVersionMajorLsb, 8));
-    i.version_minor = int(field(v, regs::kVersionMinorLsb, 8));
-    const uint32_t hw = bus_.read(regs::kHwConfig);
-    i.dmax = int(field(hw, regs::kHwConfigDmaxLsb, 8));
-    i.par = int(field(hw, regs::kHwConfigParLsb, 4));
-    i.rect = field(hw, regs::kHwConfigNoRectLsb, 1) == 0;
+    i.id = bus_.read(MCADSW_REG_ID);
+    const uint32_t v = bus_.read(MCADSW_REG_VERSION);
+    i.version_major = int(MCADSW_GET(v, VERSION_MAJOR));
+    i.version_minor = int(MCADSW_GET(v, VERSION_MINOR));
+    const uint32_t hw = bus_.read(MCADSW_REG_HWCONFIG);
+    i.dmax = int(MCADSW_GET(hw, HWCONFIG_DMAX));
+    i.par = int(MCADSW_GET(hw, HWCONFIG_PAR));
+    i.rect = MCADSW_GET(hw, HWCONFIG_NORECT) == 0;
     return i;
   }
 
   // Writes every configuration register and the mode; the frame starts with start().
   void configure(const FrameConfig& c) {
-    bus_.write(regs::kBaseLy, c.base_ly);
-    bus_.write(regs::kBaseLu, c.base_lu);
-    bus_.write(regs::kBaseLv, c.base_lv);
-    bus_.write(regs::kBaseRy, c.base_ry);
-    bus_.write(regs::kBaseRu, c.base_ru);
-    bus_.write(regs::kBaseRv, c.base_rv);
-    bus_.write(regs::kBaseOut, c.base_out);
-    bus_.write(regs::kBaseDl, c.base_dl);
-    bus_.write(regs::kBaseDr, c.base_dr);
-    bus_.write(regs::kBaseMask, c.base_mask);
-    bus_.write(regs::kStride, c.stride);
-    bus_.write(regs::kOutStride, c.out_stride);
-    bus_.write(regs::kTileStride, c.tile_stride);
-    bus_.write(regs::kSize, put(uint32_t(c.width), regs::kSizeWidthLsb, regs::kSizeBits) |
-                                put(uint32_t(c.height), regs::kSizeHeightLsb, regs::kSizeBits));
-    bus_.write(regs::kDisp, put(uint32_t(c.disparities), 0, regs::kDispBitsReg));
-    bus_.write(regs::kLrT, put(uint32_t(c.lr_tolerance), 0, regs::kLrTBits));
-    for (int i = 0; i < kWeightThresholds; ++i)
-      bus_.write(regs::kThr0 + 4 * uint32_t(i), put(c.thresholds[size_t(i)], 0, regs::kThrBits));
-    bus_.write(regs::kRectCtrl, put(uint32_t(c.rect), regs::kRectEnableLsb, 1) |
-                                    put(uint32_t(c.rect_step_log2), regs::kRectStepLsb, regs::kRectStepWidth));
-    bus_.write(regs::kRawSize, put(uint32_t(c.raw_width), regs::kSizeWidthLsb, regs::kSizeBits) |
-                                   put(uint32_t(c.raw_height), regs::kSizeHeightLsb, regs::kSizeBits));
-    bus_.write(regs::kRawStride, c.raw_stride);
-    for (size_t p = 0; p < c.raw_base.size(); ++p) bus_.write(regs::kRawLy + 4 * uint32_t(p), c.raw_base[p]);
-    bus_.write(regs::kMeshL, c.mesh_base[0]);
-    bus_.write(regs::kMeshR, c.mesh_base[1]);
-    bus_.write(regs::kMeshNodes, put(uint32_t(c.mesh_nx), regs::kMeshNxLsb, regs::kSizeBits) |
-                                     put(uint32_t(c.mesh_ny), regs::kMeshNyLsb, regs::kSizeBits));
-    bus_.write(regs::kValidL, c.valid_base[0]);
-    bus_.write(regs::kValidR, c.valid_base[1]);
-    const uint32_t mode = uint32_t(c.subpixel) | uint32_t(c.lr) << 1 | uint32_t(c.right) << 2;
-    bus_.write(regs::kCtrl, mode << regs::kCtrlModeLsb);
+    bus_.write(MCADSW_REG_BASE_LY, c.base_ly);
+    bus_.write(MCADSW_REG_BASE_LU, c.base_lu);
+    bus_.write(MCADSW_REG_BASE_LV, c.base_lv);
+    bus_.write(MCADSW_REG_BASE_RY, c.base_ry);
+    bus_.write(MCADSW_REG_BASE_RU, c.base_ru);
+    bus_.write(MCADSW_REG_BASE_RV, c.base_rv);
+    bus_.write(MCADSW_REG_BASE_OUT, c.base_out);
+    bus_.write(MCADSW_REG_BASE_DL, c.base_dl);
+    bus_.write(MCADSW_REG_BASE_DR, c.base_dr);
+    bus_.write(MCADSW_REG_BASE_MASK, c.base_mask);
+    bus_.write(MCADSW_REG_STRIDE, c.stride);
+    bus_.write(MCADSW_REG_OUT_STRIDE, c.out_stride);
+    bus_.write(MCADSW_REG_TILE_STRIDE, c.tile_stride);
+    bus_.write(MCADSW_REG_SIZE,
+               MCADSW_PUT(uint32_t(c.width), SIZE_WIDTH) | MCADSW_PUT(uint32_t(c.height), SIZE_HEIGHT));
+    bus_.write(MCADSW_REG_DISP, MCADSW_PUT(uint32_t(c.disparities), DISP_D));
+    bus_.write(MCADSW_REG_LR_T, MCADSW_PUT(uint32_t(c.lr_tolerance), LR_T_T));
+    for (int i = 0; i < MCADSW_WEIGHT_THRESHOLDS; ++i)
+      bus_.write(MCADSW_REG_THR0 + 4 * uint32_t(i), mcadsw_put(c.thresholds[size_t(i)], 0, MCADSW_THR_BITS));
+    bus_.write(MCADSW_REG_RECT_CTRL,
+               MCADSW_PUT(uint32_t(c.rect), RECT_CTRL_ENABLE) |
+                   MCADSW_PUT(uint32_t(c.rect_step_log2), RECT_CTRL_STEP_LOG2));
+    bus_.write(MCADSW_REG_RAW_SIZE,
+               MCADSW_PUT(uint32_t(c.raw_width), RAW_SIZE_WIDTH) | MCADSW_PUT(uint32_t(c.raw_height), RAW_SIZE_HEIGHT));
+    bus_.write(MCADSW_REG_RAW_STRIDE, c.raw_stride);
+    for (size_t p = 0; p < c.raw_base.size(); ++p) bus_.write(MCADSW_REG_RAW_LY + 4 * uint32_t(p), c.raw_base[p]);
+    bus_.write(MCADSW_REG_MESH_L, c.mesh_base[0]);
+    bus_.write(MCADSW_REG_MESH_R, c.mesh_base[1]);
+    bus_.write(MCADSW_REG_MESH_NODES,
+               MCADSW_PUT(uint32_t(c.mesh_nx), MESH_NODES_NX) | MCADSW_PUT(uint32_t(c.mesh_ny), MESH_NODES_NY));
+    bus_.write(MCADSW_REG_VALID_L, c.valid_base[0]);
+    bus_.write(MCADSW_REG_VALID_R, c.valid_base[1]);
+    const uint32_t mode = uint32_t(c.subpixel) << MCADSW_MODE_SUBPIXEL_BIT | uint32_t(c.lr) << MCADSW_MODE_LR_BIT |
+                          uint32_t(c.right) << MCADSW_MODE_RIGHT_BIT;
+    bus_.write(MCADSW_REG_CTRL, MCADSW_PUT(mode, CTRL_MODE));
   }
 
   // IRQ_ENABLE: the interrupt on STATUS.DONE and / or STATUS.ERROR.
   void enable_interrupts(bool done, bool error) {
-    bus_.write(regs::kIrqEnable, uint32_t(done) << regs::kIrqDoneLsb | uint32_t(error) << regs::kIrqErrorLsb);
+    bus_.write(MCADSW_REG_IRQ_ENABLE,
+               MCADSW_PUT(uint32_t(done), IRQ_ENABLE_DONE) | MCADSW_PUT(uint32_t(error), IRQ_ENABLE_ERROR));
   }
 
   // Clears the sticky DONE and ERROR (and so the interrupt), then CTRL.START with
@@ -155,29 +159,29 @@ class Engine {
   // the engine while it is busy.
   void start() {
     clear();
-    pulse(regs::kCtrlStartLsb);
+    pulse(MCADSW_CTRL_START_MASK);
   }
 
-  // CTRL.ABORT: a running frame ends (error code kErrAborted) once the bus is quiet.
-  void abort() { pulse(regs::kCtrlAbortLsb); }
+  // CTRL.ABORT: a running frame ends (MCADSW_ERR_ABORTED) once the bus is quiet.
+  void abort() { pulse(MCADSW_CTRL_ABORT_MASK); }
 
   // Write 1 to clear STATUS.DONE and STATUS.ERROR: acknowledges the interrupt.
   void clear() {
-    bus_.write(regs::kStatus, 1u << regs::kStatusDoneLsb | 1u << regs::kStatusErrorLsb);
+    bus_.write(MCADSW_REG_STATUS, MCADSW_STATUS_DONE_MASK | MCADSW_STATUS_ERROR_MASK);
   }
 
   Status status() {
-    const uint32_t s = bus_.read(regs::kStatus);
+    const uint32_t s = bus_.read(MCADSW_REG_STATUS);
     Status st;
-    st.busy = field(s, regs::kStatusBusyLsb, 1);
-    st.done = field(s, regs::kStatusDoneLsb, 1);
-    st.error = field(s, regs::kStatusErrorLsb, 1);
-    st.error_code = int(field(s, regs::kStatusCodeLsb, regs::kStatusCodeWidth));
+    st.busy = MCADSW_GET(s, STATUS_BUSY);
+    st.done = MCADSW_GET(s, STATUS_DONE);
+    st.error = MCADSW_GET(s, STATUS_ERROR);
+    st.error_code = int(MCADSW_GET(s, STATUS_ERROR_CODE));
     return st;
   }
 
   // IRQ_STATUS: the pending interrupt causes (an interrupt handler's first read).
-  bool interrupt_pending() { return bus_.read(regs::kIrqStatus) != 0; }
+  bool interrupt_pending() { return bus_.read(MCADSW_REG_IRQ_STATUS) != 0; }
 
   // Polls STATUS until DONE, at most max_polls reads (calling idle() between two,
   // if given: a sleep, or a simulation's clock); returns the last status read.
@@ -196,19 +200,16 @@ class Engine {
 
   Counters counters() {
     Counters c;
-    c.cycles = bus_.read(regs::kCycles);
-    c.words_read = bus_.read(regs::kWordsRead);
-    c.words_written = bus_.read(regs::kWordsWritten);
-    c.stalls = bus_.read(regs::kStalls);
+    c.cycles = bus_.read(MCADSW_REG_CYCLES);
+    c.words_read = bus_.read(MCADSW_REG_WORDS_READ);
+    c.words_written = bus_.read(MCADSW_REG_WORDS_WRITTEN);
+    c.stalls = bus_.read(MCADSW_REG_STALLS);
     return c;
   }
 
  private:
-  static uint32_t field(uint32_t v, int lsb, int width) {
-    return v >> lsb & (width >= 32 ? ~0u : (1u << width) - 1);
-  }
-  static uint32_t put(uint32_t v, int lsb, int width) { return field(v, 0, width) << lsb; }
-  void pulse(int lsb) { bus_.write(regs::kCtrl, bus_.read(regs::kCtrl) | 1u << lsb); }
+  // CTRL with a pulse bit (START or ABORT) set: read-modify-write, the pulse bits read 0.
+  void pulse(uint32_t bit) { bus_.write(MCADSW_REG_CTRL, bus_.read(MCADSW_REG_CTRL) | bit); }
 
   RegisterBus& bus_;
 };

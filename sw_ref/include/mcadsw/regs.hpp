@@ -88,6 +88,8 @@ inline constexpr int kHwConfigDmaxLsb = 0, kHwConfigParLsb = 8, kHwConfigNoRectL
 inline constexpr int kCtrlStartLsb = 0;
 inline constexpr int kCtrlAbortLsb = 1;
 inline constexpr int kCtrlModeLsb = 8, kCtrlModeWidth = 3;
+// CTRL.MODE's bits (docs/memory_map.md); LR and right view as base not together (code 8).
+inline constexpr int kModeSubpixelBit = 0, kModeLrBit = 1, kModeRightBit = 2;
 inline constexpr int kStatusBusyLsb = 0;
 inline constexpr int kStatusDoneLsb = 1;
 inline constexpr int kStatusErrorLsb = 2;
