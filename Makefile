@@ -52,13 +52,18 @@ NORECT  := $(filter 0,$(RECT))
 CFG_SET := $(strip $(DMAX)$(PAR)$(FPGA_ON)$(NORECT))
 CFG_DIR := $(if $(CFG_SET),$(BUILD_DIR)/dmax$(or $(DMAX),64)_par$(or $(PAR),1)$(if $(FPGA_ON),_fpga)$(if $(NORECT),_norect),$(BUILD_DIR))
 CFG_DEP := $(if $(CFG_SET),sim-build,build)
+# A configuration's build verilates only the SoC model, and on the FPGA target with the
+# rectifier the benches of the blocks it reshapes: the options tests/dmax/run.sh gives the
+# same directory (CMakeLists.txt, MCADSW_BLOCK_BENCHES).
+CFG_BENCHES := $(if $(and $(FPGA_ON),$(if $(NORECT),,1)),census;weight_gen;cost_agg,none)
 
 ## sim-build: DMAX=<n> PAR=<p> FPGA=1 RECT=0: the reference, RTL and harness for DMAX (1..128)
 ##   disparities, PAR (1, 2, 4) a step, the FPGA target's memory shapes, without the rectifier, in
 ##   build/dmax<n>_par<p>[_fpga][_norect]; make sim and sim-random with DMAX=, PAR=, FPGA=1 or RECT=0 use it
 sim-build: bootstrap
 	@cmake -S . -B $(CFG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX=$(or $(DMAX),64) \
-	  -DMCADSW_PAR=$(or $(PAR),1) -DMCADSW_FPGA=$(if $(FPGA_ON),ON,OFF) -DMCADSW_RECT=$(if $(NORECT),OFF,ON) > /dev/null
+	  -DMCADSW_PAR=$(or $(PAR),1) -DMCADSW_FPGA=$(if $(FPGA_ON),ON,OFF) -DMCADSW_RECT=$(if $(NORECT),OFF,ON) \
+	  -DMCADSW_BLOCK_BENCHES="$(CFG_BENCHES)" -DMCADSW_CORE_MODEL=OFF > /dev/null
 	@cmake --build $(CFG_DIR) -j $(JOBS) --target mcadsw_sim mcadsw_sim_random
 	@echo "sim-build: $(CFG_DIR)/bin/mcadsw_sim (DMAX=$(or $(DMAX),64), PAR=$(or $(PAR),1), $(if $(FPGA_ON),FPGA,ASIC) target$(if $(NORECT),$(comma) without the rectifier))"
 

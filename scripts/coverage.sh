@@ -30,7 +30,7 @@ vcov=/usr/bin/verilator_coverage
 [ -f "$vroot/verilator-config.cmake" ] && [ -x "$vcov" ] || {
   echo "coverage: Debian's Verilator missing at $vroot (run scripts/bootstrap.sh)" >&2; exit 2; }
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_COVERAGE=ON \
-  -DMCADSW_VERILATOR_ROOT="$vroot" > /dev/null
+  -DMCADSW_VERILATOR_ROOT="$vroot" -DMCADSW_BLOCK_BENCHES=none -DMCADSW_CORE_MODEL=OFF > /dev/null
 echo "coverage: building the instrumented model ($build)"
 cmake --build "$build" --target mcadsw_sim mcadsw_sim_random rtl_engine_test rtl_axi_test -j "$(nproc)" > "$build/coverage_build.log" 2>&1 || {
   tail -30 "$build/coverage_build.log"; echo "coverage: build failed" >&2; exit 1; }

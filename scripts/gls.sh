@@ -44,7 +44,7 @@ echo "gls: building the gate-level model (Verilator, $gls_build)"
 # -O1: the generated model of a netlist of ~400k cells takes far longer to
 # compile at -O3 than it runs on a small crop.
 cmake -S "$root" -B "$gls_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$dmax" \
-      -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_GLS_NETLIST="$netlist" > /dev/null
+      -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_GLS_NETLIST="$netlist" -DMCADSW_BLOCK_BENCHES=none > /dev/null
 start=$(date +%s)
 cmake --build "$gls_build" --target mcadsw_sim_gls mcadsw_sim > "$out/build.log" 2>&1 || {
   tail -30 "$out/build.log"; echo "gls: build failed (log: $out/build.log)" >&2; exit 1; }

@@ -161,7 +161,8 @@ else
   # 2. The model and the kill suite's programs, at -O1 as for `make gls`: the
   # generated model of the flattened design compiles in about 30 s.
   cmake -S "$root" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_MUTANT_VERILOG="$design" > "$out/cmake.log" 2>&1 ||
+        -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DMCADSW_MUTANT_VERILOG="$design" \
+        -DMCADSW_BLOCK_BENCHES=none -DMCADSW_CORE_MODEL=OFF > "$out/cmake.log" 2>&1 ||
     { tail -20 "$out/cmake.log"; die "cmake configure failed (log: $out/cmake.log)"; }
   t0=$(date +%s)
   echo "mutate: building the mutant model and the kill suite (Verilator, $out/cmake)"

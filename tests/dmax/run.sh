@@ -32,13 +32,18 @@ case $fpga in
 esac
 case $rect in
   1) rect_opt=ON; with="" ;;
-  0) rect_opt=OFF; suffix=${suffix}_norect; with=", without the rectifier" ;;
+  # Without the rectifier the blocks above are the same RTL: their benches ran with it.
+  0) rect_opt=OFF; suffix=${suffix}_norect; with=", without the rectifier"; blocks=() ;;
   *) echo "dmax: RECT='$rect': 0 or 1" >&2; exit 2 ;;
 esac
 dir=$parent/dmax${dmax}_par$par$suffix
 echo "dmax: configuring and building $dir (DMAX = $dmax, PAR = $par, $target target$with)"
+# Only the models it runs (CMakeLists.txt, MCADSW_BLOCK_BENCHES): the same options as
+# make sim-build's for this directory (Makefile), so neither reconfigures the other's.
+benches=$(IFS=';'; echo "${blocks[*]#rtl_}" | sed 's/_test//g')
 cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$dmax" -DMCADSW_PAR="$par" \
-  -DMCADSW_FPGA="$fpga_opt" -DMCADSW_RECT="$rect_opt" > "$dir.configure.log" 2>&1 ||
+  -DMCADSW_FPGA="$fpga_opt" -DMCADSW_RECT="$rect_opt" -DMCADSW_BLOCK_BENCHES="${benches:-none}" \
+  -DMCADSW_CORE_MODEL=OFF > "$dir.configure.log" 2>&1 ||
   { tail -20 "$dir.configure.log"; echo "dmax: configure failed" >&2; exit 1; }
 cmake --build "$dir" -j "$(nproc)" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random "${blocks[@]}" \
   > "$dir.build.log" 2>&1 ||
