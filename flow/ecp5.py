@@ -225,8 +225,6 @@ def pack(out, board, lpf=None):
            "--json", "netlist.json", "--pack-only", "--report", "pack-report.json", "-l", "pack.log", "-q"]
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
-    if heatmap:
-        cmd += ["--router2-heatmap", "heat"]
     run = Run()
     try:
         rc, mb, secs = run_step(run, "nextpnr-ecp5 --pack-only", cmd, out, "pack.out.log")
