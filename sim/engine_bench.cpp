@@ -401,9 +401,9 @@ driver::FrameConfig frame_config(const RawConfig& c, const WeightTable& table) {
   f.width = c.width;
   f.height = c.height;
   f.disparities = c.disparities;
-  f.subpixel = c.mode & 1;
-  f.lr = c.mode >> 1 & 1;
-  f.right = c.mode >> 2 & 1;
+  f.subpixel = c.mode >> regs::kModeSubpixelBit & 1;
+  f.lr = c.mode >> regs::kModeLrBit & 1;
+  f.right = c.mode >> regs::kModeRightBit & 1;
   f.lr_tolerance = c.lr_t;
   f.rect = c.rect;
   f.rect_step_log2 = c.rect_step;
