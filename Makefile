@@ -150,11 +150,12 @@ gls: gen-rtl-pkg
 	@DMAX=$(DMAX) FRAME=$(FRAME) BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/gls.sh
 
 ## lint: verilator --lint-only -Wall on every RTL module, with the ASIC and the FPGA target's package,
-##   and on the board shell of make fpga around the SoC
+##   on the board shell of make fpga around the SoC, and on the vendor-tool wrapper rtl/mcadsw_axi.v
 lint: configure
 	@scripts/rtl_check.sh lint
 	@scripts/rtl_check.sh lint $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
 	@scripts/rtl_check.sh board $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
+	@scripts/rtl_check.sh wrapper
 
 ## formal: bounded proofs (Yosys SAT) of formal/ and the blocks' MCADSW_ASSERTs
 ##   (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail
@@ -167,14 +168,18 @@ mutate: bootstrap
 	@N=$(N) SEED=$(SEED) SAMPLE=$(SAMPLE) MUTANTS="$(MUTANTS)" JOBS=$(JOBS) \
 	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh
 
-## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and the C header from params.hpp and regs.hpp
+## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md, the C header,
+##   the FuseSoC core mcadsw.core and the IP-XACT component component.xml from their sources
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
 	@$(BUILD_DIR)/bin/gen_rtl_pkg > rtl/mcadsw_pkg.sv
 	@$(BUILD_DIR)/bin/gen_rtl_pkg regs-doc > docs/registers.md
 	@$(BUILD_DIR)/bin/gen_rtl_pkg rect-pkg > rtl/rect/mcadsw_rect_pkg.sv
 	@$(BUILD_DIR)/bin/gen_rtl_pkg c-header > driver/include/mcadsw/mcadsw_regs.h
-	@echo "rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and driver/include/mcadsw/mcadsw_regs.h regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp"
+	@python3 flow/fusesoc_core.py
+	@python3 flow/ipxact.py --gen-rtl-pkg $(BUILD_DIR)/bin/gen_rtl_pkg
+	@echo "rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and driver/include/mcadsw/mcadsw_regs.h regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp;"
+	@echo "mcadsw.core from rtl/mcadsw.f, component.xml from rtl/mcadsw_axi.v, regs.hpp and the package"
 
 ## bench: Google Benchmark of the reference and OpenCV's matchers (MDE/s)
 bench: build

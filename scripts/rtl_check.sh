@@ -10,6 +10,11 @@
 #   scripts/rtl_check.sh board     verilator --lint-only -Wall of the board shells
 #                                  (rtl/board/*.sv, each with the SoC under it; the ECP5
 #                                  primitives they instantiate from tests/fpga/ecp5_cells_stub.sv)
+#   scripts/rtl_check.sh wrapper   the vendor-tool wrapper rtl/mcadsw_axi.v (Verilog-2001, not in
+#                                  rtl/mcadsw.f): verilator -Wall with .v files read as IEEE
+#                                  1364-2001, Yosys 0.23's plain Verilog parser with mcadsw_top's
+#                                  ports as a black box's (hierarchy -check), Icarus elaborating
+#                                  the whole IP under it
 # A second argument, a package file, replaces rtl/mcadsw_pkg.sv: another
 # configuration's (the FPGA target's, build/rtl/fpga/mcadsw_pkg.sv, elaborates the
 # branches the default package leaves out); a package with RECT = 0 is checked with the
@@ -143,11 +148,25 @@ run_board() {
   echo "rtl_check: verilator --lint-only -Wall clean on $n board shells$what"
 }
 
+run_wrapper() {
+  lint_top mcadsw_axi +1364-2001ext+v mcadsw_axi.v || return 1
+  local out
+  out=$(yosys -q -p "read_verilog -sv ${files[0]} ${files[1]}; read_verilog -sv -lib mcadsw_top.sv; read_verilog mcadsw_axi.v; hierarchy -check -top mcadsw_axi" 2>&1) || {
+    echo "$out"; echo "rtl_check: yosys (Verilog-2001 parser) FAILED for mcadsw_axi" >&2; return 1; }
+  if grep -qi 'warning' <<<"$out"; then echo "$out"; echo "rtl_check: yosys warned on mcadsw_axi" >&2; return 1; fi
+  tmp=$(mktemp); trap 'rm -f "$tmp"' RETURN
+  out=$(iverilog -g2012 -Wall -Wno-timescale -I. -s mcadsw_axi -o "$tmp" "${files[@]}" mcadsw_axi.v 2>&1) || {
+    echo "$out"; echo "rtl_check: iverilog FAILED for mcadsw_axi" >&2; return 1; }
+  if [ -n "$out" ]; then echo "$out"; echo "rtl_check: iverilog warned on mcadsw_axi" >&2; return 1; fi
+  echo "rtl_check: the wrapper mcadsw_axi.v clean under verilator -Wall (Verilog-2001), yosys 0.23 read_verilog and iverilog$what"
+}
+
 case ${1:-all} in
   lint) run_lint ;;
   yosys) run_yosys ;;
   iverilog) run_iverilog ;;
   board) run_board ;;
-  all) run_lint; run_yosys; run_iverilog ;;
-  *) echo "usage: $0 lint|yosys|iverilog|board|all [PACKAGE]" >&2; exit 2 ;;
+  wrapper) run_wrapper ;;
+  all) run_lint; run_yosys; run_iverilog; run_wrapper ;;
+  *) echo "usage: $0 lint|yosys|iverilog|board|wrapper|all [PACKAGE]" >&2; exit 2 ;;
 esac
