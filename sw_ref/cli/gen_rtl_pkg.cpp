@@ -15,6 +15,7 @@
 //   gen_rtl_pkg regs-doc               docs/registers.md
 //   gen_rtl_pkg rect-pkg               rtl/rect/mcadsw_rect_pkg.sv
 //   gen_rtl_pkg c-header               driver/include/mcadsw/mcadsw_regs.h (C99)
+//   gen_rtl_pkg regs-json              the register map as JSON (flow/ipxact.py reads it)
 //
 // The one check of a configuration (CMake, make synth, make fpga call this):
 // DMAX an integer from 1 to 128, PAR 1, 2 or 4, DMAX a multiple of PAR; anything
@@ -131,6 +132,46 @@ std::string c_string(const char* text) {
     out += *c;
   }
   return out;
+}
+
+// The register map as JSON, for the flows that write other views of it in Python
+// (flow/ipxact.py: the IP-XACT component). Every register has its fields; a register
+// regs.hpp gives none holds one field VALUE in its low bits (kThrBits for THR0..THR6, 32
+// for the others), as docs/registers.md says. Access as in docs/registers.md (RO, RW,
+// W1C, WO).
+int print_regs_json() {
+  using namespace mcadsw::regs;
+  std::printf("{\"span\": %u, \"version\": {\"major\": %u, \"minor\": %u},\n \"registers\": [",
+              unsigned(kSpan), unsigned(kVersionMajor), unsigned(kVersionMinor));
+  bool first_reg = true;
+  for (const Reg& r : kRegs) {
+    std::printf("%s\n  {\"name\": \"%s\", \"offset\": %u, \"access\": \"%s\", \"doc\": \"%s\", \"fields\": [",
+                first_reg ? "" : ",", r.name, unsigned(r.offset), access_name(r.access),
+                c_string(r.doc).c_str());
+    first_reg = false;
+    bool any = false;
+    for (const Field& f : kFields) {
+      if (std::strcmp(f.reg, r.name) != 0) continue;
+      std::printf("%s\n    {\"name\": \"%s\", \"lsb\": %d, \"width\": %d, \"access\": \"%s\", \"doc\": \"%s\"}",
+                  any ? "," : "", f.name, f.lsb, f.width, access_name(f.access), c_string(f.doc).c_str());
+      any = true;
+    }
+    if (!any) {
+      const bool thr = r.offset >= kThr0 && r.offset < kThr0 + 4 * uint32_t(mcadsw::kWeightThresholds);
+      std::printf("\n    {\"name\": \"VALUE\", \"lsb\": 0, \"width\": %d, \"access\": \"%s\", \"doc\": \"%s\"}",
+                  thr ? kThrBits : 32, access_name(r.access), c_string(r.doc).c_str());
+    }
+    std::printf("]}");
+  }
+  std::printf("],\n \"errors\": [");
+  bool first_err = true;
+  for (const Error& e : kErrors) {
+    std::printf("%s\n  {\"code\": %d, \"name\": \"%s\", \"doc\": \"%s\"}", first_err ? "" : ",", e.code,
+                e.name, c_string(e.doc).c_str());
+    first_err = false;
+  }
+  std::printf("]}\n");
+  return 0;
 }
 
 // A text inside a C block comment ("*/" would end it).
@@ -256,6 +297,7 @@ int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "regs-doc") == 0) return print_regs_doc();
   if (argc == 2 && std::strcmp(argv[1], "rect-pkg") == 0) return print_rect_pkg();
   if (argc == 2 && std::strcmp(argv[1], "c-header") == 0) return print_c_header();
+  if (argc == 2 && std::strcmp(argv[1], "regs-json") == 0) return print_regs_json();
   const char* dmax_arg = nullptr;
   const char* par_arg = nullptr;
   bool fpga = kFpga;  // the build's target unless --fpga
@@ -270,7 +312,7 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--no-rect") == 0) {
       rect = false;
     } else {
-      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] [--fpga] [--no-rect] | gen_rtl_pkg regs-doc | rect-pkg | c-header\n");
+      std::fprintf(stderr, "usage: gen_rtl_pkg [--dmax N] [--par P] [--fpga] [--no-rect] | gen_rtl_pkg regs-doc | rect-pkg | c-header | regs-json\n");
       return 2;
     }
   }
