@@ -16,8 +16,8 @@ FuseSoC calls it with one argument, the input YAML file (GAPI 1.0):
   parameters   dmax (1 .. 128, default 64), par (1, 2, 4; default 1),
                fpga (the FPGA target's memory shapes; default false),
                rect (the rectifier; default true)
-and writes, in its working folder, mcadsw_pkg.sv and <name>.core. A bad parameter stops
-it with gen_rtl_pkg's message and a non-zero exit (FuseSoC then stops).
+and writes, in its working folder, mcadsw_pkg.sv, <name>.core and FUSESOC_IGNORE. A bad
+parameter stops it with gen_rtl_pkg's message and a non-zero exit (FuseSoC then stops).
 """
 import os
 import subprocess
@@ -67,6 +67,9 @@ def main(argv):
             "targets": {"default": {"filesets": ["pkg"]}}}
     with open(name.split(":")[2] + ".core", "w") as f:
         f.write("CAPI=2:\n" + yaml.safe_dump(core, sort_keys=False))
+    # FuseSoC reads this core from here itself; a later search of a library that holds this
+    # folder (the repository's build/) must not find it as a core of its own.
+    open("FUSESOC_IGNORE", "w").close()
     return 0
 
 

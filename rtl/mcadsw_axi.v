@@ -13,8 +13,9 @@
 //   - s_axi_*: the registers (docs/registers.md), 32-bit data, 8 address bits (offsets
 //     0x00 .. 0xFC; higher address bits are the interconnect's). Every response OKAY but
 //     for an unmapped offset (SLVERR).
-//   - m_axi_*: the frame memory, 32-bit data, INCR bursts of up to 16 beats, one ID (no
-//     ID ports: the interconnect gives it one); ARCACHE/AWCACHE 4'b0011 (normal,
+//   - m_axi_*: the frame memory, 32-bit data, INCR bursts of up to 16 beats, one ID:
+//     ARID/AWID are one bit, always 0, and RID/BID are not read (the responses of one ID
+//     come in order, which the master relies on); ARCACHE/AWCACHE 4'b0011 (normal,
 //     non-cacheable, bufferable: what Xilinx recommends for a DMA master), ARPROT/AWPROT
 //     3'b000 (unprivileged, secure, data).
 //   - interrupt: level, active high, while STATUS.DONE or STATUS.ERROR is set and enabled
@@ -47,6 +48,7 @@ module mcadsw_axi (
   output wire        s_axi_rvalid,
   input  wire        s_axi_rready,
   // AXI4 master: the frame memory
+  output wire [0:0]  m_axi_arid,
   output wire [31:0] m_axi_araddr,
   output wire [7:0]  m_axi_arlen,
   output wire [2:0]  m_axi_arsize,
@@ -55,11 +57,13 @@ module mcadsw_axi (
   output wire [2:0]  m_axi_arprot,
   output wire        m_axi_arvalid,
   input  wire        m_axi_arready,
+  input  wire [0:0]  m_axi_rid,
   input  wire [31:0] m_axi_rdata,
   input  wire [1:0]  m_axi_rresp,
   input  wire        m_axi_rlast,
   input  wire        m_axi_rvalid,
   output wire        m_axi_rready,
+  output wire [0:0]  m_axi_awid,
   output wire [31:0] m_axi_awaddr,
   output wire [7:0]  m_axi_awlen,
   output wire [2:0]  m_axi_awsize,
@@ -73,6 +77,7 @@ module mcadsw_axi (
   output wire        m_axi_wlast,
   output wire        m_axi_wvalid,
   input  wire        m_axi_wready,
+  input  wire [0:0]  m_axi_bid,
   input  wire [1:0]  m_axi_bresp,
   input  wire        m_axi_bvalid,
   output wire        m_axi_bready,
@@ -80,14 +85,16 @@ module mcadsw_axi (
   output wire        interrupt
 );
 
+  assign m_axi_arid    = 1'b0;
+  assign m_axi_awid    = 1'b0;
   assign m_axi_arcache = 4'b0011;
   assign m_axi_awcache = 4'b0011;
   assign m_axi_arprot  = 3'b000;
   assign m_axi_awprot  = 3'b000;
 
-  // The protection inputs: every access is served alike.
+  // The protection inputs: every access is served alike; the response IDs: one ID.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [5:0] unused_prot = {s_axi_awprot, s_axi_arprot};
+  wire [7:0] unused_in = {s_axi_awprot, s_axi_arprot, m_axi_rid, m_axi_bid};
   /* verilator lint_on UNUSEDSIGNAL */
 
   mcadsw_top #(.RAB(8)) u_top (

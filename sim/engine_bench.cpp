@@ -810,7 +810,9 @@ class RecordingBus : public driver::RegisterBus {
 // configure and start the frame, "offset value" in hex, which the Verilog bench
 // replays onto the engine's configuration ports), config.txt (plusargs: the
 // memory's size), and after the run verilator_out.hex (the disparity plane's
-// words) and verilator_counters.txt.
+// words, then in the LR mode the mask plane's), verilator_regions.txt (where those
+// words are: "base bytes" in hex and decimal, a line a plane, in the order of
+// verilator_out.hex; tests/cocotb reads it) and verilator_counters.txt.
 void dump_before(const std::string& dir, MemoryModel& mem, const RawConfig& c, const WeightTable& table) {
   // The Verilog bench's memory starts at address 0 (tests/icarus/tb_mcadsw_engine.sv).
   if (mem.lo() != 0) throw std::invalid_argument("--dump needs the frame at origin 0");
@@ -849,12 +851,20 @@ void dump_after(const std::string& dir, MemoryModel& mem, const Layout& lay, con
       m << buf;
     }
   };
-  words(lay.out, uint64_t(lay.out_stride) * uint32_t(lay.height));
-  if (lay.lr) words(lay.mask, uint64_t(lay.stride) * uint32_t(lay.height));  // and the mask plane
+  std::ofstream g(dir + "/verilator_regions.txt");
+  const auto plane = [&](uint64_t base, uint64_t bytes) {
+    words(base, bytes);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%08llx %llu\n", static_cast<unsigned long long>(base),
+                  static_cast<unsigned long long>(bytes));
+    g << buf;
+  };
+  plane(lay.out, uint64_t(lay.out_stride) * uint32_t(lay.height));
+  if (lay.lr) plane(lay.mask, uint64_t(lay.stride) * uint32_t(lay.height));  // and the mask plane
   std::ofstream c(dir + "/verilator_counters.txt");
   c << "cycles " << r.cycles << " words_read " << r.words_read << " words_written "
     << r.words_written << "\n";
-  if (!m || !c) throw std::runtime_error("cannot write the dump files in " + dir);
+  if (!m || !g || !c) throw std::runtime_error("cannot write the dump files in " + dir);
 }
 
 }  // namespace
