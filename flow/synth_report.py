@@ -153,14 +153,14 @@ def render(s):
     r.append("")
     if s["memory_kB_engine"] > 21.3:
         r += ["The memory exceeds the paper's 21.3 kB; where it stands and what would close the gap:",
-              "docs/architecture.md (storage; synthesis results).", ""]
+              "docs/budget.md (storage) and docs/results.md (synthesis).", ""]
     r += ["## Memories (black-box macros)", "",
           "| module | memory | width | words | bits | read ports | write ports | read |",
           "|---|---|---|---|---|---|---|---|"]
     r += ["| " + " | ".join(m[:8]) + " |" for m in s["memories"]]
     r += ["", "## Data registers (flip-flops of 64 bits or more)", "",
           "Registers that hold image, census, weight or cost words in flip-flops rather than in a macro:",
-          "pipeline registers, staging registers and the buffers kept in flip-flops (docs/architecture.md,",
+          "pipeline registers, staging registers and the buffers kept in flip-flops (docs/budget.md,",
           "storage). Their bits are in the gate count, not in the memory figure.", "",
           "| module | register | bits |", "|---|---|---|"]
     r += [f"| {x[0]} | {x[1]} | {x[2]} |" for x in sorted(s["data_registers"], key=lambda x: -int(x[2]))]

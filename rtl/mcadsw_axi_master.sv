@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// AXI4 master (docs/architecture.md section 3.1.3): the engine's 32-bit
+// AXI4 master (docs/blocks/soc_top.md section 3): the engine's 32-bit
 // request/grant memory port (docs/memory_map.md) on an AXI4 bus, one ID (all
 // responses in order), 32-bit data, INCR bursts.
 //

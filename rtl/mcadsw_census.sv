@@ -54,7 +54,7 @@
 // a block by the bank the scheduler gave it (rd_bank_i, two blocks in flight): the
 // ring position of each bank's window is kept.
 //
-// FPGA target (mcadsw_pkg::FPGA, docs/architecture.md 3.11): the census buffer is
+// FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the census buffer is
 // RL copies of the ring, one a lane, each RING column words deep (block RAM:
 // deep and at most 288 bits wide, no sub-banks); a column is written into every
 // copy, lane l reads ring column rq + l of its own copy, so no lane multiplexer
@@ -329,7 +329,7 @@ module mcadsw_census #(
     // window holds lk .. lk + 4 (nl = lk + 5); cycle 1 computes the codes from
     // the window, cycle 2 clamps the rows. Against the ASIC target a block's
     // first column waits for its 5 loads and a column that needs a new strip
-    // for that column's write and load (docs/architecture.md 3.11).
+    // for that column's write and load (docs/blocks/fpga_target.md).
     localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
     logic [LW-1:0]   lmem [4*LS];
     logic [4*LW-1:0] hold_q;          // the strip's columns, column 0 first
@@ -477,7 +477,7 @@ module mcadsw_census #(
         if (rd_en_i) col_rd_q <= mem_q[ra];
       end
       // The kernel writes ring columns no block in the aggregator reads: no read
-      // meets the write of its column (no_rw_check: docs/architecture.md 3.11).
+      // meets the write of its column (no_rw_check: docs/blocks/fpga_target.md).
       `MCADSW_ASSERT(NoReadOfColumnWritten, !(col_valid_q && rd_en_i && wq == ra))
       for (genvar k = 0; k < WINDOW; k++) begin : g_tap
         if (k < ROWS - WINDOW) begin : g_fold

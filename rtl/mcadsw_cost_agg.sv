@@ -19,9 +19,9 @@
 // write; after the 6th group, c+8 bank handed to the horizontal side, c+9
 // ping-pong read (registered) and horizontal weight address, c+10 horizontal
 // sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
-// multiplexers out of the horizontal sum's cycle (docs/architecture.md section 6.1).
+// multiplexers out of the horizontal sum's cycle (docs/synthesis.md section 1).
 //
-// P disparities a step (docs/architecture.md 3.7.1): a step evaluates d ..
+// P disparities a step (docs/blocks/cost_agg.md 1): a step evaluates d ..
 // d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +
 // P - 1 lanes, lane j at image column (column of left lane j - (P - 1)) - d, so
 // disparity d + p of left lane l is right lane l + P - 1 - p. The vertical
@@ -378,7 +378,7 @@ module mcadsw_cost_agg #(
   assign sub_busy_o = busy_o || sub_d1_q || sub_valid_o;
 
 
-  // Ping-pong ownership (docs/architecture.md section 5.3): the vertical side never
+  // Ping-pong ownership (docs/verification.md section 3): the vertical side never
   // writes a bank the horizontal side has still to read (h0 issues the reads of
   // the following cycles; the read in h1 in the same cycle as a write returns the
   // word from before it), and a bank is handed over only when the horizontal side

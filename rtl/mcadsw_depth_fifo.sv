@@ -8,7 +8,7 @@
 // Raw mode: one byte a pixel (the disparity). Wide mode (sub-pixel output,
 // docs/memory_map.md): one little-endian halfword a pixel, the VB-bit value
 // zero-extended, two pixels a word. Mirrored (the right view as base, docs/
-// architecture.md section 3.2.6): the pass's column c is image column
+// blocks/engine.md section 6): the pass's column c is image column
 // xend - 1 - c, and the pass's columns below xlo are outside the image.
 //
 // The scheduler pushes a descriptor (output row address, first column, pixel
@@ -275,7 +275,7 @@ module mcadsw_depth_fifo #(
     end
   end
 
-  // Invariants (docs/architecture.md section 5.3): the scheduler pushes a row
+  // Invariants (docs/verification.md section 3): the scheduler pushes a row
   // descriptor only into space, the WTA sends disparities only for a queued row.
   `MCADSW_ASSUME(DescriptorPushedIntoSpace, !(desc_push_i && !space_o))
   `MCADSW_ASSUME(DisparitiesForQueuedRow, !(disp_valid_i && ready_q == count_q))

@@ -4,7 +4,7 @@
 // MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC):
 // memory controller with a 32-bit external memory port, block scheduler, three window readers, the
 // left and right mini-census transformers, the weight generator, the cost
-// aggregator with WTA, and the depth FIFO. docs/architecture.md describes the
+// aggregator with WTA, and the depth FIFO. docs/architecture.md and docs/blocks/ describe the
 // blocks; docs/memory_map.md the configuration, status and memory layout.
 `default_nettype none
 `include "mcadsw_assert.svh"
@@ -40,7 +40,7 @@ module mcadsw_engine #(
   input  logic [CW-1:0]       cfg_height_i,
   input  logic [NB-1:0]       cfg_disp_i,      // D
   input  logic [NTHR*DCB-1:0] cfg_thr_i,       // weight table thresholds
-  // Rectification (register map 1.2, docs/architecture.md 3.10): raw planes and meshes in,
+  // Rectification (register map 1.2, docs/blocks/rectifier.md): raw planes and meshes in,
   // the planes above written from them before the matching passes
   input  logic                cfg_rect_en_i,   // RECT_CTRL.ENABLE
   input  logic [2:0]          cfg_rect_step_i, // RECT_CTRL.STEP_LOG2: S = 8, 16, 32
@@ -239,7 +239,7 @@ module mcadsw_engine #(
   // in the LR mode dL (with sub-pixel output in the scratch format: pack); the
   // second writes dR, one byte a pixel. The pass's columns: the image lies in
   // columns xlo .. xend - 1; with the right view as base the pass runs mirrored
-  // (docs/architecture.md section 3.2.6): pass column c is image column W4 - 1 - c,
+  // (docs/blocks/engine.md section 6): pass column c is image column W4 - 1 - c,
   // W4 the width rounded up to 4, so the image lies in pass columns W4 - W .. W4 - 1.
   // Registered when a pass is set up (v_*: at the start from the configuration
   // ports; when the LR mode's second pass begins, from the registered
@@ -400,7 +400,7 @@ module mcadsw_engine #(
     .mem_rvalid_i (mem_rvalid_i && post_sel), .mem_rdata_i
   );
 
-  // ---- Rectification (docs/architecture.md 3.10): the check of its registers, the
+  // ---- Rectification (docs/blocks/rectifier.md): the check of its registers, the
   // rectify pass and the mark step; the pass and the mark step own the memory port
   // in their states, as the post stage in its own.
   // The planes rectified: those the mode reads (docs/algorithm.md 13.4), bit p for
@@ -625,7 +625,7 @@ module mcadsw_engine #(
   logic [HAGG*VB-1:0]   sub;
   logic [HAGG*DB-1:0]   sub_d;
   // Depth FIFO values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
-  // the scratch format {offset + 8, d} (docs/architecture.md section 3.2.7).
+  // the scratch format {offset + 8, d} (docs/blocks/engine.md section 7).
   localparam int FVB = DB + 5;
   logic                 val_valid;
   logic [2:0]           val_grp;

@@ -4,7 +4,7 @@
 // Frame controller of the engine: takes a start, has the registered
 // configuration checked, runs the passes of the frame's mode one after the
 // other, and owns busy, done, the error code and the frame's counters
-// (docs/architecture.md, frame controller and 3.10; docs/memory_map.md, status).
+// (docs/blocks/engine.md 3, frame controller, and docs/blocks/rectifier.md; docs/memory_map.md, status).
 //
 //   StIdle ── start ──> StSettle ──> StCheck ──(error)──────────────────> StIdle, done + error
 //                                  (waits for the check: chk_done_i)

@@ -150,7 +150,7 @@ module mcadsw_mem_ctrl #(
   always_ff @(posedge clk_i) hold_len_q <= mem_len_o;
   // verilator coverage_on
 `endif
-  // Invariants (docs/architecture.md section 5.3), and what the requestors and the
+  // Invariants (docs/verification.md section 3), and what the requestors and the
   // external memory must keep.
   logic [NR:0] grants;
   assign grants = {wr_gnt_o, rd_gnt_o};

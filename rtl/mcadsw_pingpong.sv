@@ -18,7 +18,7 @@
 // kept in edge_q from an earlier one). Reads then take columns as stored.
 //
 // Read: ASIC target, the window is selected from the bank (a 6:1 select of 33
-// costs). FPGA target, the window register shifts (docs/architecture.md 3.11):
+// costs). FPGA target, the window register shifts (docs/blocks/fpga_target.md):
 // group 0 loads columns 0 .. 32, each later group shifts by HAGG and appends the
 // HAGG columns after the window, so a cost passes a 2:1 select and the 6:1 select
 // is only HAGG costs wide. The shift relies on the reads of a bank coming as

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Post-processing stage of the LR mode (docs/algorithm.md 12.2-12.5,
-// docs/architecture.md section 3.9): reads the left map dL and the right map dR
+// docs/blocks/post.md): reads the left map dL and the right map dR
 // back from external memory row by row and writes the LR-checked, filled,
 // 3x3-median-filtered map and the validity mask.
 //

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Post stage, phase RD of a row (docs/algorithm.md 12.2-12.3, docs/architecture.md
-// section 3.9): reads the row's dR words into the dR row buffer, then its dL words
+// Post stage, phase RD of a row (docs/algorithm.md 12.2-12.3, docs/blocks/post.md,
+// phase RD): reads the row's dR words into the dR row buffer, then its dL words
 // (at most FD requested and not yet used), and takes one pixel of dL a cycle:
 //   the LR check  valid(x) = x >= d && |d - dR(x - d)| <= T (and dL not flagged
 //                 by the rectifier's mark step: docs/algorithm.md 13.4)

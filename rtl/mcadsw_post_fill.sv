@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Post stage, phase CD of a row (docs/algorithm.md 12.4-12.5, docs/architecture.md
-// section 3.9): from right to left, a pixel a cycle, a five-stage pipeline
+// Post stage, phase CD of a row (docs/algorithm.md 12.4-12.5, docs/blocks/post.md,
+// phase CD): from right to left, a pixel a cycle, a five-stage pipeline
 //   1  read column x of vrow (the row's check and forward fill, from RD) and of
 //      the two median row buffers
 //   2  the fill from the right (the filled value of row y replaces row y - 2 in

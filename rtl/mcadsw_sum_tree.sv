@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Balanced adder tree of the FPGA target (mcadsw_pkg::FPGA, docs/architecture.md
-// 3.11): the sum of N unsigned terms of W bits as L = ceil(log2 N) levels of
+// Balanced adder tree of the FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md,
+// "Aggregator sums"): the sum of N unsigned terms of W bits as L = ceil(log2 N) levels of
 // two-input adders, level l's sums W + l bits wide. Every level's sums are one
 // kept net (Yosys `keep`), so synthesis maps each adder to a carry chain (ECP5
 // CCU2C, 7-series CARRY4). Without it Yosys's alumacc merges the whole sum into

@@ -6,7 +6,7 @@
 // lookups, and the vertical and horizontal weight buffers, which hold two
 // aggregation rows: the kernel makes row r + 1 while the cost aggregator works
 // on row r (paper Sec. V-F: the aggregator starts once a row's weights are
-// ready). docs/architecture.md 3.6 and 4.3.
+// ready). docs/blocks/weight_gen.md and docs/budget.md 3.
 //
 // Loader. Input: the colour of the ROWS x COLS read window (48 x 48) in strips
 // of 4 columns, strip by strip, and Y, U, V of each strip in turn: for strip s
@@ -47,7 +47,7 @@
 // aggregator reads the slot through vrd_* and hrd_* (data the cycle after the
 // address) and frees it with hrd_rel_i on its last horizontal read.
 //
-// FPGA target (mcadsw_pkg::FPGA, docs/architecture.md 3.11): the input buffer is
+// FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the input buffer is
 // one block RAM a plane with a column an entry, and the kernel has ROWS distance
 // units that compare whole columns (vertical) or the whole centre row
 // (horizontal) with the centre, so neither pass selects a window of pixels. A
@@ -308,7 +308,7 @@ module mcadsw_weight_gen #(
     // wide: block RAM). A finished strip's 4 columns are held and written one a
     // cycle over the next 4 cycles (a plane's strips are ROWS words apart); the
     // kernel never reads them that early (ColumnWrittenBeforeRead), so no read
-    // meets the write of its entry (no_rw_check: docs/architecture.md 3.11).
+    // meets the write of its entry (no_rw_check: docs/blocks/fpga_target.md).
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] y_mem [4*RS];
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] u_mem [4*RS];
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] v_mem [4*RS];
@@ -580,7 +580,7 @@ module mcadsw_weight_gen #(
       end
     end
     // The kernel fills a slot the aggregator does not read: no read meets the
-    // write of its entry (the RAMs are no_rw_check, docs/architecture.md 3.11).
+    // write of its entry (the RAMs are no_rw_check, docs/blocks/fpga_target.md).
     `MCADSW_ASSERT(NoVertReadOfEntryWritten, !(k3_vert_q && vrd_en_i && k3_vaddr_q == vrd_addr))
     `MCADSW_ASSERT(NoHorzReadOfEntryWritten, !(k3_horz_q && hrd_en_i && k3_haddr_q == hrd_addr))
   end else begin : g_asic_kernel

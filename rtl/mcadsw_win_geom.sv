@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Window geometry of a block (docs/architecture.md, window geometry): where the
+// Window geometry of a block (docs/blocks/engine.md 4, window geometry): where the
 // three window readers start and how many strips they read, and the in-image
 // bounds the census transformers and the weight generator clamp to, from the
 // block's window origin the scheduler issues. Combinational; the block test

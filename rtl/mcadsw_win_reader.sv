@@ -17,7 +17,7 @@
 // strip word always lie in one memory word: clamping moves a column only to
 // column lo or width-1, inside the strip's own word.
 //
-// Mirrored (the right view as base, docs/architecture.md section 3.2.6), the
+// Mirrored (the right view as base, docs/blocks/engine.md section 6), the
 // window's columns are the pass's: pass column c is image column
 // width - 1 - c (width a multiple of 4), and the image occupies the pass's
 // columns lo .. width - 1. An aligned strip word is then an aligned memory
@@ -128,7 +128,7 @@ module mcadsw_win_reader #(
   // The window origin and strip count, registered at start_i; the address terms
   // are computed from them in the next two cycles (init_q: the clamps, then the
   // multiplier), each from flip-flops, not from the block arithmetic in the top
-  // (those paths were critical, docs/architecture.md section 6.1).
+  // (those paths were critical, docs/synthesis.md section 1).
   logic signed [CW:0]   x0_q, y0_q;
   logic [SB-1:0]        strips_q;
   logic [CW-1:0]        ylo_q;       // clamp(y0): the image row of a strip plane's word 0
@@ -358,7 +358,7 @@ module mcadsw_win_reader #(
 
   assign busy_o = busy_q;
 
-  // Invariants (docs/architecture.md section 5.3), and what the scheduler and
+  // Invariants (docs/verification.md section 3), and what the scheduler and
   // the memory controller must keep.
   `MCADSW_ASSERT(ResponseFifoFits, !(rvalid_i && !pop_word && fcount_q == OB'(OUTS)))
   `MCADSW_ASSUME(ReadDataOnlyWhenInFlight, !(rvalid_i && inflight_q == '0))

@@ -15,7 +15,7 @@
 // the k = 1..8 with 16 |num| >= (2k - 1) den, which is the rounded |offset|.
 // The offset is 0 when the best is at d = 0 or has no later disparity (d = D-1).
 //
-// P disparities a step (docs/architecture.md 3.7.1): fc_i holds the costs
+// P disparities a step (docs/blocks/cost_agg.md 1): fc_i holds the costs
 // of d_i .. d_i + P - 1 (lane p, pixel m at (p HAGG + m) FB); lanes_i masks the
 // lanes at or above D. The lanes are taken one after the other, as P single
 // steps, so ties still keep the smallest d; P = 1 is the paper's WTA.

@@ -23,7 +23,7 @@ out=$build/coverage
 # The coverage model is built with Debian's Verilator 5.006, not the tool environment's
 # 5.052: 5.052's runtime counts the toggles of a signal wider than 64 bits wrongly (its
 # VL_COV_TOGGLE_CHG_ST_W credits bit 32 k + j with the changes of bit j of the lower words;
-# docs/architecture.md 7.2 has the reproduction), so its toggle figures and this list's
+# docs/tool_notes.md 2 has the reproduction), so its toggle figures and this list's
 # would be wrong wherever a bus is wide.
 vroot=/usr/share/verilator
 vcov=/usr/bin/verilator_coverage

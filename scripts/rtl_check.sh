@@ -55,7 +55,7 @@ for p in "${pkgs[@]:1}"; do
   in_list "$p" "${listed[@]}" || { echo "rtl_check: rtl/$p is not in rtl/mcadsw.f" >&2; exit 1; }
 done
 # The list is the one every tool reads: a source file it does not name is an error
-# (rtl/rect/rect.f, the rectifier's own list for its block tests, is not read here;
+# (rtl/rect/rect.f, the rectifier's own list, which no build or test reads, is not read here;
 # rect/mcadsw_rect_none.sv replaces the rect/ modules without the rectifier, and the
 # rect/ modules it replaces are not in that list).
 for f in *.sv rect/*.sv; do

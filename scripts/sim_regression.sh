@@ -64,7 +64,7 @@ cases=(
   "cif_x2_cones_dDMAX|cif_x2|cones|DMAX|2|"
   # VGA (640x480, data/vga_x2): cycles and frame rate of the wider frames.
   "vga_x2_teddy_dDMAX|vga_x2|teddy|DMAX|2|"
-  # Raw camera frames rectified by the engine (docs/architecture.md 3.10; data/raw:
+  # Raw camera frames rectified by the engine (docs/blocks/rectifier.md; data/raw:
   # cameras A, B, C made from the pairs above, their calibration files): the rectified planes,
   # validity bitmaps and depth compared; no error figure (the invalid code is no disparity).
   # B at zero latency is the speed bar's case (2.70 M cycles), tiled with the DDR-like memory

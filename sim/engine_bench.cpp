@@ -497,7 +497,7 @@ void run_frame(Engine& e, EngineResult& r, long limit, bool progress, const Star
 
 // Generous: four times the memory-bound estimate of 8000 cycles per block; with
 // rectification, 16 cycles a rectified pixel of each of up to 6 planes more (about
-// 1.05 at zero latency, docs/architecture.md 3.10.7), the mark step included.
+// 1.05 at zero latency, docs/blocks/rectifier.md 7), the mark step included.
 long frame_limit(int W, int H, const EngineOptions& opt) {
   const long blocks = long((W + kBlock - 1) / kBlock) * ((H + kBlock - 1) / kBlock);
   const long rect = opt.rect ? 16L * 6 * W * H + 100000 : 0;
@@ -642,10 +642,10 @@ void score_rect(MemoryModel& mem, const Layout& lay, const RectRef& rr, const En
 
 // LR mode: the output plane and the mask against depth_map() (docs/algorithm.md
 // 12.2-12.5), and the two scratch planes against the left and right maps
-// (dL's integer d in sub-pixel mode), every pixel. With rectification (not
-// built yet in the engine: code 24) the reference takes both views' validity
-// (docs/algorithm.md 13.4), and the scratch planes are compared only at pixels
-// valid in their view (the marks of docs/architecture.md 3.10.10 are not fixed yet).
+// (dL's integer d in sub-pixel mode), every pixel. With rectification the
+// reference takes both views' validity (docs/algorithm.md 13.4), and the scratch
+// planes hold the mark step's marks at invalid pixels (docs/blocks/rectifier.md 10):
+// the flag in dL at an invalid left pixel, 255 in dR at an invalid right one.
 void score_lr(MemoryModel& mem, const Layout& lay, const YuvImage& left, const YuvImage& right,
               const Config& cfg, const EngineOptions& opt, EngineResult& r, const RectRef* rr,
               std::ostringstream& rep) {

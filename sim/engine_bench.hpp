@@ -43,7 +43,7 @@ class Firmware {
 // constraints/mcadsw.sdc's `period` (a test checks they agree).
 constexpr uint64_t kClockPeriodPs = 10526;
 
-// Rectification by the engine (register map 1.2; docs/architecture.md 3.10,
+// Rectification by the engine (register map 1.2; docs/blocks/rectifier.md,
 // docs/algorithm.md 13): the images given to run_engine / run_frames are then the
 // raw views (Wr x Hr, 1 .. 2048 each, the two of one size), and the frame is the
 // meshes' out_width x out_height.

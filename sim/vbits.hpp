@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Bit-field access to Verilator ports of any width (CData..QData and VlWide),
-// for the flattened array ports of the RTL (docs/architecture.md).
+// for the flattened array ports of the RTL (the port tables of docs/blocks/).
 #pragma once
 
 #include <verilated.h>

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Rectifier pass (docs/algorithm.md 13, docs/architecture.md 3.10.7): raw planes and
+// Rectifier pass (docs/algorithm.md 13, docs/blocks/rectifier.md 7): raw planes and
 // meshes in, rectified planes and validity bitmaps out, on one memory port in the
 // engine's protocol.
 //

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Rectifier: the check of the rectification's configuration (docs/architecture.md 3.10.2,
+// Rectifier: the check of the rectification's configuration (docs/blocks/rectifier.md 2,
 // register map 1.2 codes 16..21; reference mcadsw::rect_check). Sequential, a pair of
 // regions a cycle: the engine's own check (mcadsw_cfg_check) is combinational, and the
 // rectifier's 20 regions would add about 100 overlap pairs to it.

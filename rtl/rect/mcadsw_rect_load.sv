@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Rectifier: loads a tile's source rectangle of one raw plane into a tile buffer's four
-// banks (docs/architecture.md 3.10.5).
+// banks (docs/blocks/rectifier.md 5).
 //
 // At start_i: the plane (base, layout, stride), the rectangle (x0 a multiple of 4, y0,
 // cols 1 .. RECT_BUF_W, rows 1 .. RECT_BUF_H). Raster planes are read row by row, column-

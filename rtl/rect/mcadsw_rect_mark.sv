@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Rectifier: the mark step (docs/algorithm.md 13.4, docs/architecture.md 3.10.8). Writes
+// Rectifier: the mark step (docs/algorithm.md 13.4, docs/blocks/rectifier.md 8). Writes
 // value_i into a plane at every pixel a view's validity bitmap calls invalid, and touches
 // nothing else: the invalid code into the disparity plane after a pass; in the LR mode
 // 255 into dR and a flagged value into dL before the post stage.

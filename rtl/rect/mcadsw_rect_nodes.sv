@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Rectifier: the mesh nodes of one output tile and its source rectangle
-// (docs/algorithm.md 13.8, docs/architecture.md 3.10.4).
+// (docs/algorithm.md 13.8, docs/blocks/rectifier.md 4).
 //
 // At start_i the block registers the tile and the frame and names the tile's nodes
 // (columns node_i0_o .. + ncols_o - 1, rows node_j0_o .. + nrows_o - 1), which the

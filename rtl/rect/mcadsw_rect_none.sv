@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// The engine without the rectifier (docs/architecture.md 3.11): the three rectifier
+// The engine without the rectifier (docs/blocks/fpga_target.md): the three rectifier
 // modules the engine instantiates, with their ports and nothing inside. A build
 // without the rectifier reads this file instead of rtl/rect/'s other modules
 // (scripts/rtl_files.sh --no-rect; the package from gen_rtl_pkg --no-rect, RECT = 0),

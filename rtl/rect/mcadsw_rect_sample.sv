@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Rectifier sampling core (docs/algorithm.md 13.2-13.3, docs/architecture.md 3.10.3):
+// Rectifier sampling core (docs/algorithm.md 13.2-13.3, docs/blocks/rectifier.md 3):
 // one output tile's pixels from the tile's mesh nodes and a loaded tile buffer, a
 // pixel a cycle, in strip order (4-column strips, each top to bottom, the pixels of a
 // strip row left to right).
@@ -35,7 +35,7 @@
 // (registered), the nodes on node_u_i / node_v_i held until busy_o falls: node (i, j)
 // relative to the tile's first node (tile_x0 >> s, tile_y0 >> s) at index
 // NODE_COLS j + i. The caller guarantees that
-// every valid pixel's taps lie inside the buffer (docs/architecture.md 3.10.1: the
+// every valid pixel's taps lie inside the buffer (docs/blocks/rectifier.md 1: the
 // source rectangle); a tap right of or below the raw view has weight 0 and may read
 // anything. en_i low stalls every stage (the consumer's back pressure).
 `default_nettype none

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// Rectifier: the writer of one tile's plane (docs/architecture.md 3.10.6). It takes the
+// Rectifier: the writer of one tile's plane (docs/blocks/rectifier.md 6). It takes the
 // sampling core's pixels in strip order, puts each 4 pixels of a strip row into one
 // output word (byte enables for a row that ends inside a word at the frame's right edge)
 // and, when asked, each 8 rows of a strip's validity bits into one word of the view's

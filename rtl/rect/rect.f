@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// The rectifier's files (docs/architecture.md 3.10) for its block benches
-// (tests/rtl/CMakeLists.txt); the engine reads them through rtl/mcadsw.f. Relative to
+// The rectifier's files (docs/blocks/rectifier.md), a list no build or test reads (the block benches
+// name their sources in tests/rtl/CMakeLists.txt; the engine reads them through rtl/mcadsw.f). Relative to
 // rtl/rect/, its package first; the engine's package (rtl/mcadsw_pkg.sv) is read before it.
 mcadsw_rect_pkg.sv
 mcadsw_rect_load.sv

@@ -11,7 +11,7 @@
 //                                      the build's MCADSW_DMAX / MCADSW_PAR / MCADSW_FPGA /
 //                                      MCADSW_RECT; --fpga: the FPGA target's memory shapes,
 //                                      --no-rect: without the rectifier,
-//                                      docs/architecture.md 3.11)
+//                                      docs/blocks/fpga_target.md)
 //   gen_rtl_pkg regs-doc               docs/registers.md
 //   gen_rtl_pkg rect-pkg               rtl/rect/mcadsw_rect_pkg.sv
 //   gen_rtl_pkg c-header               driver/include/mcadsw/mcadsw_regs.h (C99)
@@ -53,7 +53,7 @@ void print_regs_pkg() {
   for (const Reg& r : kRegs)
     std::printf("  localparam int REG_%-14s = 'h%02X;  // %s %s\n", r.name, r.offset, access_name(r.access),
                 r.doc);
-  // Icarus 11 crashes on a variable of a package enum type (docs/architecture.md,
+  // Icarus 11 crashes on a variable of a package enum type (docs/tool_notes.md 1,
   // tool support), so the RTL carries codes as logic [ERR_BITS-1:0] named by these.
   std::printf("  // Error codes (STATUS.ERROR_CODE; docs/registers.md): 1..12 a start rejected,\n");
   std::printf("  // 13..15 a frame ended early, 16..23 rectification, 24 no rectifier (docs/registers.md)\n");
@@ -264,7 +264,7 @@ int parse_count(const char* s) {
 }
 
 // rtl/rect/mcadsw_rect_pkg.sv: the rectifier's constants, in a package of their own
-// (docs/architecture.md 3.10).
+// (docs/blocks/rectifier.md).
 int print_rect_pkg() {
   using namespace mcadsw;
   print_spdx("// ", "");

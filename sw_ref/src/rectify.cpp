@@ -160,7 +160,7 @@ TileSource tile_source(const Mesh& m, int a, int b, int raw_w, int raw_h) {
 }
 
 int rect_check(const RectCheck& c) {
-  // The regions of docs/architecture.md 3.10.2: base, bytes, enabled, kind (0 read,
+  // The regions of docs/blocks/rectifier.md 2: base, bytes, enabled, kind (0 read,
   // 1 write, 2 bitmap).
   const int views = ((c.planes & 7) != 0 ? 1 : 0) | ((c.planes & 070) != 0 ? 2 : 0);
   const uint64_t raw_size =

@@ -8,7 +8,7 @@
 # (BUILD/dmax<DMAX>_par<PAR>[_fpga][_norect], as `make sim-build DMAX=<DMAX> PAR=<PAR>
 # FPGA=<FPGA> RECT=<RECT>`), then
 #   - on the FPGA target, the block benches of the blocks whose buffers it reshapes
-#     (census, weight generator, cost aggregator: docs/architecture.md 3.11);
+#     (census, weight generator, cost aggregator: docs/blocks/fpga_target.md);
 #   - the reference's tests (the fast kernels against the plain model for every D
 #     up to DMAX, among others);
 #   - the engine's tests (crops at D = DMAX with random memory timing, invalid

@@ -211,7 +211,7 @@ TEST(Axi, TiledInputIsReadInBursts) {
 }
 
 // A long read latency (30 cycles before each R beat, the DDR-like case of
-// docs/architecture.md 3.1.3): exact, no protocol violation. And 40 cycles in the
+// docs/blocks/soc_top.md 3): exact, no protocol violation. And 40 cycles in the
 // LR mode on rows of 40 words: the post stage asks for a row's dR words
 // without a credit limit, so the AXI4 master's 32 read beats in flight fill.
 TEST(Axi, LongReadLatency) {

@@ -243,7 +243,7 @@ TEST(Census, RightWindowReachesPastTheLeftBorder) {
   });
 }
 
-// The census buffer is a ring (docs/architecture.md 3.5): a block's new columns
+// The census buffer is a ring (docs/blocks/census.md): a block's new columns
 // must not overwrite the previous block's window, which the aggregator still
 // reads while the next block is prepared.
 template <typename V>

@@ -441,7 +441,7 @@ struct BadConfigs {
   }
 };
 
-// ---- Rectification (docs/architecture.md 3.10) ----------------------------------
+// ---- Rectification (docs/blocks/rectifier.md) -----------------------------------
 // A raw pair: crops of camera B's raw Teddy views (real texture), of raw_w x raw_h.
 std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng) {
   const std::string dir = std::string(MCADSW_DATA_DIR) + "/raw/B/cif/teddy/";
@@ -765,7 +765,7 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   }
 }
 
-// The RTL's assertions (docs/architecture.md section 5.3) are compiled in (Verilator
+// The RTL's assertions (docs/verification.md section 3) are compiled in (Verilator
 // --assert) and stop the simulation: an AXI4 R beat with no read outstanding
 // violates the AXI4 master's invariant and, passed on, the memory controller's
 // and a reader's; they fire on the same edge, and which one Verilator reports

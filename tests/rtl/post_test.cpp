@@ -4,7 +4,7 @@
 // mcadsw_post (the LR mode's post-processing stage, docs/algorithm.md 12.2-12.5)
 // against the reference: lr_check, fill_invalid and median3x3 on random left and
 // right maps in a modelled memory, 8-bit and sub-pixel (packed scratch format,
-// docs/architecture.md section 3.9). Every output pixel and mask byte is
+// docs/blocks/post.md). Every output pixel and mask byte is
 // compared; bytes outside the output and mask pixels must stay untouched.
 // Built with MAXW = 64 (tests/rtl/CMakeLists.txt) to keep the model small.
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_check (docs/architecture.md 3.10.2) against mcadsw::rect_check: random
+// mcadsw_rect_check (docs/blocks/rectifier.md 2) against mcadsw::rect_check: random
 // configurations laid out like a frame's (valid), each then broken in one way (a step,
 // a raw size or stride, a mesh size, a misaligned base, two regions overlapping by a
 // byte or touching, a region ending at or past 2^32), and random regions anywhere. The

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_load (docs/architecture.md 3.10.5): random source rectangles of raster and
+// mcadsw_rect_load (docs/blocks/rectifier.md 5): random source rectangles of raster and
 // column-tiled planes (random bases, strides, rectangles up to 64 x 32, some across 4 KiB
 // boundaries), a memory with random grants and latency. Every pixel of the rectangle
 // must land in its bank word and byte; every word of the rectangle must be read once

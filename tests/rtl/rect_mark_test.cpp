@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_mark (docs/architecture.md 3.10.8): random frames (1 .. 150 x 1 .. 100, and
+// mcadsw_rect_mark (docs/blocks/rectifier.md 8): random frames (1 .. 150 x 1 .. 100, and
 // CIF), validity masks of every kind (all valid, none, random pixels, invalid borders as a
 // rectified view has), bytes and halfwords, random bases, strides and values, a memory with
 // random grants and latency. Every invalid pixel's bytes must be written once with the value

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_nodes (docs/architecture.md 3.10.4) against mcadsw::tile_source
+// mcadsw_rect_nodes (docs/blocks/rectifier.md 4) against mcadsw::tile_source
 // (docs/algorithm.md 13.8): every tile of random frames and meshes (S = 8, 16, 32; some
 // steep enough not to fit the tile buffer, some far off the raw view, some with a node
 // word outside the 18-bit range), the node words handed in with random gaps. The

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_sample (docs/architecture.md 3.10.3) against mcadsw::rectify: every tile of
+// mcadsw_rect_sample (docs/blocks/rectifier.md 3) against mcadsw::rectify: every tile of
 // random frames, random smooth meshes (scaled, rotated, jittered; some reaching outside
 // the raw view), S = 8, 16 and 32, Y and U planes, the consumer's back pressure random.
 // Each tile's pixels must come in strip order with the reference's value and validity;

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect, the rectifier pass (docs/architecture.md 3.10.7), on whole frames against
+// mcadsw_rect, the rectifier pass (docs/blocks/rectifier.md 7), on whole frames against
 // mcadsw::rectify: random frame and raw sizes, S = 8, 16, 32, random smooth meshes per
 // view (some reaching outside the raw view), random plane sets, raster and column-tiled
 // layouts, a memory with random grants and latency. Every rectified pixel and validity
@@ -265,7 +265,7 @@ TEST(Rect, FramesMatchTheReference) {
 
 // A bundled camera (B, the strong one, on the Teddy CIF crop) at S = 16, the raw mode's
 // planes (LY LU LV RY), zero latency, every request granted: bit-exact, and the cycles
-// and the reads a byte written, printed (docs/architecture.md 3.10.7). Column-tiled, as the
+// and the reads a byte written, printed (docs/blocks/rectifier.md 7). Column-tiled, as the
 // DDR-like bar's input. Then at S = 32 (raster), whose tiles fit since their box is over
 // their own edges (docs/algorithm.md 13.8): every tap of every pixel in the loaded rectangle.
 TEST(Rect, BundledCameraCif) {

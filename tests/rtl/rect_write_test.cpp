@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_rect_write (docs/architecture.md 3.10.6): random tiles (sizes 1..32 x 1..16),
+// mcadsw_rect_write (docs/blocks/rectifier.md 6): random tiles (sizes 1..32 x 1..16),
 // raster and column-tiled addressing, random pixels and validity bits streamed in strip
 // order with random gaps, random write grants. Every pixel byte must be written once at
 // its address and no other byte; each validity word once, with the tile's bits.

@@ -67,7 +67,7 @@ StreamResult stream_words(V& t, const std::vector<uint32_t>& words, double stall
   return r;
 }
 
-// Partial column reuse (docs/architecture.md 3.2.4): the first strip a window
+// Partial column reuse (docs/blocks/engine.md 4): the first strip a window
 // reader delivers when a block continues its left neighbour, whose input
 // window started `block` columns earlier. A window of `strips` strips starts at
 // the aligned word at or left of its first input column `xin`; the strips both

@@ -48,7 +48,7 @@ struct FrameConfig {
   int lr_tolerance = MCADSW_LR_T_DEFAULT;  // T, 0 .. MCADSW_LR_T_MAX
   // The weight table as its thresholds (docs/algorithm.md; mcadsw::weight_thresholds()).
   std::array<uint32_t, MCADSW_WEIGHT_THRESHOLDS> thresholds{};
-  // Rectification (register map 1.2; docs/architecture.md 3.10, docs/algorithm.md 13):
+  // Rectification (register map 1.2; docs/blocks/rectifier.md, docs/algorithm.md 13):
   // with `rect` the engine first resamples the raw planes through the meshes into the
   // planes above (base_ly ..., in their layout: raster with `stride`, or column-tiled
   // with `tile_stride`) and writes one validity bitmap a view; the matching passes then

@@ -154,7 +154,7 @@
 #define MCADSW_LR_T_T_LSB                0
 #define MCADSW_LR_T_T_WIDTH              8
 #define MCADSW_LR_T_T_MASK               0x000000FFu
-/* RECT_CTRL.ENABLE (RW): rectify the raw planes before matching (docs/architecture.md 3.10) */
+/* RECT_CTRL.ENABLE (RW): rectify the raw planes before matching (docs/blocks/rectifier.md) */
 #define MCADSW_RECT_CTRL_ENABLE_LSB      0
 #define MCADSW_RECT_CTRL_ENABLE_WIDTH    1
 #define MCADSW_RECT_CTRL_ENABLE_MASK     0x00000001u

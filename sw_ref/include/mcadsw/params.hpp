@@ -87,14 +87,14 @@ static_assert(kBlock / kHorzAggregators == kGroups,
               "horizontal side keeps pace with the vertical side: 6 cycles per disparity");
 inline constexpr int kMaxWidth = 2048;
 inline constexpr int kMaxHeight = 2048;
-// Build target of the RTL (CMake MCADSW_FPGA, `make sim FPGA=1`; docs/architecture.md
-// 3.11): 0 the ASIC, 1 an FPGA (block-RAM shapes). The RTL only; the values are the same.
+// Build target of the RTL (CMake MCADSW_FPGA, `make sim FPGA=1`; docs/blocks/fpga_target.md):
+// 0 the ASIC, 1 an FPGA (block-RAM shapes). The RTL only; the values are the same.
 #ifndef MCADSW_FPGA
 #define MCADSW_FPGA 0
 #endif
 inline constexpr bool kFpga = MCADSW_FPGA != 0;
-// The rectifier in the RTL (CMake MCADSW_RECT, `make sim RECT=0`; docs/architecture.md
-// 3.11): 1 built in, 0 left out (a smaller engine that rejects RECT_CTRL.ENABLE, code 24).
+// The rectifier in the RTL (CMake MCADSW_RECT, `make sim RECT=0`; docs/blocks/fpga_target.md,
+// "Without the rectifier"): 1 built in, 0 left out (a smaller engine that rejects RECT_CTRL.ENABLE, code 24).
 #ifndef MCADSW_RECT
 #define MCADSW_RECT 1
 #endif
@@ -124,7 +124,7 @@ inline constexpr int kLrToleranceDefault = 1;
 inline constexpr int kSubpixelScale = 16;      // sub-pixel value = 16 d + offset (OpenCV's scale)
 inline constexpr int kSubpixelOffsetMax = kSubpixelScale / 2;  // |offset| <= 8 (section 12.6)
 // The LR mode's post-processing stage keeps rows of the maps on chip: its buffers
-// are sized for this width (docs/architecture.md section 3.9); wider frames are a
+// are sized for this width (docs/blocks/post.md); wider frames are a
 // configuration error in the LR mode only.
 inline constexpr int kPostMaxWidth = 1024;
 static_assert(kPostMaxWidth <= kMaxWidth && (kPostMaxWidth & (kPostMaxWidth - 1)) == 0,
@@ -137,7 +137,7 @@ inline constexpr int kMeshStepLog2Max = 5;       // .. 32
 inline constexpr int kMeshCoordLimit = 4096 << kMeshFracBits;  // nodes in [-limit, limit)
 inline constexpr int kRectInvalidY = 0;          // an invalid rectified pixel: black
 inline constexpr int kRectInvalidUV = 128;
-// The rectifier's tiles and tile buffers (docs/architecture.md 3.10).
+// The rectifier's tiles and tile buffers (docs/blocks/rectifier.md).
 inline constexpr int kRectTileW = 32;            // output tile 32 x 16 pixels
 inline constexpr int kRectTileH = 16;
 inline constexpr int kRectBufW = 64;             // a tile's source rectangle: at most 64 x 32
@@ -145,7 +145,7 @@ inline constexpr int kRectBufH = 32;
 inline constexpr int kRectInvalidDisp16 = 0xFFFF;  // the depth of an invalid base pixel (13.4)
 inline constexpr int kRectInvalidDisp8 = 255;
 // The LR mode's scratch maps at invalid pixels after rectification (docs/algorithm.md
-// 13.4, docs/architecture.md 3.10.1): dR holds kRectInvalidDisp8 (|dL - 255| > T), dL a
+// 13.4, docs/blocks/rectifier.md 1): dR holds kRectInvalidDisp8 (|dL - 255| > T), dL a
 // flag the post stage's check fails: bit 7 of a byte, bit 15 of a scratch halfword.
 inline constexpr int kRectFlagDisp8 = 0x80;
 inline constexpr int kRectFlagDisp16 = 0x8000;

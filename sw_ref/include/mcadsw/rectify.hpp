@@ -56,7 +56,7 @@ TileSource tile_source(const Mesh& mesh, int tile_a, int tile_b, int raw_w, int 
 // rectangle does not fit the engine's tile buffer.
 void check_rect_footprints(const Mesh& mesh, int raw_w, int raw_h);
 
-// The check of the rectification's configuration (docs/architecture.md 3.10.2, register
+// The check of the rectification's configuration (docs/blocks/rectifier.md 2, register
 // map 1.2 codes 16..21 = 15 + the result; rtl/rect/mcadsw_rect_check.sv): 0, or the first
 // failing check: 1 step, 2 raw size, 3 mesh size, 4 align, 5 overlap, 6 beyond. Regions
 // 0..5 raw planes, 6..7 meshes (read), 8..13 rectified planes, 16..19 output planes
@@ -87,8 +87,8 @@ struct Rectified {
 };
 Rectified rectify(const YuvImage& raw, const Mesh& mesh);
 
-// The validity bitmap the hardware writes and its mark step reads (docs/architecture.md
-// 3.10.1): one bit a pixel in strip order, word (x / 4) ceil(H / 8) + y / 8, bit
+// The validity bitmap the hardware writes and its mark step reads (docs/blocks/rectifier.md
+// section 1): one bit a pixel in strip order, word (x / 4) ceil(H / 8) + y / 8, bit
 // 4 (y % 8) + x % 4, 1 valid; the bits of pixels outside the frame are 0.
 std::vector<uint32_t> validity_bitmap(const Plane& valid);
 

@@ -65,7 +65,7 @@ inline constexpr uint32_t kCycles = 0x80;
 inline constexpr uint32_t kWordsRead = 0x84;
 inline constexpr uint32_t kWordsWritten = 0x88;
 inline constexpr uint32_t kStalls = 0x8C;
-// Rectification (register map 1.2, docs/architecture.md 3.10.2, docs/algorithm.md 13)
+// Rectification (register map 1.2, docs/blocks/rectifier.md 2, docs/algorithm.md 13)
 inline constexpr uint32_t kRectCtrl = 0x90;
 inline constexpr uint32_t kRawSize = 0x94;
 inline constexpr uint32_t kRawStride = 0x98;
@@ -273,7 +273,7 @@ inline constexpr Field kFields[] = {
     {"DISP", "D", 0, kDispBitsReg, Access::kRW, "1 .. DMAX"},
     {"LR_T", "T", 0, kLrTBits, Access::kRW, "0 .. 63"},
     {"RECT_CTRL", "ENABLE", kRectEnableLsb, 1, Access::kRW,
-     "rectify the raw planes before matching (docs/architecture.md 3.10)"},
+     "rectify the raw planes before matching (docs/blocks/rectifier.md)"},
     {"RECT_CTRL", "STEP_LOG2", kRectStepLsb, kRectStepWidth, Access::kRW, "mesh step S = 2^STEP_LOG2: 3, 4 or 5"},
     {"RAW_SIZE", "WIDTH", kSizeWidthLsb, kSizeBits, Access::kRW, "raw width in pixels"},
     {"RAW_SIZE", "HEIGHT", kSizeHeightLsb, kSizeBits, Access::kRW, "raw height in pixels"},

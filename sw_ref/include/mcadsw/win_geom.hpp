@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Window geometry of a block: the reference of rtl/mcadsw_win_geom.sv
-// (docs/architecture.md, window geometry), compared output by output with the
+// (docs/blocks/engine.md 4, window geometry), compared output by output with the
 // RTL block by tests/rtl/win_geom_test.cpp. Plain integer arithmetic with floor
 // division, written from the description, not from the RTL.
 #pragma once
