@@ -9,7 +9,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: all help bootstrap tools configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls power fpga formal mutate lint rtl-pkg bench report sweep clean distclean
+.PHONY: all help bootstrap tools configure build test sim sim-build wave sim-random ref-sim coverage gen-rtl-pkg synth synth-check gls power fpga formal mutate lint rtl-pkg docs docs-figures docs-waves bench report sweep clean distclean
 
 all: build
 
@@ -169,7 +169,7 @@ mutate: bootstrap
 	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh
 
 ## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md, the C header,
-##   the FuseSoC core mcadsw.core and the IP-XACT component component.xml from their sources
+##   the FuseSoC core mcadsw.core, the IP-XACT component component.xml and docs/datasheet.md from their sources
 rtl-pkg: configure
 	@cmake --build $(BUILD_DIR) --target gen_rtl_pkg > /dev/null
 	@$(BUILD_DIR)/bin/gen_rtl_pkg > rtl/mcadsw_pkg.sv
@@ -178,8 +178,23 @@ rtl-pkg: configure
 	@$(BUILD_DIR)/bin/gen_rtl_pkg c-header > driver/include/mcadsw/mcadsw_regs.h
 	@python3 flow/fusesoc_core.py
 	@python3 flow/ipxact.py --gen-rtl-pkg $(BUILD_DIR)/bin/gen_rtl_pkg
+	@.venv/bin/python flow/datasheet.py render --gen-rtl-pkg $(BUILD_DIR)/bin/gen_rtl_pkg
 	@echo "rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md and driver/include/mcadsw/mcadsw_regs.h regenerated from sw_ref/include/mcadsw/params.hpp and regs.hpp;"
-	@echo "mcadsw.core from rtl/mcadsw.f, component.xml from rtl/mcadsw_axi.v, regs.hpp and the package"
+	@echo "mcadsw.core from rtl/mcadsw.f, component.xml from rtl/mcadsw_axi.v, regs.hpp and the package, docs/datasheet.md"
+
+## docs: the datasheet docs/datasheet.md (figures from docs/datasheet/figures.json, ports, registers,
+##   timing diagrams rendered by wavedrom) and its HTML build/docs/datasheet.html (flow/datasheet.py)
+docs: gen-rtl-pkg
+	@.venv/bin/python flow/datasheet.py render --gen-rtl-pkg $(GEN_RTL_PKG) --html $(abspath $(BUILD_DIR))/docs/datasheet.html
+
+## docs-figures: gather the datasheet's figures from the summaries of make synth-check, sim, sim FPGA=1,
+##   power and fpga in build/ into docs/datasheet/figures.json (then make docs)
+docs-figures: bootstrap
+	@.venv/bin/python flow/datasheet.py collect --build $(abspath $(BUILD_DIR))
+
+## docs-waves: record the datasheet's timing diagrams from a simulation (tests/cocotb/waves.py, Icarus)
+docs-waves: build
+	@.venv/bin/python tests/cocotb/run.py $(abspath $(BUILD_DIR)) --waves docs/datasheet/waves
 
 ## bench: Google Benchmark of the reference and OpenCV's matchers (MDE/s)
 bench: build

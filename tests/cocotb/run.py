@@ -5,6 +5,8 @@
 Verilog (tests/cocotb/test_mcadsw_axi.py), one small frame per mode:
 
     tests/cocotb/run.py BUILD_DIR [MODE ...]      (modes: raw subpixel lr rect; default all)
+    tests/cocotb/run.py BUILD_DIR --waves DIR     the datasheet's timing diagrams as WaveJSON
+                                                  into DIR (tests/cocotb/waves.py; make docs-waves)
 
 For each mode, BUILD_DIR/bin/mcadsw_sim runs the frame on the Verilated SoC, compares it
 with the C++ reference (exit 1 and no test if it differs) and dumps the memory image, the
@@ -40,6 +42,8 @@ MODES = {
     "rect": [str(RAW / "left.png"), str(RAW / "right.png"), "-d", "8", "--crop", "16,8,16,8",
              "--calib", str(RAW / "calib.yml"), "--step", "8"],
 }
+# The timing diagrams' frame: column-tiled input planes, so the reads are bursts.
+WAVES = [str(TEDDY / "left.png"), str(TEDDY / "right.png"), *TINY, "--tiled"]
 
 
 def rtl_files():
@@ -53,8 +57,12 @@ def main(argv):
         print(__doc__.strip(), file=sys.stderr)
         return 2
     build = pathlib.Path(argv[0]).resolve()
-    modes = argv[1:] or list(MODES)
-    bad = [m for m in modes if m not in MODES]
+    waves = None
+    if len(argv) == 3 and argv[1] == "--waves":
+        waves = pathlib.Path(argv[2]).resolve()
+        argv = argv[:1]
+    modes = ["waves"] if waves else (argv[1:] or list(MODES))
+    bad = [m for m in modes if m not in MODES and not waves]
     if bad:
         print(f"cocotb: unknown mode(s) {', '.join(bad)}; known: {', '.join(MODES)}", file=sys.stderr)
         return 2
@@ -65,7 +73,7 @@ def main(argv):
         for m in modes:
             d = work / m
             d.mkdir(exist_ok=True)
-            r = subprocess.run([str(build / "bin" / "mcadsw_sim"), *MODES[m], "--dump", str(d)],
+            r = subprocess.run([str(build / "bin" / "mcadsw_sim"), *(WAVES if waves else MODES[m]), "--dump", str(d)],
                                capture_output=True, text=True)
             print(f"cocotb ({m}): mcadsw_sim {r.stdout.strip().splitlines()[-1] if r.stdout.strip() else ''}")
             if r.returncode != 0 or "BIT-EXACT" not in r.stdout:
@@ -77,9 +85,17 @@ def main(argv):
         runner.build(sources=rtl_files(), includes=[str(ROOT / "rtl")], hdl_toplevel="mcadsw_axi",
                      build_args=["-g2012"], build_dir=str(work / "sim_build"), timescale=("1ns", "1ps"),
                      always=True)
+        if waves:
+            xml = runner.test(hdl_toplevel="mcadsw_axi", hdl_toplevel_lang="verilog", test_module="waves",
+                              test_dir=str(pathlib.Path(__file__).parent), build_dir=str(work / "sim_build"),
+                              results_xml=str(work / "waves.xml"),
+                              extra_env={"MCADSW_DUMP": str(work / "waves"), "MCADSW_WAVES": str(waves)})
+            n, fails = get_results(pathlib.Path(xml))
+            print(f"cocotb (waves): {'written to ' + str(waves) if n and not fails else 'FAILED'}")
+            return 0 if n and not fails else 1
         failed = 0
         for m in modes:
-            xml = runner.test(hdl_toplevel="mcadsw_axi", test_module="test_mcadsw_axi",
+            xml = runner.test(hdl_toplevel="mcadsw_axi", hdl_toplevel_lang="verilog", test_module="test_mcadsw_axi",
                               test_dir=str(pathlib.Path(__file__).parent), build_dir=str(work / "sim_build"),
                               results_xml=str(work / f"{m}.xml"),
                               extra_env={"MCADSW_DUMP": str(work / m),
