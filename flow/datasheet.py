@@ -85,14 +85,14 @@ SOURCES = {
                      "make power"),
     "power.idle_mw": ("power/summary.json", lambda d: round(d["runs"]["idle"]["total_w"] * 1e3, 1), "mW",
                       "make power"),
-    "ecp5.lut4": ("fpga/ecp5/summary.json", item("need", "TRELLIS_COMB", "used"), "LUT4", "make fpga"),
-    "ecp5.dp16kd": ("fpga/ecp5/summary.json", item("need", "DP16KD", "used"), "DP16KD", "make fpga"),
-    "ecp5.mult18": ("fpga/ecp5/summary.json", item("need", "MULT18X18D", "used"), "MULT18X18D", "make fpga"),
+    "ecp5.lut4": ("fpga/ecp5/summary.json", item("need", "TRELLIS_COMB", "used"), "", "make fpga"),
+    "ecp5.dp16kd": ("fpga/ecp5/summary.json", item("need", "DP16KD", "used"), "", "make fpga"),
+    "ecp5.mult18": ("fpga/ecp5/summary.json", item("need", "MULT18X18D", "used"), "", "make fpga"),
     "ecp5.fmax_mhz": ("fpga/ecp5/summary.json", lambda d: min(v["achieved"] for v in d["fmax_mhz"].values()),
                       "MHz", "make fpga"),
-    "xc7.luts": ("fpga/xc7/summary.json", item("lut"), "LUTs", "make fpga"),
-    "xc7.bram36": ("fpga/xc7/summary.json", item("bram36_equivalent"), "BRAM36", "make fpga"),
-    "xc7.dsp48": ("fpga/xc7/summary.json", item("dsp48e1"), "DSP48", "make fpga"),
+    "xc7.luts": ("fpga/xc7/summary.json", item("lut"), "", "make fpga"),
+    "xc7.bram36": ("fpga/xc7/summary.json", item("bram36_equivalent"), "", "make fpga"),
+    "xc7.dsp48": ("fpga/xc7/summary.json", item("dsp48e1"), "", "make fpga"),
 }
 
 
@@ -184,12 +184,14 @@ def errors_table(regs):
 
 
 def sources_table(figs, used):
-    rows = ["| figure | value | from | written by | collected at |", "|---|---|---|---|---|"]
+    rows = ["| figure | value | from | written by | summary written | tree when collected |",
+            "|---|---|---|---|---|---|"]
     for k in sorted(used):
         f = figs[k]
         v = "not collected" if f["value"] is None else fmt(f["value"], f["unit"])
-        at = f"{f['commit']}, {f['date']}" if f["value"] is not None else ""
-        rows.append(f"| `{k}` | {v} | `{f['source']}` | `{f['command']}` | {at} |")
+        got = f["value"] is not None
+        rows.append(f"| `{k}` | {v} | `{f['source']}` | `{f['command']}` | {f['date'] if got else ''} | "
+                    f"{f['commit'] if got else ''} |")
     return "\n".join(rows)
 
 
