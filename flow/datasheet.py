@@ -31,6 +31,8 @@ import re
 import subprocess
 import sys
 
+import ipxact
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 DOC = ROOT / "docs" / "datasheet.md"
 DIR = ROOT / "docs" / "datasheet"
@@ -139,32 +141,16 @@ def fmt(v, unit=""):
     return s + (" " + unit if unit and unit not in ("cycles", "words") else "")
 
 
-def regs_json(gen):
-    return json.loads(subprocess.run([gen, "regs-json"], check=True, capture_output=True, text=True).stdout)
-
-
 def ports_table():
-    """The wrapper's port list; a comment line inside it titles the ports below it."""
+    """The wrapper's ports (flow/ipxact.py reads them) with their interface."""
+    kinds = {"s_axi": "s_axi (AXI4-Lite slave)", "m_axi": "m_axi (AXI4 master)", "aclk": "clock",
+             "aresetn": "reset, active low", "interrupt": "interrupt"}
+    notes = {"interrupt": "level, active high"}
     rows = ["| port | direction | width | interface | note |", "|---|---|---|---|---|"]
-    comment, inside = "", False
-    for line in (ROOT / "rtl" / "mcadsw_axi.v").read_text().splitlines():
-        if not inside:
-            inside = line.startswith("module mcadsw_axi")
-            continue
-        c = re.match(r"\s*//\s*(.*)$", line)
-        if c:
-            comment = c.group(1)
-            continue
-        m = re.match(r"\s*(input|output)\s+wire\s+(?:\[(\d+):0\]\s+)?(\w+)\s*,?\s*$", line)
-        if m:
-            name = m.group(3)
-            iface = ("s_axi (AXI4-Lite slave)" if name.startswith("s_axi_") else
-                     "m_axi (AXI4 master)" if name.startswith("m_axi_") else
-                     {"aclk": "clock", "aresetn": "reset, active low"}.get(name, name))
-            rows.append(f"| `{name}` | {m.group(1)} | {int(m.group(2)) + 1 if m.group(2) else 1} | {iface} | "
-                        f"{comment if name == 'interrupt' else ''} |")
-        elif line.strip().startswith(");"):
-            break
+    for name, d, width in ipxact.ports():
+        bus, _ = ipxact.bus_of(name)
+        rows.append(f"| `{name}` | {'input' if d == 'in' else 'output'} | {width} | {kinds[bus['name']]} | "
+                    f"{notes.get(name, '')} |")
     return "\n".join(rows)
 
 
@@ -206,7 +192,7 @@ def render_svgs():
 
 def render(gen):
     figs = json.loads(FIGURES.read_text())
-    regs = regs_json(gen)
+    regs = ipxact.regs_json(gen)
     text = TEMPLATE.read_text()
     used = set()
 

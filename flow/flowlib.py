@@ -85,6 +85,34 @@ def rtl_list(no_pkg=False, no_rect=False):
     return files
 
 
+def project_version():
+    """The project's version, CMake's project(mcadsw VERSION x.y.z) in CMakeLists.txt."""
+    m = re.search(r"project\(mcadsw VERSION (\d+\.\d+\.\d+)", (ROOT / "CMakeLists.txt").read_text())
+    if not m:
+        raise SystemExit("no `project(mcadsw VERSION x.y.z` in CMakeLists.txt")
+    return m.group(1)
+
+
+def write_or_check(path, text, check, how):
+    """A generated file: written (check False), or compared with TEXT (check True): on a
+    difference the unified diff on stdout, a line naming HOW to regenerate it on stderr, and
+    1; else 0."""
+    import difflib
+    import sys
+    rel = Path(path).relative_to(ROOT)
+    if not check:
+        Path(path).write_text(text)
+        return 0
+    old = Path(path).read_text() if Path(path).is_file() else ""
+    if old != text:
+        sys.stdout.writelines(difflib.unified_diff(old.splitlines(True), text.splitlines(True),
+                                                   str(rel), "generated"))
+        print(f"{rel} is stale: run {how}", file=sys.stderr)
+        return 1
+    print(f"{rel} is up to date")
+    return 0
+
+
 # ---- Processes --------------------------------------------------------------------------
 class Run:
     """Processes of this run: each in its own process group (stopped as a group),

@@ -24,15 +24,14 @@ aresetn onto RST, interrupt onto INTERRUPT. A port that fits no bus interface st
 generator (ctest ipxact_component checks the same from the wrapper as Yosys reads it).
 """
 import argparse
-import difflib
 import json
-import pathlib
 import re
 import subprocess
 import sys
 from xml.sax.saxutils import escape, quoteattr
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+from flowlib import ROOT, project_version, rtl_list, write_or_check
+
 OUT = ROOT / "component.xml"
 WRAPPER = ROOT / "rtl" / "mcadsw_axi.v"
 NS = "http://www.accellera.org/XMLSchema/IPXACT/1685-2014"
@@ -63,6 +62,15 @@ PKG_PARAMS = {"DMAX": "largest disparity range D of this build (HWCONFIG.DMAX)",
               "PAR": "disparities a step (HWCONFIG.PAR)",
               "FPGA": "target: 0 the ASIC memory shapes, 1 the FPGA's (block RAM)",
               "RECT": "1: the rectifier is built in (HWCONFIG.NORECT reads its inverse)"}
+
+
+def regs_json(gen):
+    """The register map, `gen_rtl_pkg regs-json`; exit 2 with a message when GEN fails."""
+    try:
+        return json.loads(subprocess.run([gen, "regs-json"], check=True, capture_output=True, text=True).stdout)
+    except (OSError, subprocess.CalledProcessError) as e:
+        raise SystemExit(f"{gen} regs-json failed ({e}); build it: cmake --build build --target gen_rtl_pkg") \
+            from None
 
 
 def ports():
@@ -99,19 +107,7 @@ def pkg_values():
 
 
 def files():
-    out = []
-    for line in (ROOT / "rtl" / "mcadsw.f").read_text().splitlines():
-        line = line.split("//")[0].strip()
-        if line:
-            out.append("rtl/" + line)
-    return out + ["rtl/mcadsw_axi.v"]
-
-
-def version():
-    m = re.search(r"project\(mcadsw VERSION (\d+\.\d+\.\d+)", (ROOT / "CMakeLists.txt").read_text())
-    if not m:
-        raise SystemExit("ipxact: no `project(mcadsw VERSION x.y.z` in CMakeLists.txt")
-    return m.group(1)
+    return ["rtl/" + f for f in rtl_list()] + ["rtl/mcadsw_axi.v"]
 
 
 def vlnv_attrs(v):
@@ -134,7 +130,7 @@ def component(regs):
     w("  <ipxact:vendor>mcadsw</ipxact:vendor>")
     w("  <ipxact:library>ip</ipxact:library>")
     w("  <ipxact:name>mcadsw_axi</ipxact:name>")
-    w(f"  <ipxact:version>{version()}</ipxact:version>")
+    w(f"  <ipxact:version>{project_version()}</ipxact:version>")
     # Bus interfaces, every port of each mapped.
     w("  <ipxact:busInterfaces>")
     for b in BUSES:
@@ -281,25 +277,7 @@ def main(argv):
     ap.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"))
     ap.add_argument("--check", action="store_true")
     a = ap.parse_args(argv)
-    try:
-        regs = json.loads(subprocess.run([a.gen_rtl_pkg, "regs-json"], check=True, capture_output=True,
-                                         text=True).stdout)
-    except (OSError, subprocess.CalledProcessError) as e:
-        print(f"ipxact: {a.gen_rtl_pkg} regs-json failed ({e}); build it: cmake --build build "
-              "--target gen_rtl_pkg", file=sys.stderr)
-        return 2
-    text = component(regs)
-    if a.check:
-        old = OUT.read_text() if OUT.is_file() else ""
-        if old != text:
-            sys.stdout.writelines(difflib.unified_diff(old.splitlines(True), text.splitlines(True),
-                                                       "component.xml", "flow/ipxact.py"))
-            print("ipxact: component.xml is stale: run `make rtl-pkg`", file=sys.stderr)
-            return 1
-        print("component.xml is up to date")
-        return 0
-    OUT.write_text(text)
-    return 0
+    return write_or_check(OUT, component(regs_json(a.gen_rtl_pkg)), a.check, "`make rtl-pkg`")
 
 
 if __name__ == "__main__":

@@ -60,6 +60,33 @@ def pause(rng, p):
         yield rng.random() < p
 
 
+def attach(dut, dump):
+    """The models on the wrapper: an AxiRam on m_axi holding DUMP's memory image (mem.hex) and
+    an AxiLiteMaster on s_axi, both logging warnings only (they log every transaction at INFO,
+    and a frame has thousands); aclk started (100 MHz). Returns (ram, cpu)."""
+    words = [int(w, 16) for w in (dump / "mem.hex").read_text().split()]
+    size = 1 << max(12, (4 * len(words) - 1).bit_length())
+    ram = AxiRam(AxiBus.from_prefix(dut, "m_axi"), dut.aclk, dut.aresetn, reset_active_level=False, size=size)
+    ram.write(0, b"".join(w.to_bytes(4, "little") for w in words))
+    cpu = AxiLiteMaster(AxiLiteBus.from_prefix(dut, "s_axi"), dut.aclk, dut.aresetn, reset_active_level=False)
+    for m in (ram.write_if, ram.read_if, cpu.write_if, cpu.read_if):
+        m.log.setLevel(logging.WARNING)
+    cocotb.start_soon(Clock(dut.aclk, 10, unit="ns").start())
+    return ram, cpu
+
+
+async def reset(dut):
+    dut.aresetn.value = 0
+    await ClockCycles(dut.aclk, 5)
+    dut.aresetn.value = 1
+    await ClockCycles(dut.aclk, 2)
+
+
+def register_writes(dump):
+    """DUMP's regs.txt: the driver's register writes, (offset, value), CTRL.START last."""
+    return [tuple(int(x, 16) for x in line.split()) for line in (dump / "regs.txt").read_text().splitlines()]
+
+
 @cocotb.test()
 async def frame_through_axi_models(dut):
     dump = pathlib.Path(os.environ["MCADSW_DUMP"])
@@ -68,14 +95,7 @@ async def frame_through_axi_models(dut):
     rng = random.Random(seed)
     regs = reg_offsets()
 
-    words = [int(w, 16) for w in (dump / "mem.hex").read_text().split()]
-    size = 1 << max(12, (4 * len(words) - 1).bit_length())
-    ram = AxiRam(AxiBus.from_prefix(dut, "m_axi"), dut.aclk, dut.aresetn, reset_active_level=False, size=size)
-    ram.write(0, b"".join(w.to_bytes(4, "little") for w in words))
-    cpu = AxiLiteMaster(AxiLiteBus.from_prefix(dut, "s_axi"), dut.aclk, dut.aresetn, reset_active_level=False)
-    # The models log every transaction at INFO: warnings only (a frame is thousands).
-    for m in (ram.write_if, ram.read_if, cpu.write_if, cpu.read_if):
-        m.log.setLevel(logging.WARNING)
+    ram, cpu = attach(dut, dump)
     # Random back-pressure: the memory's AWREADY, WREADY, ARREADY held low and its BVALID,
     # RVALID delayed; the CPU's BREADY and RREADY held low (and its requests delayed).
     for i, ch in enumerate([ram.write_if.aw_channel, ram.write_if.w_channel, ram.write_if.b_channel,
@@ -84,18 +104,13 @@ async def frame_through_axi_models(dut):
                             cpu.read_if.ar_channel, cpu.read_if.r_channel]):
         ch.set_pause_generator(pause(random.Random(seed * 100 + i), busy_p))
 
-    cocotb.start_soon(Clock(dut.aclk, 10, unit="ns").start())
-    dut.aresetn.value = 0
-    await ClockCycles(dut.aclk, 5)
-    dut.aresetn.value = 1
-    await ClockCycles(dut.aclk, 2)
+    await reset(dut)
     assert dut.interrupt.value == 0, "interrupt high after reset"
     ident = (await cpu.read_dword(regs["ID"]))
     assert ident == 0x4D434144, f"ID reads 0x{ident:08X}, not 0x4D434144"
 
     # The driver's writes, CTRL.START last.
-    for line in (dump / "regs.txt").read_text().splitlines():
-        off, val = (int(x, 16) for x in line.split())
+    for off, val in register_writes(dump):
         await cpu.write_dword(off, val)
     counters = dict(zip(*[iter((dump / "verilator_counters.txt").read_text().split())] * 2))
     limit = 20 * int(counters["cycles"]) + 20000  # back-pressure slows the frame, never 20x

@@ -12,16 +12,13 @@ flow/datasheet.py renders them to SVG with wavedrom. Run by tests/cocotb/run.py 
 (make docs-waves).
 """
 import json
-import logging
 import os
 import pathlib
 
 import cocotb
-from cocotb.clock import Clock
 from cocotb.triggers import ClockCycles, FallingEdge, RisingEdge, with_timeout
-from cocotbext.axi import AxiBus, AxiLiteBus, AxiLiteMaster, AxiRam
 
-from test_mcadsw_axi import field, reg_offsets
+from test_mcadsw_axi import attach, field, reg_offsets, register_writes, reset
 
 ONE_BIT = ["s_axi_awvalid", "s_axi_awready", "s_axi_wvalid", "s_axi_wready", "s_axi_bvalid",
            "m_axi_arvalid", "m_axi_arready", "m_axi_rvalid", "m_axi_rready", "m_axi_rlast", "interrupt"]
@@ -87,22 +84,12 @@ async def record_waves(dut):
     dest = pathlib.Path(os.environ["MCADSW_WAVES"])
     dest.mkdir(parents=True, exist_ok=True)
     regs = reg_offsets()
-    words = [int(w, 16) for w in (dump / "mem.hex").read_text().split()]
-    size = 1 << max(12, (4 * len(words) - 1).bit_length())
-    ram = AxiRam(AxiBus.from_prefix(dut, "m_axi"), dut.aclk, dut.aresetn, reset_active_level=False, size=size)
-    ram.write(0, b"".join(w.to_bytes(4, "little") for w in words))
-    cpu = AxiLiteMaster(AxiLiteBus.from_prefix(dut, "s_axi"), dut.aclk, dut.aresetn, reset_active_level=False)
-    for m in (ram.write_if, ram.read_if, cpu.write_if, cpu.read_if):
-        m.log.setLevel(logging.WARNING)
-    cocotb.start_soon(Clock(dut.aclk, 10, unit="ns").start())
+    _, cpu = attach(dut, dump)
     rec = Recorder(dut)
     cocotb.start_soon(rec.run())
-    dut.aresetn.value = 0
-    await ClockCycles(dut.aclk, 5)
-    dut.aresetn.value = 1
-    await ClockCycles(dut.aclk, 2)
+    await reset(dut)
 
-    writes = [tuple(int(x, 16) for x in line.split()) for line in (dump / "regs.txt").read_text().splitlines()]
+    writes = register_writes(dump)
     for off, val in writes[:-1]:
         await cpu.write_dword(off, val)
     rec.on = True
