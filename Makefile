@@ -157,10 +157,10 @@ lint: configure
 	@scripts/rtl_check.sh board $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
 	@scripts/rtl_check.sh wrapper
 
-## formal: bounded proofs (Yosys SAT) of formal/ and the blocks' MCADSW_ASSERTs
-##   (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail
+## formal: SymbiYosys proofs of formal/*.sby (the blocks' MCADSW_ASSERTs and formal/*_props.sv)
+##   and their covers (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail
 formal: bootstrap
-	@scripts/formal.sh $(BUILD_DIR) $(if $(SELFTEST),--selftest)
+	@python3 flow/formal.py --build $(BUILD_DIR) $(if $(SELFTEST),--selftest)
 
 ## mutate: N=200 SEED=1 Yosys mutants of the flattened design against the kill suite; survivors
 ##   must be listed in tests/mutate/survivors.txt (SAMPLE=12 a seeded sample, as CI runs)

@@ -126,7 +126,8 @@ module axi_master_props #(
   logic [4*8-1:0] awq_q, wq_q;
   logic [2:0]     awn_q, wn_q;
   logic [7:0]     wbeats_q;          // beats of the W burst in progress
-  always_ff @(posedge clk_i or negedge rst_ni)
+  always_ff @(posedge clk_i)         // (synchronous reset: a check under an asynchronous
+                                     // reset is a two-trigger check SymbiYosys refuses)
     if (!rst_ni) begin
       awq_q <= '0; wq_q <= '0; awn_q <= '0; wn_q <= '0; wbeats_q <= '0;
     end else begin

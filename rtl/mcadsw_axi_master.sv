@@ -346,6 +346,12 @@ module mcadsw_axi_master #(
   `MCADSW_ASSUME(WriteResponseInFlight, !(m_bvalid_i && b_out_q == '0))
   `MCADSW_ASSERT(OneGrantReadOrWrite, !(wr_take && rd_take))
 
+  // Events the block's proof must reach (formal only): a read burst's last beat, a
+  // write burst's last beat, a write response, and idle again after them.
+  `MCADSW_COVER(ReadBurstDone, m_rvalid_i && m_rready_o && m_rlast_i)
+  `MCADSW_COVER(WriteBurstDone, w_go && m_wlast_o)
+  `MCADSW_COVER(WriteAnswered, m_bvalid_i && m_bready_o)
+
 endmodule
 
 `default_nettype wire

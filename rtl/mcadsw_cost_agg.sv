@@ -437,6 +437,12 @@ module mcadsw_cost_agg #(
           end
 `endif
 
+  // Events the block's proof must reach (formal only): a bank handed to the
+  // horizontal side, disparities and sub-pixel values out.
+  `MCADSW_COVER(BankSwapped, bank_full)
+  `MCADSW_COVER(DisparitiesOut, disp_valid_o)
+  `MCADSW_COVER(SubpixelOut, sub_valid_o)
+
 endmodule
 
 `default_nettype wire

@@ -281,6 +281,11 @@ module mcadsw_depth_fifo #(
   `MCADSW_ASSUME(DisparitiesForQueuedRow, !(disp_valid_i && ready_q == count_q))
   `MCADSW_ASSERT(WriteOnlyWithRowQueued, !(wr_req_o && count_q == '0))
 
+  // Events the block's proof must reach (formal only): a row written out, and the
+  // queue full.
+  `MCADSW_COVER(RowWritten, row_written)
+  `MCADSW_COVER(QueueFull, !space_o)
+
 endmodule
 
 `default_nettype wire

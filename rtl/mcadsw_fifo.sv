@@ -77,6 +77,43 @@ module mcadsw_fifo #(
   `MCADSW_ASSUME(NoOverflow, 32'(count_q) + 32'(push_i) + 32'(push2_i) <= DEPTH + 32'(pop_i))
   `MCADSW_ASSUME(NoPopWhenEmpty, !(pop_i && count_q == '0))
   `MCADSW_ASSERT(CountWithinDepth, 32'(count_q) <= DEPTH)
+  `MCADSW_ASSERT(CountIsPointerDistance, PI'(wr_q - rd_q) == PI'(count_q))
+
+`ifdef FORMAL
+  // The queue as a list of the entries pushed and not yet popped, oldest first, and the
+  // block against it: every held entry, at its place from the head, and so the head
+  // (make formal, formal/fifo.sby: with these the proof closes by induction).
+  logic [DEPTH*W-1:0] f_list_q;
+  always_ff @(posedge clk_i) begin : f_list
+    logic [DEPTH*W-1:0] l;
+    logic [PI:0]        n;
+    l = f_list_q;
+    n = count_q;
+    if (pop_i) begin
+      l = l >> W;
+      n = n - 1'b1;
+    end
+    if (push_i) begin
+      l[32'(n)*W +: W] = data_i;
+      n = n + 1'b1;
+    end
+    if (push2_i) l[32'(n)*W +: W] = data2_i;
+    f_list_q <= l;
+  end
+  for (genvar i = 0; i < DEPTH; i++) begin : g_f_held
+    `MCADSW_ASSERT(HeldInOrder, 32'(count_q) <= i ||
+                                entries_q[32'(PI'(rd_q + PI'(i)))*W +: W] == f_list_q[i*W +: W])
+  end
+  `MCADSW_ASSERT(HeadIsOldest, count_q == '0 || head_o == f_list_q[W-1:0])
+`endif
+
+  // Events the block's proof must reach (formal only): the queue full, two entries pushed
+  // in a cycle, a push and a pop in the same cycle of a full queue, the head pointer
+  // wrapping around.
+  `MCADSW_COVER(Full, 32'(count_q) == DEPTH)
+  `MCADSW_COVER(TwoPushes, push_i && push2_i)
+  `MCADSW_COVER(PushPopWhenFull, 32'(count_q) == DEPTH && push_i && pop_i)
+  `MCADSW_COVER(HeadWraps, pop_i && rd_q == PI'(DEPTH - 1))
 
 endmodule
 

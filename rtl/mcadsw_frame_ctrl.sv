@@ -325,6 +325,34 @@ module mcadsw_frame_ctrl (
   // The counters run only within a frame.
   `MCADSW_ASSERT(CountOnlyWhenBusy, !count || busy_o)
 
+  // The controller's state (each holds in every reachable state; also what a proof by
+  // induction needs): no code while a frame runs (a start clears it, it is set only
+  // with the return to idle); the rectification's states only for a frame that
+  // rectifies.
+  `MCADSW_ASSERT(NoCodeWhileBusy, !busy_o || code_q == mcadsw_pkg::ErrNone)
+  `MCADSW_ASSERT(RectStatesOnlyWithRect, cfg_rect_i || !(state_q == StRectCheck || state_q == StRect ||
+                                                        state_q == StRectDrain || state_q == StMarkWait ||
+                                                        state_q == StMark))
+  // The LR mode's post stage and its drain come after its passes (and marks), the
+  // marks into dR and dL only in the LR mode, between its passes and the post stage.
+  `MCADSW_ASSERT(PostStatesAfterLrPasses, !(state_q == StPost || state_q == StDrain) ||
+                                          (cfg_lr_i && pass_q == PassPost &&
+                                           mphase_q == (cfg_rect_i ? 2'd2 : 2'd0)))
+  `MCADSW_ASSERT(LrMarkPhasesInLr, !((state_q == StMark || state_q == StMarkWait) && mphase_q != 2'd2) ||
+                                   (cfg_lr_i && pass_q == PassPost))
+  `MCADSW_ASSERT(NoMarkPhase3, mphase_q != 2'd3)
+  `MCADSW_ASSERT(FirstPassBeforeThePasses, pass_q == PassFirst ||
+                                           !(state_q == StSettle || state_q == StCheck ||
+                                             state_q == StRectCheck || state_q == StRect ||
+                                             state_q == StRectDrain || state_q == StLeftPass))
+
+  // Events the block's proof must reach (formal only): a frame done, a start
+  // rejected, the LR mode's post stage, a rectified frame's mark step.
+  `MCADSW_COVER(FrameDone, done_o && !error_o)
+  `MCADSW_COVER(StartRejected, error_o)
+  `MCADSW_COVER(PostStage, post_start_o)
+  `MCADSW_COVER(MarkStep, mark_start_o)
+
 endmodule
 
 `default_nettype wire

@@ -160,6 +160,13 @@ module mcadsw_mem_ctrl #(
   `MCADSW_ASSUME(RequestHeldUntilGranted, !(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
   `MCADSW_ASSUME(LengthHeldUntilGranted, !(hold_q && !hold_wr_q && mem_len_o != hold_len_q))
 
+  // Events the block's proof must reach (formal only): each kind of grant, read data
+  // routed, and a write that waits behind a held read.
+  `MCADSW_COVER(ReadGranted, |rd_gnt_o)
+  `MCADSW_COVER(WriteGranted, wr_gnt_o)
+  `MCADSW_COVER(ReadDataRouted, |rd_rvalid_o)
+  `MCADSW_COVER(WriteBehindHeldRead, hold_q && !hold_wr_q && wr_req_i)
+
 endmodule
 
 `default_nettype wire

