@@ -140,8 +140,6 @@ module regs_props #(
     BackToBackReads:    cover (r_done_q && ar_go);
   end
 
-  logic unused;
-  assign unused = ^{busy_i, done_i, error_i};
 endmodule
 
 `default_nettype wire

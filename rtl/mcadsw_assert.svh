@@ -17,8 +17,8 @@
 // Simulation (Verilator --assert, Icarus): an immediate assertion at every clock
 // edge out of reset that stops with "<instance>: <name>". `make formal`
 // (SymbiYosys, formal/*.sby): the property in every step out of reset (an
-// always @* check, so the last step of a trace is checked too); Yosys reads the proof's block with
-// -DMCADSW_FORMAL_TOP and its submodules without it, so a submodule's
+// always @* check, so the last step of a trace is checked too); Yosys reads the
+// proof's block with -DMCADSW_FORMAL_TOP and its submodules without it, so a submodule's
 // expectation of its inputs is proven from the block that drives them, never
 // assumed (ZipCPU's convention); covers are the proof's block's only. The
 // choice is made again at each include (each module includes this file), so
