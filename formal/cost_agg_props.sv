@@ -33,7 +33,7 @@ module cost_agg_props #(
     .vrd_en_o (), .vrd_row_o (), .vrd_grp_o (), .vrd_d_o (), .vrd_slot_o (),
     .cen_l_i ('0), .cen_r_i ('0), .wv_i ('0),
     .hrd_en_o (), .hrd_row_o (), .hrd_grp_o (), .hrd_slot_o (), .hrd_rel_o (), .wh_i ('0),
-    .disp_valid_o (), .disp_row_o (), .disp_grp_o (), .disp_o (), .busy_o (),
+    .disp_valid_o (), .disp_row_o (), .disp_grp_o (), .disp_o (), .busy_o (), .vbusy_o (),
     .sub_valid_o (), .sub_row_o (), .sub_grp_o (), .sub_o (), .sub_d_o (), .sub_busy_o ()
   );
 

@@ -21,6 +21,18 @@
 // sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
 // multiplexers out of the horizontal sum's cycle (docs/synthesis.md section 1).
 //
+// FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the vertical side
+// takes a row's column groups in the outer loop and its steps in the inner one
+// (group g, d = 0 .. D-1, then g + 1) and writes each group's costs into a
+// transposition buffer, a block RAM of LANES costs a word at (weight slot, step,
+// group). Once a row's last word is written, a reader takes the row back out in
+// the horizontal side's order (d, then g), a word a cycle, into the same
+// ping-pong buffer, horizontal aggregators and WTA: the same sums in the same
+// order, one row later. The transposition buffer holds a row per weight slot
+// (WEIGHT_SLOTS = 3): the vertical side fills row r + 1's while the reader empties
+// row r's, and a slot is refilled only after the weight generator has taken it
+// back, which it does on the row's last horizontal read, after the reader's last.
+//
 // P disparities a step (docs/blocks/cost_agg.md 1): a step evaluates d ..
 // d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +
 // P - 1 lanes, lane j at image column (column of left lane j - (P - 1)) - d, so
@@ -38,6 +50,9 @@ module mcadsw_cost_agg #(
   parameter int HAGG   = mcadsw_pkg::HAGG,
   parameter int GROUPS = mcadsw_pkg::GROUPS,
   parameter int P      = 1,                  // disparities a step (1, 2, 4)
+  parameter bit GORDER = 1'(mcadsw_pkg::FPGA), // vertical side group-outer (FPGA target)
+  parameter int NSLOT  = mcadsw_pkg::WEIGHT_SLOTS,
+  parameter int SLB    = $clog2(NSLOT),
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
   parameter int WB     = mcadsw_pkg::WEIGHT_CODE_BITS,
   parameter int VB     = mcadsw_pkg::VCOST_BITS,
@@ -57,13 +72,13 @@ module mcadsw_cost_agg #(
   input  logic [RB-1:0]                 job_row_i,    // block row 0 .. BLOCK-1
   input  logic [NB-1:0]                 job_disp_i,   // D, 1 .. DMAX
   input  logic [CLB-1:0]                job_last_col_i,  // last Ev column inside the image
-  input  logic                          job_wslot_i,  // weight-buffer row slot of the row
+  input  logic [SLB-1:0]                job_wslot_i,  // weight-buffer row slot of the row
   // Census buffers and vertical weight buffer (data one cycle after address)
   output logic                          vrd_en_o,
   output logic [RB-1:0]                 vrd_row_o,
   output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
   output logic [DB-1:0]                 vrd_d_o,      // the step's first disparity
-  output logic                          vrd_slot_o,   // weight row slot
+  output logic [SLB-1:0]                vrd_slot_o,   // weight row slot
   input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
   input  logic [(LANES+P-1)*WINDOW*CB-1:0] cen_r_i,  // right lanes, see above
   input  logic [LANES*WINDOW*WB-1:0]    wv_i,
@@ -71,7 +86,7 @@ module mcadsw_cost_agg #(
   output logic                          hrd_en_o,
   output logic [RB-1:0]                 hrd_row_o,
   output logic [GB-1:0]                 hrd_grp_o,    // pixels HAGG*grp ..
-  output logic                          hrd_slot_o,   // weight row slot
+  output logic [SLB-1:0]                hrd_slot_o,   // weight row slot
   output logic                          hrd_rel_o,    // the row's last horizontal read
   input  logic [HAGG*WINDOW*WB-1:0]     wh_i,
   // Disparities, HAGG pixels a cycle; no back-pressure (the scheduler only
@@ -81,6 +96,8 @@ module mcadsw_cost_agg #(
   output logic [GB-1:0]                 disp_grp_o,
   output logic [HAGG*DB-1:0]            disp_o,
   output logic                          busy_o,       // disparities still to come
+  output logic                          vbusy_o,      // census and vertical weight reads still
+                                                      // to come (busy_o on the ASIC target)
   // Sub-pixel values (docs/algorithm.md 12.6), two cycles after the disparities
   output logic                          sub_valid_o,
   output logic [RB-1:0]                 sub_row_o,
@@ -93,7 +110,8 @@ module mcadsw_cost_agg #(
 // fc, h3_*_q) by hierarchical reference (tests/rtl/cost_agg_tb.sv).
 
   if (GROUPS * LANES != BLOCK + WINDOW - 1 || GROUPS * HAGG != BLOCK ||
-      (1 << DB) < DMAX || !(P == 1 || P == 2 || P == 4) || DMAX % P != 0) begin : g_bad_param
+      (1 << DB) < DMAX || !(P == 1 || P == 2 || P == 4) || DMAX % P != 0 ||
+      (GORDER && NSLOT < 3)) begin : g_bad_param
     mcadsw_error_cost_agg_geometry u_error ();
   end
 
@@ -109,13 +127,14 @@ module mcadsw_cost_agg #(
   logic [DB-1:0] d_q, dlast_q, dmax_q;   // step's first d, last step's first d, D - 1
   logic [P-1:0]  lanes;                  // lane p: d + p < D
   logic [CLB-1:0] last_col_q;
-  logic          slot_q;
+  logic [SLB-1:0] slot_q;
   logic [GB-1:0] grp_q;
   logic          issue_last;
   logic          accept;
 
+  logic          tr_slot_free;   // the job's slot holds no row still to be read (FPGA)
   assign issue_last  = busy_q && d_q == dlast_q && grp_q == GB'(GROUPS - 1);
-  assign job_ready_o = !busy_q || issue_last;
+  assign job_ready_o = (!busy_q || issue_last) && tr_slot_free;
   assign accept      = job_valid_i && job_ready_o;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -127,7 +146,7 @@ module mcadsw_cost_agg #(
       dmax_q  <= '0;
       grp_q   <= '0;
       last_col_q <= '0;
-      slot_q  <= 1'b0;
+      slot_q  <= '0;
     end else if (accept) begin
       last_col_q <= job_last_col_i;
       slot_q  <= job_wslot_i;
@@ -140,6 +159,14 @@ module mcadsw_cost_agg #(
     end else if (busy_q) begin
       if (issue_last) begin
         busy_q <= 1'b0;
+      end else if (GORDER) begin
+        // Group outer: the row's steps for group g, then g + 1.
+        if (d_q == dlast_q) begin
+          d_q   <= '0;
+          grp_q <= grp_q + GB'(1);
+        end else begin
+          d_q <= d_q + DB'(P);
+        end
       end else if (grp_q == GB'(GROUPS - 1)) begin
         grp_q <= '0;
         d_q   <= d_q + DB'(P);
@@ -166,7 +193,7 @@ module mcadsw_cost_agg #(
   logic [DB-1:0] v1_d_q, v2_d_q;
   logic [GB-1:0] v1_grp_q, v2_grp_q;
   logic [CLB-1:0] v1_lcol_q, v2_lcol_q;  // last in-image Ev column of the block
-  logic          v1_slot_q, v2_slot_q, h0_slot_q, h1_slot_q;
+  logic [SLB-1:0] v1_slot_q, v2_slot_q, h0_slot_q, h1_slot_q;
   logic [P-1:0]  v1_lanes_q, v2_lanes_q, h0_lanes_q, h1_lanes_q, h2_lanes_q, h3_lanes_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -187,7 +214,7 @@ module mcadsw_cost_agg #(
   // The tags of v1 reach v2 with the vertical sums: one cycle, or VLAT = 3 on the
   // FPGA target (mcadsw_vert_agg's latency: inputs and products registered first).
   localparam int VLAT = (mcadsw_pkg::FPGA != 0) ? 3 : 1;
-  localparam int VTW  = 3 + RB + DB + GB + CLB + 1 + P;
+  localparam int VTW  = 3 + RB + DB + GB + CLB + SLB + P;
   logic [VTW-1:0] v1t, v1x;
   logic           vx_busy;            // tags on their way from v1 to v2
   assign v1t = {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
@@ -228,11 +255,163 @@ module mcadsw_cost_agg #(
   end
   assign ev_valid = ev_valid_p[0];
 
+  // ---- Into the ping-pong buffer: from the vertical side, or the reader -------
+  // pw_*: a ping-pong write (LANES costs of each copy) with its tags, in the
+  // horizontal side's order: d ascending, groups 0 .. GROUPS-1 in consecutive cycles.
+  logic          pw_valid, pw_first, pw_last;
+  logic [RB-1:0] pw_row;
+  logic [DB-1:0] pw_d;
+  logic [GB-1:0] pw_grp;
+  logic [CLB-1:0] pw_lcol;
+  logic [SLB-1:0] pw_slot;
+  logic [P-1:0]  pw_lanes;
+  logic [P*LANES*VB-1:0] pw_data;
+  logic          tr_busy;   // rows in the transposition buffer or being read from it
+
+  if (GORDER) begin : g_transpose
+    // Transposition buffer, one block RAM a copy: word (slot, step, group) holds the
+    // LANES costs of that group at disparity step * P + p. Per slot, what the reader
+    // needs of its row (written when the row's job is accepted).
+    localparam int SMAX = DMAX / P;                    // steps a row at most
+    localparam int SB   = (SMAX > 1) ? $clog2(SMAX) : 1;
+    localparam int TAB  = SLB + SB + GB;               // {slot, step, group}
+    localparam int TW   = LANES * VB;
+    localparam int TN   = NSLOT << (SB + GB);
+    function automatic logic [TAB-1:0] taddr(input logic [SLB-1:0] sl, input logic [DB-1:0] d,
+                                             input logic [GB-1:0] g);
+      taddr = {sl, SB'(32'(d) / P), g};
+    endfunction
+
+    logic [NSLOT*RB-1:0]  info_row_q;
+    logic [NSLOT*CLB-1:0] info_lcol_q;
+    logic [NSLOT*DB-1:0]  info_dlast_q, info_dmax_q;
+    logic [NSLOT-1:0]     full_q;      // the slot's row is written, not yet read
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        {info_row_q, info_lcol_q, info_dlast_q, info_dmax_q} <= '0;
+      end else if (accept) begin
+        for (int sl = 0; sl < NSLOT; sl++)
+          if (job_wslot_i == SLB'(sl)) begin
+            info_row_q[sl*RB +: RB]    <= job_row_i;
+            info_lcol_q[sl*CLB +: CLB] <= job_last_col_i;
+            info_dlast_q[sl*DB +: DB]  <= DB'(job_disp_i - NB'(1)) & ~(DB'(P - 1));
+            info_dmax_q[sl*DB +: DB]   <= DB'(job_disp_i - NB'(1));
+          end
+      end
+    end
+
+    // Reader: the rows in the order of their jobs (slots in turn), each once its
+    // last word is written: d ascending, groups in order, a word a cycle.
+    logic           rbusy_q;
+    logic [SLB-1:0] rslot_q, rnext;   // slot read (the next one to read while idle)
+    logic [DB-1:0]  rd_q;
+    logic [GB-1:0]  rg_q;
+    logic [DB-1:0]  r_dlast, r_dmax;
+    logic           r_last, r_go, row_written;
+    assign r_dlast = info_dlast_q[rslot_q*DB +: DB];
+    assign r_dmax  = info_dmax_q[rslot_q*DB +: DB];
+    assign r_last  = rbusy_q && rd_q == r_dlast && rg_q == GB'(GROUPS - 1);
+    // The next row starts in the cycle after the last read of the current one.
+    assign rnext   = !rbusy_q ? rslot_q : (rslot_q == SLB'(NSLOT - 1)) ? '0 : rslot_q + SLB'(1);
+    assign r_go    = (!rbusy_q || r_last) && full_q[rnext];
+    // The row's last word: its last group at its last step.
+    assign row_written = v2_valid_q && v2_last_q && v2_grp_q == GB'(GROUPS - 1);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        rbusy_q <= 1'b0;
+        rslot_q <= '0;
+        rd_q    <= '0;
+        rg_q    <= '0;
+        full_q  <= '0;
+      end else begin
+        for (int sl = 0; sl < NSLOT; sl++) begin
+          if (row_written && v2_slot_q == SLB'(sl)) full_q[sl] <= 1'b1;
+          else if (r_go && rnext == SLB'(sl)) full_q[sl] <= 1'b0;
+        end
+        if (r_go) begin
+          rbusy_q <= 1'b1;
+          rslot_q <= rnext;
+          rd_q    <= '0;
+          rg_q    <= '0;
+        end else if (r_last) begin
+          rbusy_q <= 1'b0;
+          rslot_q <= rnext;
+        end else if (rbusy_q) begin
+          if (rg_q == GB'(GROUPS - 1)) begin
+            rg_q <= '0;
+            rd_q <= rd_q + DB'(P);
+          end else begin
+            rg_q <= rg_q + GB'(1);
+          end
+        end
+      end
+    end
+
+    // The read's tags, registered with the RAM's data.
+    logic [P-1:0] r_lanes;
+    assign r_lanes[0] = 1'b1;
+    for (genvar p = 1; p < P; p++) begin : g_rlanes
+      assign r_lanes[p] = DB'(p) <= r_dmax - rd_q;
+    end
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        {pw_valid, pw_first, pw_last, pw_row, pw_d, pw_grp, pw_lcol, pw_slot, pw_lanes} <= '0;
+      end else begin
+        {pw_valid, pw_first, pw_last, pw_row, pw_d, pw_grp, pw_lcol, pw_slot, pw_lanes} <=
+            {rbusy_q, rd_q == '0, rd_q == r_dlast, info_row_q[rslot_q*RB +: RB], rd_q, rg_q,
+             info_lcol_q[rslot_q*CLB +: CLB], rslot_q, r_lanes};
+      end
+    end
+
+    logic [TAB-1:0] waddr, raddr;
+    assign waddr = taddr(v2_slot_q, v2_d_q, v2_grp_q);
+    assign raddr = taddr(rslot_q, rd_q, rg_q);
+    for (genvar p = 0; p < P; p++) begin : g_tmem
+      (* ram_style = "block", no_rw_check *) logic [TW-1:0] mem_q [TN];
+      logic [TW-1:0] rdata_q;
+      always_ff @(posedge clk_i) begin
+        if (ev_valid && v2_valid_q) mem_q[waddr] <= ev[p*TW +: TW];
+        if (rbusy_q) rdata_q <= mem_q[raddr];
+      end
+      assign pw_data[p*TW +: TW] = rdata_q;
+    end
+
+    assign tr_busy = |full_q || rbusy_q || pw_valid;
+    // A job waits while its slot's row is still to be read (its record and words
+    // are the reader's). In the engine the weight generator hands a slot out only
+    // after the row's last horizontal read, later still, so it never waits there.
+    assign tr_slot_free = !full_q[job_wslot_i] && !(rbusy_q && rslot_q == job_wslot_i);
+
+    // The weight generator hands out its slots in turn, which is the order the
+    // reader takes them in; and a row's words are written in a slot the reader is
+    // not reading (the slot comes back to the weight generator only after the
+    // reader's last read): no read meets the write of its word (no_rw_check).
+    logic [SLB-1:0] jslot_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) jslot_q <= '0;
+      else if (accept) jslot_q <= (jslot_q == SLB'(NSLOT - 1)) ? '0 : jslot_q + SLB'(1);
+    end
+    // The row's tags come from the slot's record, not from the vertical side.
+    logic t_unused;
+    assign t_unused = ^{v2_first_q, v2_row_q, v2_lcol_q, v2_lanes_q, r_dmax};
+    `MCADSW_ASSERT(JobSlotsInTurn, !(accept && job_wslot_i != jslot_q))
+    `MCADSW_ASSERT(NoWriteOfSlotRead, !(ev_valid && v2_valid_q && rbusy_q && v2_slot_q == rslot_q))
+    `MCADSW_ASSERT(RowReadOnce, !(row_written && full_q[v2_slot_q]))
+  end else begin : g_direct
+    // ASIC target: the vertical side writes the ping-pong buffer itself.
+    assign {pw_valid, pw_first, pw_last, pw_row, pw_d, pw_grp, pw_lcol, pw_slot, pw_lanes} =
+        {ev_valid && v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q,
+         v2_slot_q, v2_lanes_q};
+    assign pw_data = ev;
+    assign tr_busy = 1'b0;
+    assign tr_slot_free = 1'b1;
+  end
+
   // ---- Ping-pong buffer (Fig. 13) --------------------------------------------
   logic wbank_q;       // bank the vertical side writes
   logic bank_full;     // the last group of a disparity is written this cycle
 
-  assign bank_full = v2_valid_q && v2_grp_q == GB'(GROUPS - 1);
+  assign bank_full = pw_valid && pw_grp == GB'(GROUPS - 1);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) wbank_q <= 1'b0;
@@ -254,11 +433,11 @@ module mcadsw_cost_agg #(
       .COLS(GROUPS*LANES), .LANES(LANES), .HAGG(HAGG), .WINDOW(WINDOW), .VB(VB)
     ) u_pingpong (
       .clk_i, .rst_ni,
-      .wr_en_i   (ev_valid && v2_valid_q),
+      .wr_en_i   (pw_valid),
       .wr_bank_i (wbank_q),
-      .wr_grp_i  (v2_grp_q),
-      .wr_data_i (ev[p*LANES*VB +: LANES*VB]),
-      .wr_last_i (v2_lcol_q),
+      .wr_grp_i  (pw_grp),
+      .wr_data_i (pw_data[p*LANES*VB +: LANES*VB]),
+      .wr_last_i (pw_lcol),
       .rd_en_i   (h1_valid_q),
       .rd_bank_i (h1_bank_q),
       .rd_grp_i  (h1_grp_q),
@@ -273,8 +452,8 @@ module mcadsw_cost_agg #(
        h0_slot_q, h0_lanes_q} <= '0;
     end else if (bank_full) begin
       {h0_valid_q, h0_first_q, h0_last_q, h0_bank_q, h0_row_q, h0_d_q, h0_grp_q,
-       h0_slot_q, h0_lanes_q} <= {1'b1, v2_first_q, v2_last_q, wbank_q, v2_row_q, v2_d_q, GB'(0),
-                                  v2_slot_q, v2_lanes_q};
+       h0_slot_q, h0_lanes_q} <= {1'b1, pw_first, pw_last, wbank_q, pw_row, pw_d, GB'(0),
+                                  pw_slot, pw_lanes};
     end else if (h0_valid_q) begin
       h0_valid_q <= h0_grp_q != GB'(GROUPS - 1);
       h0_grp_q   <= h0_grp_q + GB'(1);
@@ -367,8 +546,9 @@ module mcadsw_cost_agg #(
   end
   assign disp_row_o = disp_row_q;
 
-  assign busy_o = busy_q || v1_valid_q || vx_busy || v2_valid_q || h0_valid_q || h1_valid_q ||
-                  h2_valid_q || h3_valid_q || disp_valid_o;
+  assign busy_o = busy_q || v1_valid_q || vx_busy || v2_valid_q || tr_busy || h0_valid_q ||
+                  h1_valid_q || h2_valid_q || h3_valid_q || disp_valid_o;
+  assign vbusy_o = GORDER ? (busy_q || v1_valid_q || vx_busy || v2_valid_q) : busy_o;
   // The sub-pixel stages follow the disparities by two cycles.
   logic sub_d1_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -384,7 +564,7 @@ module mcadsw_cost_agg #(
   // word from before it), and a bank is handed over only when the horizontal side
   // has finished the previous one.
   `MCADSW_ASSERT(EvWithItsTags, ev_valid == v2_valid_q)
-  `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(ev_valid && v2_valid_q && h0_valid_q && wbank_q == h0_bank_q))
+  `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(pw_valid && h0_valid_q && wbank_q == h0_bank_q))
   `MCADSW_ASSERT(BankHandedOverWhenRead, !(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
 
   // The ping-pong buffer clamps at the border as it writes, so it takes a bank's
@@ -392,17 +572,17 @@ module mcadsw_cost_agg #(
   // so too, in consecutive cycles. A write or read of group g > 0 follows that of g - 1.
 `ifdef MCADSW_CHECKS
   // verilator coverage_off
-  logic          v2_was_valid_q, h1_was_valid_q;
-  logic [GB-1:0] v2_was_grp_q, h1_was_grp_q;
+  logic          pw_was_valid_q, h1_was_valid_q;
+  logic [GB-1:0] pw_was_grp_q, h1_was_grp_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) {v2_was_valid_q, v2_was_grp_q, h1_was_valid_q, h1_was_grp_q} <= '0;
-    else {v2_was_valid_q, v2_was_grp_q, h1_was_valid_q, h1_was_grp_q} <=
-        {v2_valid_q, v2_grp_q, h1_valid_q, h1_grp_q};
+    if (!rst_ni) {pw_was_valid_q, pw_was_grp_q, h1_was_valid_q, h1_was_grp_q} <= '0;
+    else {pw_was_valid_q, pw_was_grp_q, h1_was_valid_q, h1_was_grp_q} <=
+        {pw_valid, pw_grp, h1_valid_q, h1_grp_q};
   end
   // verilator coverage_on
 `endif
-  `MCADSW_ASSERT(WriteGroupsInOrder, !(v2_valid_q && v2_grp_q != '0 &&
-                                       !(v2_was_valid_q && v2_was_grp_q + GB'(1) == v2_grp_q)))
+  `MCADSW_ASSERT(WriteGroupsInOrder, !(pw_valid && pw_grp != '0 &&
+                                       !(pw_was_valid_q && pw_was_grp_q + GB'(1) == pw_grp)))
   `MCADSW_ASSERT(ReadGroupsInOrder, !(h1_valid_q && h1_grp_q != '0 &&
                                       !(h1_was_valid_q && h1_was_grp_q + GB'(1) == h1_grp_q)))
 
@@ -419,11 +599,11 @@ module mcadsw_cost_agg #(
     if (!rst_ni) begin
       own_q     <= '0;
       own_set_q <= '0;
-    end else if (ev_valid && v2_valid_q) begin
+    end else if (pw_valid) begin
       for (int b = 0; b < 2; b++)
         for (int g = 0; g < GROUPS; g++)
-          if (wbank_q == b[0] && v2_grp_q == GB'(g)) begin
-            own_q[(b*GROUPS + g)*TAGB +: TAGB] <= {v2_row_q, v2_d_q};
+          if (wbank_q == b[0] && pw_grp == GB'(g)) begin
+            own_q[(b*GROUPS + g)*TAGB +: TAGB] <= {pw_row, pw_d};
             own_set_q[b*GROUPS + g] <= 1'b1;
           end
     end

@@ -287,7 +287,9 @@ module mcadsw_engine #(
   logic               prep_done;
   logic [4:0]         prep_rows;
   logic               prep_cont;      // the block continues its left neighbour
-  logic               wrow_ready, wrow_slot;
+  localparam int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS);
+  logic               wrow_ready;
+  logic [SLB-1:0]     wrow_slot;
   logic               agg_active;     // census rings: the previous block still aggregates
   logic               job_valid, job_ready, agg_busy;
   logic [4:0]         job_row;
@@ -561,7 +563,8 @@ module mcadsw_engine #(
   logic                       vrd_en, hrd_en;
   logic [4:0]                 vrd_row, hrd_row_unused;
   logic [2:0]                 vrd_grp, hrd_grp;
-  logic                       vrd_slot, hrd_slot, hrd_rel;
+  logic [SLB-1:0]             vrd_slot, hrd_slot;
+  logic                       hrd_rel;
   logic [DB-1:0]              vrd_d;
   logic [LANES*WINDOW*CB-1:0]  cen_l;
   logic [RLANES*WINDOW*CB-1:0] cen_r;   // see mcadsw_cost_agg: lane j at column - d + j - (PAR-1)
@@ -615,11 +618,13 @@ module mcadsw_engine #(
   logic [HAGG*DB-1:0]   disp;
   logic                 unused_status;
   // Sub-pixel values (docs/algorithm.md 12.6), two cycles after the disparities.
-  // They go to the depth FIFO in sub-pixel mode. The scheduler still follows
-  // busy_o: the WTA's last two stages do not use the census and weight banks,
-  // and the depth FIFO holds a row until its last values have arrived.
+  // They go to the depth FIFO in sub-pixel mode. The scheduler follows vbusy_o
+  // (busy_o on the ASIC target; on the FPGA target the vertical side's reads, the
+  // only ones of the census banks): the WTA's last two stages do not use the
+  // census and weight banks, and the depth FIFO holds a row until its last values
+  // have arrived.
   localparam int VB = DB + 4;
-  logic                 sub_valid, sub_busy_unused;
+  logic                 sub_valid, sub_busy_unused, agg_busy_unused;
   logic [4:0]           sub_row_unused;
   logic [2:0]           sub_grp;
   logic [HAGG*VB-1:0]   sub;
@@ -641,13 +646,13 @@ module mcadsw_engine #(
     .hrd_en_o (hrd_en), .hrd_row_o (hrd_row_unused), .hrd_grp_o (hrd_grp),
     .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
-    .disp_o (disp), .busy_o (agg_busy),
+    .disp_o (disp), .busy_o (agg_busy_unused), .vbusy_o (agg_busy),
     .sub_valid_o (sub_valid), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp),
     .sub_o (sub), .sub_d_o (sub_d), .sub_busy_o (sub_busy_unused)
   );
   // Status outputs of the blocks the engine does not need.
   assign unused_status = ^{lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
-                        hrd_row_unused, sub_busy_unused, sub_row_unused,
+                        hrd_row_unused, sub_busy_unused, sub_row_unused, agg_busy_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy,
                         rchk_busy_unused, rect_busy_unused, mark_busy_unused};

@@ -3,10 +3,12 @@
 
 // Weight generator (paper Sec. V-C, Fig. 11): the Y, U, V input buffer of the
 // left view, a kernel of WINDOW Manhattan colour-distance units and weight-table
-// lookups, and the vertical and horizontal weight buffers, which hold two
+// lookups, and the vertical and horizontal weight buffers, which hold NSLOT
 // aggregation rows: the kernel makes row r + 1 while the cost aggregator works
 // on row r (paper Sec. V-F: the aggregator starts once a row's weights are
-// ready). docs/blocks/weight_gen.md and docs/budget.md 3.
+// ready). NSLOT is 2, or 3 on the FPGA target, whose cost aggregator reads a row's
+// horizontal weights a row after its vertical ones (mcadsw_cost_agg).
+// docs/blocks/weight_gen.md and docs/budget.md 3.
 //
 // Loader. Input: the colour of the ROWS x COLS read window (48 x 48) in strips
 // of 4 columns, strip by strip, and Y, U, V of each strip in turn: for strip s
@@ -73,6 +75,8 @@ module mcadsw_weight_gen #(
   parameter int DCB    = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
   parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),      // the FPGA target's buffer shapes
+  parameter int NSLOT  = mcadsw_pkg::WEIGHT_SLOTS,  // row slots (2; FPGA target 3)
+  parameter int SLB    = $clog2(NSLOT),
   parameter int WPR    = COLS / 4 + 1,              // strips a window (offset 0..3)
   parameter int NEW    = (BLOCK + 3) / 4,           // most strips a continuing block adds (5)
   parameter int RS     = WPR + NEW,                 // ring strips (18)
@@ -100,16 +104,16 @@ module mcadsw_weight_gen #(
   output logic                       busy_o,
   // Row slots
   output logic                       row_ready_o,
-  output logic                       rd_slot_o,
+  output logic [SLB-1:0]             rd_slot_o,
   input  logic                       row_take_i,
   // Vertical weight buffer read: LANES columns of group vrd_grp_i of a slot
   input  logic                       vrd_en_i,
-  input  logic                       vrd_slot_i,
+  input  logic [SLB-1:0]             vrd_slot_i,
   input  logic [GB-1:0]              vrd_grp_i,
   output logic [LANES*WINDOW*WB-1:0] wv_o,          // lane l, tap k at (l*WINDOW + k)*WB
   // Horizontal weight buffer read: HAGG output pixels of group hrd_grp_i of a slot
   input  logic                       hrd_en_i,
-  input  logic                       hrd_slot_i,
+  input  logic [SLB-1:0]             hrd_slot_i,
   input  logic [GB-1:0]              hrd_grp_i,
   input  logic                       hrd_rel_i,     // this read is the slot's last
   output logic [HAGG*WINDOW*WB-1:0]  wh_o           // pixel m, tap j at (m*WINDOW + j)*WB
@@ -122,7 +126,7 @@ module mcadsw_weight_gen #(
   if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
       COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
       HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4 ||
-      ROWS - WINDOW > WINDOW) begin : g_bad_param
+      ROWS - WINDOW > WINDOW || NSLOT < 2) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -180,13 +184,19 @@ module mcadsw_weight_gen #(
   logic [XB-1:0]  c_q;             // column (vertical) or output pixel (horizontal)
   logic [GB-1:0]  hg_q;            // horizontal: word (group of HAGG pixels) ...
   logic [1:0]     hm_q;            // ... and pixel in it
-  logic           wslot_q;         // slot the kernel fills
-  logic [1:0]     occ_q;           // slot holds a row the aggregator has not released
-  logic [1:0]     rdy_q;           // slot holds a complete row not yet handed out
-  logic           rslot_q;         // oldest row not handed out
+  logic [SLB-1:0] wslot_q;         // slot the kernel fills
+  logic [NSLOT-1:0] occ_q;         // slot holds a row the aggregator has not released
+  logic [NSLOT-1:0] rdy_q;         // slot holds a complete row not yet handed out
+  logic [SLB-1:0] rslot_q;         // oldest row not handed out
   logic           k_done_q;        // the kernel's last write of a row (stage 2)
-  logic           k_slot2_q;
-  logic           w_done, w_slot;  // the last write of a row done (stage 2, FPGA: 3), its slot
+  logic [SLB-1:0] k_slot2_q;
+  logic           w_done;          // the last write of a row done (stage 2, FPGA: 3) ...
+  logic [SLB-1:0] w_slot;          // ... and its slot
+
+  // The slot after s: slots are used in turn.
+  function automatic logic [SLB-1:0] next_slot(input logic [SLB-1:0] s);
+    next_slot = (s == SLB'(NSLOT - 1)) ? '0 : s + SLB'(1);
+  endfunction
 
   assign gen_busy = state_q != IDLE;
 
@@ -209,10 +219,10 @@ module mcadsw_weight_gen #(
       c_q       <= '0;
       hg_q      <= '0;
       hm_q      <= '0;
-      wslot_q   <= 1'b0;
+      wslot_q   <= '0;
       occ_q     <= '0;
       rdy_q     <= '0;
-      rslot_q   <= 1'b0;
+      rslot_q   <= '0;
     end else begin
       done_o <= 1'b0;
       // Loader
@@ -263,7 +273,7 @@ module mcadsw_weight_gen #(
             hm_q <= hm_q + 2'd1;
           end
           if (c_q == XB'(BLOCK - 1)) begin
-            wslot_q <= !wslot_q;
+            wslot_q <= next_slot(wslot_q);
             if (r_q == g_rows_q - RB'(1)) begin
               state_q <= IDLE;
             end else begin
@@ -275,13 +285,13 @@ module mcadsw_weight_gen #(
         default: state_q <= IDLE;
       endcase
       // Slots: taken when the kernel starts a row, freed by the aggregator's last read.
-      for (int s = 0; s < 2; s++) begin
-        if (state_q == ROW && !occ_q[wslot_q] && wslot_q == 1'(s)) occ_q[s] <= 1'b1;
-        else if (hrd_en_i && hrd_rel_i && hrd_slot_i == 1'(s)) occ_q[s] <= 1'b0;
-        if (w_done && w_slot == 1'(s)) rdy_q[s] <= 1'b1;
-        else if (row_take_i && rslot_q == 1'(s)) rdy_q[s] <= 1'b0;
+      for (int s = 0; s < NSLOT; s++) begin
+        if (state_q == ROW && !occ_q[wslot_q] && wslot_q == SLB'(s)) occ_q[s] <= 1'b1;
+        else if (hrd_en_i && hrd_rel_i && hrd_slot_i == SLB'(s)) occ_q[s] <= 1'b0;
+        if (w_done && w_slot == SLB'(s)) rdy_q[s] <= 1'b1;
+        else if (row_take_i && rslot_q == SLB'(s)) rdy_q[s] <= 1'b0;
       end
-      if (row_take_i) rslot_q <= !rslot_q;
+      if (row_take_i) rslot_q <= next_slot(rslot_q);
     end
   end
 
@@ -389,7 +399,7 @@ module mcadsw_weight_gen #(
   logic           s1_q;                      // stage 1 holds a vertical column
   logic [RB-1:0]  s1_r_q;
   logic [XB-1:0]  s1_c_q;
-  logic           s1_slot_q;
+  logic [SLB-1:0] s1_slot_q;
 
   // Horizontal row buffer (Fig. 11): the centre row of the current row, COLS
   // pixels in flip-flops, written by the vertical pass, read by the horizontal one.
@@ -422,7 +432,7 @@ module mcadsw_weight_gen #(
   endfunction
 
   logic           k_vert_q, k_horz_q;        // stage 2 writes a vertical / horizontal entry
-  logic           k_slot_q;
+  logic [SLB-1:0] k_slot_q;
   logic [GB-1:0]  k_grp_q;                   // entry: word and position in it
   logic [2:0]     k_pos_q;
 
@@ -432,14 +442,14 @@ module mcadsw_weight_gen #(
       s1_sel_q  <= '0;
       s1_r_q    <= '0;
       s1_c_q    <= '0;
-      s1_slot_q <= 1'b0;
+      s1_slot_q <= '0;
       k_vert_q  <= 1'b0;
       k_horz_q  <= 1'b0;
-      k_slot_q  <= 1'b0;
+      k_slot_q  <= '0;
       k_grp_q   <= '0;
       k_pos_q   <= '0;
       k_done_q  <= 1'b0;
-      k_slot2_q <= 1'b0;
+      k_slot2_q <= '0;
     end else begin
       s1_q      <= state_q == VERT;
       s1_sel_q  <= rcol[1:0];
@@ -470,15 +480,15 @@ module mcadsw_weight_gen #(
         if (s1_c_q == XB'(c)) hrow_q[c*PW +: PW] <= centre_pixel(column, s1_r_q);
   end
 
-  // ---- Weight buffers: two row slots, one word per aggregator read -----------------
+  // ---- Weight buffers: NSLOT row slots, one word per aggregator read ---------------
   // Vertical: word (slot, group of LANES columns); horizontal: word (slot, group
   // of HAGG pixels). Stage 2 writes one entry of a word a cycle. ASIC target: one
   // RAM each, an entry written into its word's position; FPGA target: one RAM an
   // entry position (LANES and HAGG of them, an entry a word, no partial writes),
   // all read at the same address.
   localparam int VENTRY = WINDOW * WB;       // one vertical entry
-  localparam int VAB = $clog2(2 * VGRP);
-  localparam int HAB = $clog2(2 * HGRP);
+  localparam int VAB = $clog2(NSLOT * VGRP);
+  localparam int HAB = $clog2(NSLOT * HGRP);
   logic [VAB-1:0] k_vaddr;
   logic [HAB-1:0] k_haddr;
   assign k_vaddr = VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q));
@@ -535,7 +545,8 @@ module mcadsw_weight_gen #(
     // written; the row is ready a cycle later than on the ASIC target.
     logic [ENTRY-1:0]  k3_codes_q;
     logic [RB-1:0]     k3_at_q;
-    logic              k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q;
+    logic              k3_vert_q, k3_horz_q, k3_done_q;
+    logic [SLB-1:0]    k3_slot_q;
     logic [2:0]        k3_pos_q;
     logic [VAB-1:0]    k3_vaddr_q;
     logic [HAB-1:0]    k3_haddr_q;
@@ -566,14 +577,14 @@ module mcadsw_weight_gen #(
     assign k_ventry = k3_codes_q;
     assign k_hentry = unfold(k3_codes_q, k3_at_q);
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
-      (* ram_style = "block", no_rw_check *) logic [VENTRY-1:0] mem_q [2*VGRP];
+      (* ram_style = "block", no_rw_check *) logic [VENTRY-1:0] mem_q [NSLOT*VGRP];
       always_ff @(posedge clk_i) begin
         if (k3_vert_q && k3_pos_q == 3'(e)) mem_q[k3_vaddr_q] <= k_ventry;
         if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[vrd_addr];
       end
     end
     for (genvar e = 0; e < HAGG; e++) begin : g_hmem
-      (* ram_style = "block", no_rw_check *) logic [ENTRY-1:0] mem_q [2*HGRP];
+      (* ram_style = "block", no_rw_check *) logic [ENTRY-1:0] mem_q [NSLOT*HGRP];
       always_ff @(posedge clk_i) begin
         if (k3_horz_q && k3_pos_q == 3'(e)) mem_q[k3_haddr_q] <= k_hentry;
         if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[hrd_addr];
@@ -613,8 +624,8 @@ module mcadsw_weight_gen #(
         weight_codes[k*WB +: WB] = code_of(cdist(win[k*PW +: PW], win[RADIUS*PW +: PW]), thr);
     endfunction
 
-    logic [LANES*VENTRY-1:0] vbuf_q [2*VGRP];
-    logic [HAGG*ENTRY-1:0]   hbuf_q [2*HGRP];
+    logic [LANES*VENTRY-1:0] vbuf_q [NSLOT*VGRP];
+    logic [HAGG*ENTRY-1:0]   hbuf_q [NSLOT*HGRP];
     logic [WPW-1:0] k_win_q;
     always_ff @(posedge clk_i) begin
       if (s1_q) k_win_q <= vwindow(column, s1_r_q);

@@ -360,6 +360,7 @@ int main(int argc, char** argv) {
   p("HAGG", kHorzAggregators, "horizontal aggregators");
   p("BLOCK_COLS", kBlockCols, "Ev columns per block row (31x48 window)");
   p("GROUPS", kGroups, "cycles per disparity");
+  p("WEIGHT_SLOTS", fpga ? 3 : 2, "weight-buffer row slots (FPGA: the horizontal side a row behind)");
   p("MAX_WIDTH", kMaxWidth, "largest image width");
   p("MAX_HEIGHT", kMaxHeight, "largest image height");
   p("LR_T_MAX", kLrToleranceMax, "largest LR check tolerance T");

@@ -4,7 +4,8 @@
 // Bench wrapper of mcadsw_cost_agg for tests/rtl/cost_agg_test.cpp: the block's
 // ports, plus its vertical and final costs with their tags read by hierarchical
 // reference (bench-only taps stay out of the synthesizable block). Copy p at
-// p LANES VB and p HAGG FB holds disparity d + p; lanes >= D are garbage.
+// p LANES VB and p HAGG FB holds disparity d + p; lanes >= D are garbage. The
+// weight slots of the jobs are the weight generator's: in turn, from slot 0.
 `default_nettype none
 
 module cost_agg_tb #(
@@ -15,7 +16,8 @@ module cost_agg_tb #(
   parameter int NB  = $clog2(mcadsw_pkg::DMAX + 1),
   parameter int CLB = $clog2(mcadsw_pkg::GROUPS * mcadsw_pkg::LANES),
   parameter int LW  = mcadsw_pkg::LANES * mcadsw_pkg::WINDOW,   // codes / weights of LANES columns
-  parameter int HW  = mcadsw_pkg::HAGG * mcadsw_pkg::WINDOW
+  parameter int HW  = mcadsw_pkg::HAGG * mcadsw_pkg::WINDOW,
+  parameter int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS)
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,
@@ -24,19 +26,18 @@ module cost_agg_tb #(
   input  logic [RB-1:0]                  job_row_i,
   input  logic [NB-1:0]                  job_disp_i,
   input  logic [CLB-1:0]                 job_last_col_i,
-  input  logic                           job_wslot_i,
   output logic                           vrd_en_o,
   output logic [RB-1:0]                  vrd_row_o,
   output logic [GB-1:0]                  vrd_grp_o,
   output logic [DB-1:0]                  vrd_d_o,
-  output logic                           vrd_slot_o,
+  output logic [SLB-1:0]                 vrd_slot_o,
   input  logic [LW*mcadsw_pkg::CENSUS_BITS-1:0] cen_l_i,
   input  logic [(LW + (P - 1) * mcadsw_pkg::WINDOW)*mcadsw_pkg::CENSUS_BITS-1:0] cen_r_i,
   input  logic [LW*mcadsw_pkg::WEIGHT_CODE_BITS-1:0] wv_i,
   output logic                           hrd_en_o,
   output logic [RB-1:0]                  hrd_row_o,
   output logic [GB-1:0]                  hrd_grp_o,
-  output logic                           hrd_slot_o,
+  output logic [SLB-1:0]                 hrd_slot_o,
   output logic                           hrd_rel_o,
   input  logic [HW*mcadsw_pkg::WEIGHT_CODE_BITS-1:0] wh_i,
   output logic                           disp_valid_o,
@@ -62,7 +63,14 @@ module cost_agg_tb #(
   output logic [GB-1:0]                  mon_fc_grp_o,
   output logic [P*mcadsw_pkg::HAGG*mcadsw_pkg::FCOST_BITS-1:0] mon_fc_o
 );
-  mcadsw_cost_agg #(.P(P)) u_dut (.*);
+  logic [SLB-1:0] job_wslot_i;
+  logic           vbusy_unused;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) job_wslot_i <= '0;
+    else if (job_valid_i && job_ready_o)
+      job_wslot_i <= (job_wslot_i == SLB'(mcadsw_pkg::WEIGHT_SLOTS - 1)) ? '0 : job_wslot_i + SLB'(1);
+  end
+  mcadsw_cost_agg #(.P(P)) u_dut (.*, .vbusy_o (vbusy_unused));
 
   assign mon_ev_valid_o = u_dut.ev_valid && u_dut.v2_valid_q;
   assign mon_ev_row_o   = u_dut.v2_row_q;
