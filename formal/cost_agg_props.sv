@@ -31,6 +31,7 @@ module cost_agg_props #(
     .job_valid_i, .job_ready_o (job_ready), .job_row_i, .job_disp_i, .job_last_col_i,
     .job_wslot_i,
     .vrd_en_o (), .vrd_row_o (), .vrd_grp_o (), .vrd_d_o (), .vrd_slot_o (),
+    .lrd_en_o (), .lrd_col_o (), .rrd_en_o (), .rrd_col_o (),
     .cen_l_i ('0), .cen_r_i ('0), .wv_i ('0),
     .hrd_en_o (), .hrd_row_o (), .hrd_grp_o (), .hrd_slot_o (), .hrd_rel_o (), .wh_i ('0),
     .disp_valid_o (), .disp_row_o (), .disp_grp_o (), .disp_o (), .busy_o (), .vbusy_o (),

@@ -54,16 +54,13 @@
 // a block by the bank the scheduler gave it (rd_bank_i, two blocks in flight): the
 // ring position of each bank's window is kept.
 //
-// FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the census buffer is
-// RL copies of the ring, one a lane, each RING column words deep (block RAM:
-// deep and at most 288 bits wide, no sub-banks); a column is written into every
-// copy, lane l reads ring column rq + l of its own copy, so no lane multiplexer
-// follows the RAMs. A lane's WINDOW codes are the window's rows in folded order
-// instead of a row shifter: tap k is column row k + WINDOW when k < rd_row_i,
-// row k otherwise (window row k - rd_row_i, or k + WINDOW - rd_row_i: every row of
-// the window once), a 2:1 select of the first ROWS - WINDOW taps. The weight
-// generator writes the vertical weights in the same order, and the aggregator's
-// sum does not depend on the order of its terms.
+// FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): RL read ports, each
+// a copy of the ring RING column words deep (block RAM: deep and at most 288 bits
+// wide, no sub-banks) with its own column address; a column is written into every
+// copy, and a read returns the whole column word (ROWS codes), held until the
+// port's next read. The cost aggregator, which reads the left view one column a
+// cycle (RL = 1) and the right view two (RL = 2: its lane shift register and the
+// next group's columns), keeps the lanes and selects the window's rows itself.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -71,12 +68,15 @@ module mcadsw_census #(
   parameter int COLS   = mcadsw_pkg::BLOCK_COLS,   // census positions per row
   parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,   // census rows (18 + 30)
   parameter int LANES  = mcadsw_pkg::LANES,
-  parameter int RL     = LANES,                    // census columns a read (LANES + P - 1)
-  parameter int CSUB   = 1 << $clog2(RL),          // census sub-banks (8 or 16)
+  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),     // the FPGA target's buffer shape
+  parameter int RL     = FPGA ? 1 : LANES,         // census columns a read (LANES + P - 1);
+                                                   // FPGA: read ports
+  parameter int CSUB   = 1 << $clog2(FPGA ? LANES : RL),  // census sub-banks (8 or 16)
   parameter int BLOCK  = mcadsw_pkg::BLOCK,
   parameter int WINDOW = mcadsw_pkg::WINDOW,
   parameter int CB     = mcadsw_pkg::CENSUS_BITS,
-  parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),     // the FPGA target's buffer shape
+  parameter int RPORTS = FPGA ? RL : 1,            // read addresses
+  parameter int RDW    = FPGA ? RL*ROWS*CB : RL*WINDOW*CB,  // read data
   parameter int BANKS  = 2,
   parameter int STRIPS = (COLS + 4 + 6) / 4,       // input strips (room for an offset of 3)
   parameter int LS     = 4,                        // luma ring strips (a power of 2)
@@ -107,12 +107,15 @@ module mcadsw_census #(
   input  logic [31:0]                pix_data_i,
   output logic                       done_o,      // one cycle: the bank is complete
   output logic                       busy_o,
-  // Census buffer read port (cost aggregator), data one cycle after address
-  input  logic                       rd_en_i,
+  // Census buffer read port (cost aggregator), data one cycle after address.
+  // ASIC target: RL consecutive columns from rd_col_i, lane l tap k at (l*WINDOW +
+  // k)*CB. FPGA target: port p reads column rd_col_i[p XB +: XB] when rd_en_i[p],
+  // its column word (ROWS codes, row j at j CB) at p ROWS CB.
+  input  logic [RPORTS-1:0]          rd_en_i,
   input  logic [BB-1:0]              rd_bank_i,
   input  logic [YB-1:0]              rd_row_i,    // first of WINDOW rows (ASIC target)
-  input  logic [XB-1:0]              rd_col_i,    // first of RL columns
-  output logic [RL*WINDOW*CB-1:0]    rd_data_o    // lane l, tap k at (l*WINDOW + k)*CB
+  input  logic [RPORTS*XB-1:0]       rd_col_i,
+  output logic [RDW-1:0]             rd_data_o
 );
 
   localparam int SUB    = 8;                       // luma sub-banks (columns)
@@ -128,8 +131,9 @@ module mcadsw_census #(
 
   if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
       RING % CSUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
-      LDEPTH < 2 || RL < LANES || RL > CSUB || (1 << CSB) != CSUB ||
-      RL > COLS || ROWS - WINDOW > WINDOW) begin : g_bad_param
+      LDEPTH < 2 || (!FPGA && (RL < LANES || RL > CSUB)) || (1 << CSB) != CSUB ||
+      RL > COLS || ROWS - WINDOW > WINDOW || RPORTS != (FPGA ? RL : 1) ||
+      RDW != (FPGA ? RL*ROWS*CB : RL*WINDOW*CB)) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -436,7 +440,7 @@ module mcadsw_census #(
   // ---- Census buffer and read port ----------------------------------------------------
   logic [QB-1:0] wq, rq;        // ring columns of the column written and of the first read
   assign wq = QB'(wrap(32'(cpos_q) + 32'(col_ki_q), RING));
-  assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i), RING));
+  assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i[XB-1:0]), RING));
   // ASIC target: lane l is ring column rq + l, from sub-bank (rq + l) % CSUB: a
   // CSUB:1 multiplexer whose one-hot select is decoded from the address and
   // registered with it, so no adder or decoder lies between the sub-bank words
@@ -456,37 +460,29 @@ module mcadsw_census #(
     if (!rst_ni) begin
       rd_row_q <= '0;
       lsel_q   <= '0;
-    end else if (rd_en_i) begin
+    end else if (rd_en_i[0]) begin
       rd_row_q <= rd_row_i;
       lsel_q   <= lsel;
     end
   end
 
   if (FPGA) begin : g_fpga_buf
-    // A copy of the ring a lane; lane l reads ring column rq + l (mod RING), its
-    // taps in folded order (above).
+    // A copy of the ring a port, each read at its own column.
     logic asic_unused;
-    assign asic_unused = ^lsel_q;
-    for (genvar l = 0; l < RL; l++) begin : g_lane
+    assign asic_unused = ^{lsel_q, rd_row_q, rq};
+    for (genvar p = 0; p < RL; p++) begin : g_port
       (* ram_style = "block", no_rw_check *) logic [CWB-1:0] mem_q [RING];
       logic [CWB-1:0] col_rd_q;
       logic [QB-1:0]  ra;
-      assign ra = QB'(wrap(32'(rq) + l, RING));
+      assign ra = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i[p*XB +: XB]), RING));
       always_ff @(posedge clk_i) begin
         if (col_valid_q) mem_q[wq] <= col_q;
-        if (rd_en_i) col_rd_q <= mem_q[ra];
+        if (rd_en_i[p]) col_rd_q <= mem_q[ra];
       end
       // The kernel writes ring columns no block in the aggregator reads: no read
       // meets the write of its column (no_rw_check: docs/blocks/fpga_target.md).
-      `MCADSW_ASSERT(NoReadOfColumnWritten, !(col_valid_q && rd_en_i && wq == ra))
-      for (genvar k = 0; k < WINDOW; k++) begin : g_tap
-        if (k < ROWS - WINDOW) begin : g_fold
-          assign rd_data_o[(l*WINDOW + k)*CB +: CB] =
-              (32'(rd_row_q) > k) ? col_rd_q[(k + WINDOW)*CB +: CB] : col_rd_q[k*CB +: CB];
-        end else begin : g_row
-          assign rd_data_o[(l*WINDOW + k)*CB +: CB] = col_rd_q[k*CB +: CB];
-        end
-      end
+      `MCADSW_ASSERT(NoReadOfColumnWritten, !(col_valid_q && rd_en_i[p] && wq == ra))
+      assign rd_data_o[p*CWB +: CWB] = col_rd_q;
     end
   end else begin : g_asic_buf
     logic [CSUB*CWB-1:0] csub_rd;
@@ -505,7 +501,7 @@ module mcadsw_census #(
       assign bd_unused = bd[CSB-1:0];
       assign pw = CWW'(rq[QB-1:CSB]) + CWW'(bd[CSB]);
       always_ff @(posedge clk_i) begin
-        if (rd_en_i)
+        if (rd_en_i[0])
           csub_rd[b*CWB +: CWB] <= mem_q[$clog2(CDEPTH)'(pw >= CWW'(CDEPTH) ? pw - CWW'(CDEPTH) : pw)];
       end
     end

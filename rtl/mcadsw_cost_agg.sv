@@ -14,7 +14,9 @@
 // (6 ceil(D / P) with P disparities a step, below).
 //
 // Read ports are synchronous: data arrive the cycle after the address (the
-// census and weight buffers are RAMs). Pipeline, from the issue cycle c of a
+// census and weight buffers are RAMs). ASIC target: a step reads LANES left
+// columns and LANES + P - 1 right ones at once (lrd_*, rrd_*: the first column),
+// each as the window's WINDOW rows (the census buffer selects them by vrd_row_o). Pipeline, from the issue cycle c of a
 // column group: c+1 census/weight data and Hamming + vertical sum, c+2 ping-pong
 // write; after the 6th group, c+8 bank handed to the horizontal side, c+9
 // ping-pong read (registered) and horizontal weight address, c+10 horizontal
@@ -28,7 +30,21 @@
 // group). Once a row's last word is written, a reader takes the row back out in
 // the horizontal side's order (d, then g), a word a cycle, into the same
 // ping-pong buffer, horizontal aggregators and WTA: the same sums in the same
-// order, one row later. The transposition buffer holds a row per weight slot
+// order, one row later. The census reads narrow in this order (P = 1): a group's 8
+// left columns are the same for all its steps, and right lane l at step d + 1 is
+// lane l - 1 at d. The left view is read one column a cycle (one port) into a
+// shadow register of the next group's 8 column words, copied to the lanes when the
+// group starts; the right view has two ports: port 0 reads lane 0's column each
+// step (lanes 1 .. 7 are a shift register behind it), port 1 the next group's
+// first step into a second shadow. The next row's first group is read during the
+// last group (the columns do not depend on the block row); a row 0 (a new block,
+// another census bank) reads it again. A group starts once its shadows are full:
+// at most LANES + 1 cycles after the previous group started, so it waits only when
+// D < 9, and a block's first row waits that long. Lanes hold whole column words
+// (the window's ROWS rows); each lane's WINDOW taps are selected in the census
+// buffer's folded order (tap k is row k + WINDOW when k < the block row, row k
+// otherwise) on the way into the vertical aggregator, whose inputs are registered.
+// The transposition buffer holds a row per weight slot
 // (WEIGHT_SLOTS = 3): the vertical side fills row r + 1's while the reader empties
 // row r's, and a slot is refilled only after the weight generator has taken it
 // back, which it does on the row's last horizontal read, after the reader's last.
@@ -62,7 +78,12 @@ module mcadsw_cost_agg #(
   parameter int GB     = $clog2(GROUPS),   // group index width
   parameter int NB     = $clog2(DMAX + 1), // width of D
   parameter int CLB    = $clog2(GROUPS * LANES), // Ev column index width
-  parameter int SPB    = DB + 4                  // sub-pixel value: 16 d + offset
+  parameter int SPB    = DB + 4,                 // sub-pixel value: 16 d + offset
+  parameter int CROWS  = GROUPS * LANES,         // census rows of a column (BLOCK + WINDOW - 1)
+  parameter int RXB    = $clog2(GROUPS * LANES + DMAX - 1),  // right census column index width
+  parameter int CRP    = GORDER ? 2 : 1,         // right census read ports
+  parameter int CLW    = GORDER ? CROWS*CB : LANES*WINDOW*CB,          // left census read data
+  parameter int CRW    = GORDER ? 2*CROWS*CB : (LANES+P-1)*WINDOW*CB   // right census read data
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -73,15 +94,23 @@ module mcadsw_cost_agg #(
   input  logic [NB-1:0]                 job_disp_i,   // D, 1 .. DMAX
   input  logic [CLB-1:0]                job_last_col_i,  // last Ev column inside the image
   input  logic [SLB-1:0]                job_wslot_i,  // weight-buffer row slot of the row
-  // Census buffers and vertical weight buffer (data one cycle after address)
+  // Vertical weight buffer (data one cycle after address); block row of the census reads
   output logic                          vrd_en_o,
   output logic [RB-1:0]                 vrd_row_o,
   output logic [GB-1:0]                 vrd_grp_o,    // columns LANES*grp ..
   output logic [DB-1:0]                 vrd_d_o,      // the step's first disparity
   output logic [SLB-1:0]                vrd_slot_o,   // weight row slot
-  input  logic [LANES*WINDOW*CB-1:0]    cen_l_i,
-  input  logic [(LANES+P-1)*WINDOW*CB-1:0] cen_r_i,  // right lanes, see above
   input  logic [LANES*WINDOW*WB-1:0]    wv_i,
+  // Census buffers (data one cycle after address; columns of the block's window).
+  // ASIC target: one read each, LANES (left) and LANES + P - 1 (right) consecutive
+  // columns, lane j tap k at (j WINDOW + k) CB; right lane j at column - d + j -
+  // (P - 1), see above. FPGA target: a column word (CROWS codes) a port.
+  output logic                          lrd_en_o,
+  output logic [CLB-1:0]                lrd_col_o,
+  output logic [CRP-1:0]                rrd_en_o,
+  output logic [CRP*RXB-1:0]            rrd_col_o,
+  input  logic [CLW-1:0]                cen_l_i,
+  input  logic [CRW-1:0]                cen_r_i,
   // Horizontal weight buffer (data one cycle after address)
   output logic                          hrd_en_o,
   output logic [RB-1:0]                 hrd_row_o,
@@ -111,7 +140,7 @@ module mcadsw_cost_agg #(
 
   if (GROUPS * LANES != BLOCK + WINDOW - 1 || GROUPS * HAGG != BLOCK ||
       (1 << DB) < DMAX || !(P == 1 || P == 2 || P == 4) || DMAX % P != 0 ||
-      (GORDER && NSLOT < 3)) begin : g_bad_param
+      (GORDER && (NSLOT < 3 || P != 1 || CROWS != BLOCK + WINDOW - 1))) begin : g_bad_param
     mcadsw_error_cost_agg_geometry u_error ();
   end
 
@@ -133,7 +162,10 @@ module mcadsw_cost_agg #(
   logic          accept;
 
   logic          tr_slot_free;   // the job's slot holds no row still to be read (FPGA)
-  assign issue_last  = busy_q && d_q == dlast_q && grp_q == GB'(GROUPS - 1);
+  logic          vstall;         // the group's census columns are not in yet (FPGA)
+  logic          issue;          // a step of a column group is issued
+  assign issue       = busy_q && !vstall;
+  assign issue_last  = issue && d_q == dlast_q && grp_q == GB'(GROUPS - 1);
   assign job_ready_o = (!busy_q || issue_last) && tr_slot_free;
   assign accept      = job_valid_i && job_ready_o;
 
@@ -156,7 +188,7 @@ module mcadsw_cost_agg #(
       dlast_q <= DB'(job_disp_i - NB'(1)) & ~(DB'(P - 1));
       dmax_q  <= DB'(job_disp_i - NB'(1));
       grp_q   <= '0;
-    end else if (busy_q) begin
+    end else if (issue) begin
       if (issue_last) begin
         busy_q <= 1'b0;
       end else if (GORDER) begin
@@ -176,7 +208,7 @@ module mcadsw_cost_agg #(
     end
   end
 
-  assign vrd_en_o  = busy_q;
+  assign vrd_en_o  = issue;
   assign vrd_row_o = row_q;
   assign vrd_grp_o = grp_q;
   assign vrd_d_o   = d_q;
@@ -204,7 +236,7 @@ module mcadsw_cost_agg #(
        v2_lanes_q} <= '0;
     end else begin
       {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
-       v1_lanes_q} <= {busy_q, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q,
+       v1_lanes_q} <= {issue, d_q == '0, d_q == dlast_q, row_q, d_q, grp_q, last_col_q, slot_q,
                        lanes};
       {v2_valid_q, v2_first_q, v2_last_q, v2_row_q, v2_d_q, v2_grp_q, v2_lcol_q, v2_slot_q,
        v2_lanes_q} <= v1x;
@@ -235,6 +267,113 @@ module mcadsw_cost_agg #(
     assign vx_busy = 1'b0;
   end
 
+  // ---- Census lanes ------------------------------------------------------------
+  // lanes_l, lanes_r: the vertical aggregator's census inputs in the v1 cycle, lane j
+  // tap k at (j WINDOW + k) CB; right lane j at column - d + j - (P - 1).
+  logic [LANES*WINDOW*CB-1:0]       lanes_l;
+  logic [(LANES+P-1)*WINDOW*CB-1:0] lanes_r;
+  logic                             feed_busy;   // census reads of the lane feed under way
+
+  if (GORDER) begin : g_feed
+    localparam int CWB = CROWS * CB;             // a census column word
+    localparam int NB8 = $clog2(LANES + 1);
+    // Next group's columns: group pf_grp_q, pf_n_q of LANES column reads issued,
+    // the read of the previous cycle (pf_wr_q, slot pf_idx_q) written now.
+    logic [GB-1:0]        pf_grp_q;
+    logic [NB8-1:0]       pf_n_q;
+    logic                 pf_wr_q;
+    logic [NB8-1:0]       pf_idx_q;
+    logic                 pf_rd, pf_ok;
+    logic [LANES*CWB-1:0] lq_q, lc_q;            // left: next group's columns, this group's
+    logic [LANES*CWB-1:0] rp_q, rs_q;            // right: next group's first step, lanes now
+                                                 // (lane 0 of each unused: port 0's word)
+    logic [CWB-1:0]       rword0, rword1;
+    assign rword0 = cen_r_i[0 +: CWB];
+    assign rword1 = cen_r_i[CWB +: CWB];
+    assign pf_rd  = pf_n_q != NB8'(LANES);
+    assign pf_ok  = !pf_rd && !pf_wr_q;
+    // A group's first step waits for its columns.
+    assign vstall    = d_q == '0 && !(pf_ok && pf_grp_q == grp_q);
+    assign feed_busy = pf_rd || pf_wr_q;
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        pf_grp_q <= '0;
+        pf_n_q   <= NB8'(LANES);        // nothing to read before a block's first row
+        pf_wr_q  <= 1'b0;
+        pf_idx_q <= '0;
+      end else begin
+        pf_wr_q  <= pf_rd;
+        pf_idx_q <= pf_n_q;
+        if (accept && job_row_i == '0) begin
+          // A block's first row: group 0 of its bank.
+          pf_grp_q <= '0;
+          pf_n_q   <= '0;
+        end else if (issue && d_q == '0) begin
+          // The group starts: read the next one (after the last, the next row's first).
+          pf_grp_q <= (grp_q == GB'(GROUPS - 1)) ? '0 : grp_q + GB'(1);
+          pf_n_q   <= '0;
+        end else if (pf_rd) begin
+          pf_n_q <= pf_n_q + NB8'(1);
+        end
+      end
+    end
+
+    always_ff @(posedge clk_i) begin
+      for (int l = 0; l < LANES; l++)
+        if (pf_wr_q && pf_idx_q == NB8'(l)) begin
+          lq_q[l*CWB +: CWB] <= cen_l_i;
+          rp_q[l*CWB +: CWB] <= rword1;
+        end
+      if (issue) begin
+        if (d_q == '0) begin
+          lc_q <= lq_q;
+          rs_q <= rp_q;
+        end else begin
+          // Lane l takes lane l - 1's column, lane 1 port 0's word of the last step.
+          rs_q <= {rs_q[(LANES-1)*CWB-1 : CWB], rword0, {CWB{1'b0}}};
+        end
+      end
+    end
+
+    // Column reads: the next group's (left, right port 1) and lane 0's (right port 0).
+    assign lrd_en_o  = pf_rd;
+    assign lrd_col_o = CLB'(32'(pf_grp_q) * LANES + 32'(pf_n_q));
+    assign rrd_en_o  = {pf_rd, issue};
+    assign rrd_col_o = {RXB'(32'(pf_grp_q) * LANES + DMAX - 1 + 32'(pf_n_q)),
+                        RXB'(32'(grp_q) * LANES + DMAX - 1 - 32'(d_q))};
+
+    // The lanes' taps in folded order (block row v1_row_q).
+    function automatic logic [WINDOW*CB-1:0] fold(input logic [CWB-1:0] col, input logic [RB-1:0] r);
+      fold = col[WINDOW*CB-1:0];
+      for (int k = 0; k < CROWS - WINDOW; k++)
+        if (32'(r) > k) fold[k*CB +: CB] = col[(k + WINDOW)*CB +: CB];
+    endfunction
+    for (genvar l = 0; l < LANES; l++) begin : g_lane
+      assign lanes_l[l*WINDOW*CB +: WINDOW*CB] = fold(lc_q[l*CWB +: CWB], v1_row_q);
+      if (l == 0) begin : g_port0
+        assign lanes_r[0 +: WINDOW*CB] = fold(rword0, v1_row_q);
+      end else begin : g_shift
+        assign lanes_r[l*WINDOW*CB +: WINDOW*CB] = fold(rs_q[l*CWB +: CWB], v1_row_q);
+      end
+    end
+    logic feed_unused;
+    assign feed_unused = ^{rs_q[CWB-1:0], rp_q[CWB-1:0]};
+
+    // The shadows are complete when a group copies them.
+    `MCADSW_ASSERT(ShadowNotWrittenWhileCopied, !(pf_wr_q && issue && d_q == '0))
+  end else begin : g_no_feed
+    // ASIC target: the buffers deliver the lanes.
+    assign vstall    = 1'b0;
+    assign feed_busy = 1'b0;
+    assign lrd_en_o  = issue;
+    assign lrd_col_o = CLB'(32'(grp_q) * LANES);
+    assign rrd_en_o  = issue;
+    assign rrd_col_o = RXB'(32'(grp_q) * LANES + DMAX - P - 32'(d_q));
+    assign lanes_l   = cen_l_i;
+    assign lanes_r   = cen_r_i;
+  end
+
   // Copy p (disparity d + p) takes right lanes P - 1 - p .. P - 1 - p + LANES - 1.
   logic [P-1:0]          ev_valid_p;
   logic                  ev_valid;
@@ -246,8 +385,8 @@ module mcadsw_cost_agg #(
     ) u_vert_agg (
       .clk_i, .rst_ni,
       .valid_i (v1_valid_q),
-      .cen_l_i,
-      .cen_r_i (cen_r_i[(P-1-p)*WINDOW*CB +: LANES*WINDOW*CB]),
+      .cen_l_i (lanes_l),
+      .cen_r_i (lanes_r[(P-1-p)*WINDOW*CB +: LANES*WINDOW*CB]),
       .wv_i,
       .valid_o (ev_valid_p[p]),
       .ev_o    (ev[p*LANES*VB +: LANES*VB])
@@ -548,7 +687,7 @@ module mcadsw_cost_agg #(
 
   assign busy_o = busy_q || v1_valid_q || vx_busy || v2_valid_q || tr_busy || h0_valid_q ||
                   h1_valid_q || h2_valid_q || h3_valid_q || disp_valid_o;
-  assign vbusy_o = GORDER ? (busy_q || v1_valid_q || vx_busy || v2_valid_q) : busy_o;
+  assign vbusy_o = GORDER ? (busy_q || feed_busy || v1_valid_q || vx_busy || v2_valid_q) : busy_o;
   // The sub-pixel stages follow the disparities by two cycles.
   logic sub_d1_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -94,6 +94,7 @@ module mcadsw_engine #(
   localparam int WB     = mcadsw_pkg::WEIGHT_CODE_BITS;
   localparam int DB     = mcadsw_pkg::DISP_BITS;
   localparam int RLANES = LANES + PAR - 1;            // right census columns a read
+  localparam bit FPGA   = mcadsw_pkg::FPGA != 0;      // the FPGA target's shapes
 
   // The right census read of a step stays in the window only if DMAX is a
   // multiple of PAR (the last step's first d is then at most DMAX - PAR).
@@ -565,9 +566,18 @@ module mcadsw_engine #(
   logic [2:0]                 vrd_grp, hrd_grp;
   logic [SLB-1:0]             vrd_slot, hrd_slot;
   logic                       hrd_rel;
-  logic [DB-1:0]              vrd_d;
-  logic [LANES*WINDOW*CB-1:0]  cen_l;
-  logic [RLANES*WINDOW*CB-1:0] cen_r;   // see mcadsw_cost_agg: lane j at column - d + j - (PAR-1)
+  logic [DB-1:0]              vrd_d_unused;
+  // Census reads (mcadsw_cost_agg): ASIC target one of LANES (left) and RLANES (right)
+  // columns, the window's rows; FPGA target column words, one left and two right ports.
+  localparam int CRP = FPGA ? 2 : 1;                   // right census read ports
+  localparam int CLW = FPGA ? COLS*CB : LANES*WINDOW*CB;
+  localparam int CRW = FPGA ? CRP*COLS*CB : RLANES*WINDOW*CB;
+  logic                       lrd_en;
+  logic [5:0]                 lrd_col;
+  logic [CRP-1:0]             rrd_en;
+  logic [CRP*RXB-1:0]         rrd_col;
+  logic [CLW-1:0]             cen_l;
+  logic [CRW-1:0]             cen_r;
   logic [LANES*WINDOW*WB-1:0] wv;
   logic [HAGG*WINDOW*WB-1:0]  wh;
 
@@ -579,14 +589,14 @@ module mcadsw_engine #(
     .ring_free_i (!agg_active),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
     .done_o (cl_done), .busy_o (cl_busy_unused),
-    .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
-    .rd_col_i (6'(32'(vrd_grp) * LANES)), .rd_data_o (cen_l)
+    .rd_en_i (lrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
+    .rd_col_i (lrd_col), .rd_data_o (cen_l)
   );
 
-  // A step reads disparities d .. d + PAR - 1 (d = vrd_d): left lane l's columns
+  // ASIC target: a step reads disparities d .. d + PAR - 1: left lane l's columns
   // minus d + PAR - 1 .. minus d, RLANES right columns from column grp LANES +
   // DMAX - 1 - d - (PAR - 1) of the window (0 .. RCOLS - RLANES: d <= DMAX - PAR).
-  mcadsw_census #(.COLS(RCOLS), .RL(RLANES)) u_census_r (
+  mcadsw_census #(.COLS(RCOLS), .RL(FPGA ? CRP : RLANES)) u_census_r (
     .clk_i, .rst_ni,
     .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (cr_lo_x), .cfg_hi_x_i (cr_hi_x), .cfg_lo_y_i (cen_lo_y), .cfg_hi_y_i (cen_hi_y),
@@ -594,8 +604,8 @@ module mcadsw_engine #(
     .ring_free_i (!agg_active),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
     .done_o (cr_done), .busy_o (cr_busy_unused),
-    .rd_en_i (vrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
-    .rd_col_i (RXB'(32'(vrd_grp) * LANES + DMAX - PAR - 32'(vrd_d))), .rd_data_o (cen_r)
+    .rd_en_i (rrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
+    .rd_col_i (rrd_col), .rd_data_o (cen_r)
   );
 
   mcadsw_weight_gen u_weight_gen (
@@ -640,9 +650,10 @@ module mcadsw_engine #(
     .clk_i, .rst_ni,
     .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
     .job_disp_i (disp_q), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),
-    .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d),
-    .vrd_slot_o (vrd_slot),
-    .cen_l_i (cen_l), .cen_r_i (cen_r), .wv_i (wv),
+    .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d_unused),
+    .vrd_slot_o (vrd_slot), .wv_i (wv),
+    .lrd_en_o (lrd_en), .lrd_col_o (lrd_col), .rrd_en_o (rrd_en), .rrd_col_o (rrd_col),
+    .cen_l_i (cen_l), .cen_r_i (cen_r),
     .hrd_en_o (hrd_en), .hrd_row_o (hrd_row_unused), .hrd_grp_o (hrd_grp),
     .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
     .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
@@ -652,7 +663,7 @@ module mcadsw_engine #(
   );
   // Status outputs of the blocks the engine does not need.
   assign unused_status = ^{lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
-                        hrd_row_unused, sub_busy_unused, sub_row_unused, agg_busy_unused,
+                        hrd_row_unused, sub_busy_unused, sub_row_unused, agg_busy_unused, vrd_d_unused,
                         cl_busy_unused, cr_busy_unused, wg_busy_unused,
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy,
                         rchk_busy_unused, rect_busy_unused, mark_busy_unused};

@@ -18,7 +18,8 @@
 //   gen_rtl_pkg regs-json              the register map as JSON (flow/ipxact.py reads it)
 //
 // The one check of a configuration (CMake, make synth, make fpga call this):
-// DMAX an integer from 1 to 128, PAR 1, 2 or 4, DMAX a multiple of PAR; anything
+// DMAX an integer from 1 to 128, PAR 1, 2 or 4 (1 on the FPGA target), DMAX a
+// multiple of PAR; anything
 // else is a message on stderr and exit 2, nothing on stdout. Only DMAX, DISP_BITS,
 // PAR, FPGA and RECT of the package depend on the configuration.
 #include <cstdio>
@@ -330,6 +331,12 @@ int main(int argc, char** argv) {
   }
   if (dmax % par != 0) {
     std::fprintf(stderr, "gen_rtl_pkg: DMAX=%d is not a multiple of PAR=%d\n", dmax, par);
+    return 2;
+  }
+  if (fpga && par != 1) {
+    std::fprintf(stderr, "gen_rtl_pkg: the FPGA target takes one disparity a step (PAR=1), not PAR=%d: "
+                 "its census buffers feed the aggregator one right column a cycle "
+                 "(docs/blocks/fpga_target.md)\n", par);
     return 2;
   }
   print_spdx("// ", "");

@@ -17,7 +17,15 @@ module cost_agg_tb #(
   parameter int CLB = $clog2(mcadsw_pkg::GROUPS * mcadsw_pkg::LANES),
   parameter int LW  = mcadsw_pkg::LANES * mcadsw_pkg::WINDOW,   // codes / weights of LANES columns
   parameter int HW  = mcadsw_pkg::HAGG * mcadsw_pkg::WINDOW,
-  parameter int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS)
+  parameter int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS),
+  // Census reads: the FPGA target's column words (one left, two right ports) or the
+  // ASIC target's lanes (mcadsw_cost_agg)
+  parameter bit FPGA = mcadsw_pkg::FPGA != 0,
+  parameter int CWB = mcadsw_pkg::BLOCK_COLS * mcadsw_pkg::CENSUS_BITS,
+  parameter int CRP = FPGA ? 2 : 1,
+  parameter int RXB = $clog2(mcadsw_pkg::BLOCK_COLS + mcadsw_pkg::DMAX - 1),
+  parameter int CLW = FPGA ? CWB : LW*mcadsw_pkg::CENSUS_BITS,
+  parameter int CRW = FPGA ? 2*CWB : (LW + (P - 1) * mcadsw_pkg::WINDOW)*mcadsw_pkg::CENSUS_BITS
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,
@@ -31,9 +39,13 @@ module cost_agg_tb #(
   output logic [GB-1:0]                  vrd_grp_o,
   output logic [DB-1:0]                  vrd_d_o,
   output logic [SLB-1:0]                 vrd_slot_o,
-  input  logic [LW*mcadsw_pkg::CENSUS_BITS-1:0] cen_l_i,
-  input  logic [(LW + (P - 1) * mcadsw_pkg::WINDOW)*mcadsw_pkg::CENSUS_BITS-1:0] cen_r_i,
   input  logic [LW*mcadsw_pkg::WEIGHT_CODE_BITS-1:0] wv_i,
+  output logic                           lrd_en_o,
+  output logic [CLB-1:0]                 lrd_col_o,
+  output logic [CRP-1:0]                 rrd_en_o,
+  output logic [CRP*RXB-1:0]             rrd_col_o,
+  input  logic [CLW-1:0]                 cen_l_i,
+  input  logic [CRW-1:0]                 cen_r_i,
   output logic                           hrd_en_o,
   output logic [RB-1:0]                  hrd_row_o,
   output logic [GB-1:0]                  hrd_grp_o,

@@ -16,10 +16,13 @@
 #include <memory>
 #include <random>
 #include <sstream>
+#include <vector>
 
 #include "Vcost_agg_p1.h"
+#if !MCADSW_FPGA
 #include "Vcost_agg_p2.h"
 #include "Vcost_agg_p4.h"
+#endif
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
 #include "rtl_bench.hpp"
@@ -38,6 +41,14 @@ struct Scenario {
   Config cfg;
   int bx = 0, by = 0;        // block origin (multiple of kBlock)
   double job_gap_prob = 0;   // probability that no job is offered in a cycle
+};
+
+// The census reads of a cycle (mcadsw_cost_agg's lrd_*, rrd_*).
+struct CensusReads {
+  bool l_en;
+  int l_col;
+  int r_en;
+  uint32_t r_col;
 };
 
 struct Result {
@@ -96,6 +107,7 @@ class CostAggBench {
       const bool vrd = t.vrd_en_o, hrd = t.hrd_en_o;
       const int vrow = t.vrd_row_o, vgrp = t.vrd_grp_o, vd = t.vrd_d_o;
       const int hrow = t.hrd_row_o, hgrp = t.hrd_grp_o;
+      const CensusReads creads{bool(t.lrd_en_o), int(t.lrd_col_o), int(t.rrd_en_o), uint32_t(t.rrd_col_o)};
       const bool accepted = t.job_valid_i && t.job_ready_o;
       if (accepted) {
         if (first_accept < 0) first_accept = cycle;
@@ -115,6 +127,7 @@ class CostAggBench {
       if (accepted) t.job_valid_i = 0;
       // Synchronous buffers: data for the sampled address, the next cycle.
       drive_vertical(vrd, vrow, vgrp, vd);
+      if (kFpga) drive_census_ports(creads);
       drive_horizontal(hrd, hrow, hgrp);
 
       if (next_row == rows && !t.sub_busy_o && !t.job_valid_i) break;
@@ -149,10 +162,49 @@ class CostAggBench {
     top_->eval();
   }
 
+  // The FPGA target's census ports (mcadsw_cost_agg): a read returns the whole
+  // column word of the block's window (its 48 rows, row i at i CB), held until the
+  // port's next read. Left column c is image column bx - R + c; right column c is
+  // image column bx - R - (DMAX - 1) + c. Port p of the right view at p RXB.
+  void drive_census_ports(const CensusReads& c) {
+    auto& t = *top_;
+    constexpr int kRxb = bits_for(kBlockCols + kDmax - 2);
+    const int y0 = s_.by - kRadius;
+    if (c.l_en) {
+      const int x = cx(s_.bx - kRadius + c.l_col);
+      for (int i = 0; i < kBlockCols; ++i)
+        set_bits(t.cen_l_i, i * kCensusBits, kCensusBits, ref_.census_left.at(x, cy(y0 + i)));
+    }
+    for (int p = 0; p < 2; ++p) {
+      if (!((c.r_en >> p) & 1)) continue;
+      const int col = int((c.r_col >> (p * kRxb)) & ((1u << kRxb) - 1));
+      const int x = cx(s_.bx - kRadius - (kDmax - 1) + col);
+      for (int i = 0; i < kBlockCols; ++i)
+        set_bits(t.cen_r_i, (p * kBlockCols + i) * kCensusBits, kCensusBits,
+                 ref_.census_right.at(x, cy(y0 + i)));
+    }
+  }
+
   // d is the step's first disparity. Right lane j (0 .. LANES + P - 2) is the
   // image column of left lane j - (P - 1), minus d: disparity d + p of left lane l
-  // is right lane l + P - 1 - p.
+  // is right lane l + P - 1 - p. On the FPGA target only the weights: the census
+  // reads are the ports above.
   void drive_vertical(bool en, int row, int grp, int d) {
+    auto& t = *top_;
+    if constexpr (!kFpga) drive_lanes(en, row, grp, d);
+    for (int l = 0; l < kLanes; ++l) {
+      const int x = s_.bx - kRadius + grp * kLanes + l;
+      for (int tp = 0; tp < kWindow; ++tp) {
+        const int i = l * kWindow + tp;
+        const int k = sim::window_tap(tp, row);
+        set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
+                 en ? weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))) : (rng_() & 7));
+      }
+    }
+  }
+
+  // The ASIC target's census lanes.
+  void drive_lanes(bool en, int row, int grp, int d) {
     auto& t = *top_;
     // Lane tap tp is window row sim::window_tap(tp, row): tp itself on the ASIC target,
     // the census buffer's folded order on the FPGA target.
@@ -172,11 +224,8 @@ class CostAggBench {
       for (int tp = 0; tp < kWindow; ++tp) {
         const int i = l * kWindow + tp;
         const int y = tap_y(tp);
-        const int k = sim::window_tap(tp, row);
         set_bits(t.cen_l_i, i * kCensusBits, kCensusBits,
                  en ? ref_.census_left.at(cx(x), cy(y)) : (rng_() & 63));
-        set_bits(t.wv_i, i * kWeightCodeBits, kWeightCodeBits,
-                 en ? weight_code(ref_.weights.v(k, cx(x), cy(s_.by + row))) : (rng_() & 7));
       }
     }
   }
@@ -329,10 +378,17 @@ Result run_p(const Scenario& s) {
   return r;
 }
 
-// The scenario at P = 1, 2 and 4: results[0..2].
-std::array<Result, 3> run_scenario(const Scenario& s) {
+// The scenario at P = 1, 2 and 4 (results in the order of kPs); the FPGA target
+// takes one disparity a step.
+#if MCADSW_FPGA
+constexpr std::array<int, 1> kPs = {1};
+std::vector<Result> run_scenario(const Scenario& s) { return {run_p<Vcost_agg_p1, 1>(s)}; }
+#else
+constexpr std::array<int, 3> kPs = {1, 2, 4};
+std::vector<Result> run_scenario(const Scenario& s) {
   return {run_p<Vcost_agg_p1, 1>(s), run_p<Vcost_agg_p2, 2>(s), run_p<Vcost_agg_p4, 4>(s)};
 }
+#endif
 
 Scenario random_scenario(const std::string& name, int w, int h, int d, int bx, int by,
                          uint32_t seed) {
@@ -382,18 +438,19 @@ TEST(CostAgg, DisparityCountsNotAMultipleOfP) {
 TEST(CostAgg, RealImageTeddyCifAtDmax) {
   const auto rs = run_scenario(real_scenario("teddy", kDmax, 180, 126));
   EXPECT_CLEAN(rs);
-  const int ps[3] = {1, 2, 4};
-  for (int i = 0; i < 3; ++i) {
+  for (size_t i = 0; i < kPs.size(); ++i) {
     const Result& r = rs[i];
+    const int par = kPs[i];
     EXPECT_GT(r.sub_fractional, r.sub_checked / 2) << "most pixels of a real block get an offset";
     // Back-to-back jobs: 6 cycles per step (P disparities) per row plus the pipeline fill;
     // on the FPGA target the horizontal side is a row behind the vertical one (the
-    // transposition buffer): one row more, and the reader's 2 cycles.
-    const long per_row = 6L * (kDmax / ps[i]);
-    const long per_block = 18 * per_row + (kFpga ? per_row + 2 : 0);
+    // transposition buffer): one row more, the reader's 2 cycles, and the block's first
+    // 8 census columns read before its first step (9 cycles).
+    const long per_row = 6L * (kDmax / par);
+    const long per_block = 18 * per_row + (kFpga ? per_row + 2 + kLanes + 1 : 0);
     std::printf("P=%d: cycles per 18-pixel row at D=%d: %.1f (paper, P = 1: 7 + 6*64 = 391)\n",
-                ps[i], kDmax, double(r.cycles) / 18);
-    EXPECT_LE(r.cycles, per_block + 16) << "P=" << ps[i];
+                par, kDmax, double(r.cycles) / 18);
+    EXPECT_LE(r.cycles, per_block + 16) << "P=" << par;
   }
 }
 
