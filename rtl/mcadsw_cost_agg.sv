@@ -16,12 +16,12 @@
 // Read ports are synchronous: data arrive the cycle after the address (the
 // census and weight buffers are RAMs). ASIC target: a step reads LANES left
 // columns and LANES + P - 1 right ones at once (lrd_*, rrd_*: the first column),
-// each as the window's WINDOW rows (the census buffer selects them by vrd_row_o). Pipeline, from the issue cycle c of a
-// column group: c+1 census/weight data and Hamming + vertical sum, c+2 ping-pong
-// write; after the 6th group, c+8 bank handed to the horizontal side, c+9
-// ping-pong read (registered) and horizontal weight address, c+10 horizontal
-// sum, c+11 WTA, c+12 disparity out. The registered ping-pong read keeps its
-// multiplexers out of the horizontal sum's cycle (docs/synthesis.md section 1).
+// each as the window's WINDOW rows (the census buffer selects them by vrd_row_o).
+// Pipeline, from the issue cycle c of a column group: c+1 census/weight data and
+// Hamming + vertical sum, c+2 ping-pong write; after the 6th group, c+8 bank
+// handed to the horizontal side, c+9 ping-pong read (registered) and horizontal
+// weight address, c+10 horizontal sum, c+11 WTA, c+12 disparity out. The registered
+// ping-pong read keeps its multiplexers out of the horizontal sum (docs/synthesis.md 1).
 //
 // FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the vertical side
 // takes a row's column groups in the outer loop and its steps in the inner one
@@ -44,10 +44,10 @@
 // (the window's ROWS rows); each lane's WINDOW taps are selected in the census
 // buffer's folded order (tap k is row k + WINDOW when k < the block row, row k
 // otherwise) on the way into the vertical aggregator, whose inputs are registered.
-// The transposition buffer holds a row per weight slot
-// (WEIGHT_SLOTS = 3): the vertical side fills row r + 1's while the reader empties
-// row r's, and a slot is refilled only after the weight generator has taken it
-// back, which it does on the row's last horizontal read, after the reader's last.
+// The transposition buffer holds a row per weight slot (WEIGHT_SLOTS = 3): the
+// vertical side fills row r + 1's while the reader empties row r's, and a slot is
+// refilled only after the weight generator has taken it back, which it does on the
+// row's last horizontal read, after the reader's last.
 //
 // P disparities a step (docs/blocks/cost_agg.md 1): a step evaluates d ..
 // d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +

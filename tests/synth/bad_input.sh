@@ -72,7 +72,7 @@ expect fpga_dmax_zero 2 "fpga: gen_rtl_pkg: DMAX='0' is not supported: an intege
 expect fpga_dmax_text 2 "DMAX='x1' is not supported" -- fpga --dmax x1
 expect fpga_par_three 2 "PAR='3' is not supported: 1, 2 or 4" -- fpga --par 3
 expect fpga_par_dmax  2 "DMAX=10 is not a multiple of PAR=4" -- fpga --dmax 10 --par 4
-expect fpga_par_two   2 "the FPGA target takes one disparity a step (PAR=1), not PAR=2" -- fpga --par 2
+expect fpga_par_two   2 "the FPGA target takes one disparity a step .PAR=1., not PAR=2" -- fpga --par 2
 stale_files="summary.json mcadsw_engine_osu018.v"
 
 # A missing tool: a PATH with everything the driver needs except yosys.
