@@ -163,10 +163,13 @@ formal: bootstrap
 	@python3 flow/formal.py --build $(BUILD_DIR) $(if $(SELFTEST),--selftest)
 
 ## mutate: N=200 SEED=1 Yosys mutants of the flattened design against the kill suite; survivors
-##   must be listed in tests/mutate/survivors.txt (SAMPLE=12 a seeded sample, as CI runs)
+##   must be listed in tests/mutate/survivors.txt (SAMPLE=12 a seeded sample, as CI runs; JOBS=,
+##   MUTANTS="3 17" again, REPORT_ONLY=1, NO_RECT=1, TIMEOUT=300 a stage: flow/mutate.py)
 mutate: bootstrap
-	@N=$(N) SEED=$(SEED) SAMPLE=$(SAMPLE) MUTANTS="$(MUTANTS)" JOBS=$(JOBS) \
-	  BUILD_DIR=$(abspath $(BUILD_DIR)) scripts/mutate.sh
+	@python3 flow/mutate.py $(if $(N),--n "$(N)") $(if $(SEED),--seed "$(SEED)") $(if $(SAMPLE),--sample "$(SAMPLE)") \
+	  $(if $(strip $(MUTANTS)),--mutants "$(MUTANTS)") $(if $(JOBS),--jobs "$(JOBS)") \
+	  $(if $(filter 1,$(REPORT_ONLY)),--report-only) $(if $(NO_RECT),--no-rect "$(NO_RECT)") \
+	  $(if $(TIMEOUT),--timeout "$(TIMEOUT)") --build $(abspath $(BUILD_DIR))
 
 ## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md, the C header,
 ##   the FuseSoC core mcadsw.core, the IP-XACT component component.xml and docs/datasheet.md from their sources

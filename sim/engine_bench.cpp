@@ -300,7 +300,7 @@ class Engine {
     // Waves in real time: one cycle is kClockPeriodPs; the model is verilated
     // with --timescale 1ns/1ps (sim/CMakeLists.txt), so trace times are in ps.
     ctx_->traceEverOn(!opt.waves.empty());
-    // `make mutate` (scripts/mutate.sh): a model built with every mutant of the
+    // `make mutate` (flow/mutate.py): a model built with every mutant of the
     // list reads the plusarg +mcadsw_mutant=K, passed on from the environment
     // variable MCADSW_MUTANT (0 or unset: none, the design as written); other
     // models ignore it.

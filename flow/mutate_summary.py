@@ -1,37 +1,29 @@
-#!/usr/bin/env python3
 # SPDX-FileCopyrightText: 2026 The mcadsw authors
 # SPDX-License-Identifier: Apache-2.0
 
-"""Summary of a `make mutate` run (scripts/mutate.sh, step 6).
+"""Summary of a `make mutate` run (flow/mutate.py, its last step).
 
 Reads the mutant list (mutants.tsv: number, module, key), the outcomes
 (outcomes.tsv: number, killed|survived, the test that killed it, seconds) and the
 committed survivors list (tests/mutate/survivors.txt: key, kind, reason); writes
 results.tsv (number, module, outcome, test, seconds, key; a listed survivor's
 outcome is its kind, equivalent or open) and summary.json, prints the summary.
-Exit 1 when a survivor is not in the list.
 survived = open + unlisted; score = killed / (total - equivalent).
 """
-import argparse
 import json
 import sys
 from pathlib import Path
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--out", required=True, help="build/mutate")
-    ap.add_argument("--list", required=True, help="tests/mutate/survivors.txt")
-    ap.add_argument("--list-name", required=True, help="the list's path as printed")
-    for k in ("n", "seed", "sample", "seconds", "jobs"):
-        ap.add_argument(f"--{k}", type=int, required=True)
-    ap.add_argument("--no-rect", type=int, default=0,
-                    help="1: the rectifier was left out of the mutant list (NO_RECT=1)")
-    a = ap.parse_args()
-    out = Path(a.out)
+def summarize(out, list_path, list_name, n, seed, sample, seconds, jobs, no_rect):
+    """The summary of the run in OUT (build/mutate) against the survivors list at
+    LIST_PATH (printed as LIST_NAME); N, SEED, SAMPLE, SECONDS, JOBS and NO_RECT (1: the
+    rectifier was left out of the mutant list) go into summary.json as they are. Returns
+    1 when a survivor is not in the list, else 0."""
+    out = Path(out)
 
     kinds = {}
-    for line in Path(a.list).read_text().splitlines():
+    for line in Path(list_path).read_text().splitlines():
         if line.startswith("mutate "):
             f = line.split("\t")
             kinds[f[0]] = f[1] if len(f) > 1 else ""
@@ -82,8 +74,8 @@ def main():
                               "mutation": r["key"]})
     total = len(rows)
     score = 100.0 * killed / (total - equivalent) if total > equivalent else 100.0
-    summary = {"n": a.n, "seed": a.seed, "sample": a.sample, "jobs": a.jobs, "seconds": a.seconds,
-               "rectifier_excluded": bool(a.no_rect),
+    summary = {"n": n, "seed": seed, "sample": sample, "jobs": jobs, "seconds": seconds,
+               "rectifier_excluded": bool(no_rect),
                "total": total, "killed": killed, "survived": open_ + unlisted, "equivalent": equivalent,
                "open": open_, "unlisted": unlisted, "score_percent": round(score, 1),
                "per_module": dict(sorted(per_module.items())), "survivors": survivors,
@@ -92,22 +84,18 @@ def main():
 
     print(f"mutate: {total} mutants: {killed} killed, {equivalent} equivalent, {open_} open (listed), "
           f"{unlisted} unlisted survivors; score {score:.1f} % (killed / non-equivalent; target >= 95 %)")
-    if a.no_rect:
+    if no_rect:
         print("mutate: the rectifier (u_engine.u_rect, u_rect_mark, u_rect_check) was left out (NO_RECT=1)")
     print("mutate: per module (total killed survived equivalent):")
     for name, m in sorted(per_module.items()):
         print(f"  {name:<20s} {m['total']:4d} {m['killed']:4d} {m['survived']:4d} {m['equivalent']:4d}")
     for r in stale:
-        print(f"mutate: warning: mutant {r['mutant']} is listed in {a.list_name} but was killed "
+        print(f"mutate: warning: mutant {r['mutant']} is listed in {list_name} but was killed "
               f"({r['test']}): remove it")
     if unlisted:
-        print(f"mutate: survivors not in {a.list_name} (kill them with a test, or list them: "
+        print(f"mutate: survivors not in {list_name} (kill them with a test, or list them: "
               f"equivalent or open, with the reason):", file=sys.stderr)
         for s in survivors:
             if s["kind"] == "survived":
                 print(f"  mutant {s['mutant']} ({s['module']}): {s['mutation']}", file=sys.stderr)
     return 1 if unlisted else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
