@@ -40,10 +40,11 @@
 // last group (the columns do not depend on the block row); a row 0 (a new block,
 // another census bank) reads it again. A group starts once its shadows are full:
 // at most LANES + 1 cycles after the previous group started, so it waits only when
-// D < 9, and a block's first row waits that long. Lanes hold whole column words
-// (the window's ROWS rows); each lane's WINDOW taps are selected in the census
-// buffer's folded order (tap k is row k + WINDOW when k < the block row, row k
-// otherwise) on the way into the vertical aggregator, whose inputs are registered.
+// D < 9, and a block's first row waits that long. A port's column word (the
+// window's CROWS rows) is folded as it is read to the WINDOW taps of its block
+// row, in the census buffer's folded order (tap k is row k + WINDOW when k < the
+// block row, row k otherwise), so the lanes and shadows hold taps only; the next
+// row's first group is folded for the next row (a block's rows come in order).
 // The transposition buffer holds a row per weight slot (WEIGHT_SLOTS = 3): the
 // vertical side fills row r + 1's while the reader empties row r's, and a slot is
 // refilled only after the weight generator has taken it back, which it does on the
@@ -284,10 +285,14 @@ module mcadsw_cost_agg #(
     logic                 pf_wr_q;
     logic [NB8-1:0]       pf_idx_q;
     logic                 pf_rd, pf_ok;
-    logic [LANES*CWB-1:0] lq_q, lc_q;            // left: next group's columns, this group's
-    logic [LANES*CWB-1:0] rp_q, rs_q;            // right: next group's first step, lanes now
-                                                 // (lane 0 of each unused: port 0's word)
+    logic [RB-1:0]        pf_row_q;              // block row of group pf_grp_q
+    // The lanes hold their WINDOW taps, folded when a column word is read.
+    localparam int TWB = WINDOW * CB;            // a lane's taps
+    logic [LANES*TWB-1:0] lq_q, lc_q;            // left: next group's columns, this group's
+    logic [LANES*TWB-1:0] rp_q, rs_q;            // right: next group's first step, lanes now
+                                                 // (lane 0 of each unused: port 0's taps)
     logic [CWB-1:0]       rword0, rword1;
+    logic [TWB-1:0]       ltaps, rtaps0, rtaps1; // the ports' words folded
     assign rword0 = cen_r_i[0 +: CWB];
     assign rword1 = cen_r_i[CWB +: CWB];
     assign pf_rd  = pf_n_q != NB8'(LANES);
@@ -299,6 +304,7 @@ module mcadsw_cost_agg #(
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         pf_grp_q <= '0;
+        pf_row_q <= '0;
         pf_n_q   <= NB8'(LANES);        // nothing to read before a block's first row
         pf_wr_q  <= 1'b0;
         pf_idx_q <= '0;
@@ -308,10 +314,13 @@ module mcadsw_cost_agg #(
         if (accept && job_row_i == '0) begin
           // A block's first row: group 0 of its bank.
           pf_grp_q <= '0;
+          pf_row_q <= '0;
           pf_n_q   <= '0;
         end else if (issue && d_q == '0) begin
-          // The group starts: read the next one (after the last, the next row's first).
+          // The group starts: read the next one (after the last, the next row's first;
+          // a block's rows come in order, assertion NextRowPrefetched).
           pf_grp_q <= (grp_q == GB'(GROUPS - 1)) ? '0 : grp_q + GB'(1);
+          pf_row_q <= (grp_q == GB'(GROUPS - 1)) ? row_q + RB'(1) : row_q;
           pf_n_q   <= '0;
         end else if (pf_rd) begin
           pf_n_q <= pf_n_q + NB8'(1);
@@ -322,16 +331,17 @@ module mcadsw_cost_agg #(
     always_ff @(posedge clk_i) begin
       for (int l = 0; l < LANES; l++)
         if (pf_wr_q && pf_idx_q == NB8'(l)) begin
-          lq_q[l*CWB +: CWB] <= cen_l_i;
-          rp_q[l*CWB +: CWB] <= rword1;
+          lq_q[l*TWB +: TWB] <= ltaps;
+          rp_q[l*TWB +: TWB] <= rtaps1;
         end
       if (issue) begin
         if (d_q == '0) begin
           lc_q <= lq_q;
           rs_q <= rp_q;
         end else begin
-          // Lane l takes lane l - 1's column, lane 1 port 0's word of the last step.
-          rs_q <= {rs_q[(LANES-1)*CWB-1 : CWB], rword0, {CWB{1'b0}}};
+          // Lane l takes lane l - 1's taps, lane 1 port 0's of the last step (the same
+          // group, so the same block row).
+          rs_q <= {rs_q[(LANES-1)*TWB-1 : TWB], rtaps0, {TWB{1'b0}}};
         end
       end
     end
@@ -343,22 +353,24 @@ module mcadsw_cost_agg #(
     assign rrd_col_o = {RXB'(32'(pf_grp_q) * LANES + DMAX - 1 + 32'(pf_n_q)),
                         RXB'(32'(grp_q) * LANES + DMAX - 1 - 32'(d_q))};
 
-    // The lanes' taps in folded order (block row v1_row_q).
-    function automatic logic [WINDOW*CB-1:0] fold(input logic [CWB-1:0] col, input logic [RB-1:0] r);
-      fold = col[WINDOW*CB-1:0];
+    // A column word's taps in folded order for block row r: one 2:1 select a port
+    // instead of one a lane. The shadows' words are folded for the row of the group
+    // they are read for (pf_row_q), port 0's for the group in v1.
+    function automatic logic [TWB-1:0] fold(input logic [CWB-1:0] col, input logic [RB-1:0] r);
+      fold = col[TWB-1:0];
       for (int k = 0; k < CROWS - WINDOW; k++)
         if (32'(r) > k) fold[k*CB +: CB] = col[(k + WINDOW)*CB +: CB];
     endfunction
-    for (genvar l = 0; l < LANES; l++) begin : g_lane
-      assign lanes_l[l*WINDOW*CB +: WINDOW*CB] = fold(lc_q[l*CWB +: CWB], v1_row_q);
-      if (l == 0) begin : g_port0
-        assign lanes_r[0 +: WINDOW*CB] = fold(rword0, v1_row_q);
-      end else begin : g_shift
-        assign lanes_r[l*WINDOW*CB +: WINDOW*CB] = fold(rs_q[l*CWB +: CWB], v1_row_q);
-      end
-    end
+    assign ltaps  = fold(cen_l_i, pf_row_q);
+    assign rtaps1 = fold(rword1, pf_row_q);
+    assign rtaps0 = fold(rword0, v1_row_q);
+    assign lanes_l = lc_q;
+    assign lanes_r = {rs_q[LANES*TWB-1 : TWB], rtaps0};
     logic feed_unused;
-    assign feed_unused = ^{rs_q[CWB-1:0], rp_q[CWB-1:0]};
+    assign feed_unused = ^{rs_q[TWB-1:0], rp_q[TWB-1:0]};
+
+    // The row a group's shadows were folded for is the row it runs in.
+    `MCADSW_ASSERT(NextRowPrefetched, !(issue && d_q == '0) || pf_row_q == row_q)
 
     // The shadows are complete when a group copies them.
     `MCADSW_ASSERT(ShadowNotWrittenWhileCopied, !(pf_wr_q && issue && d_q == '0))
