@@ -175,25 +175,38 @@ class Run:
             self.procs.pop(pid).returncode = rc
         return pid, rc, ru.ru_maxrss // 1024
 
+    def wait(self, p, limit_s=None, kill_after_s=10):
+        """Waits for P (from start): (exit code, peak MB, whether it ran out of time).
+        limit_s: after that many seconds its process group is sent SIGTERM, and SIGKILL
+        kill_after_s later if it is still there (as `timeout -k`)."""
+        timed_out = threading.Event()
+
+        def signal_group(sig):
+            if sig == signal.SIGTERM:
+                timed_out.set()
+            try:
+                os.killpg(p.pid, sig)
+            except OSError:
+                pass
+        timers = [threading.Timer(limit_s, signal_group, [signal.SIGTERM]),
+                  threading.Timer(limit_s + kill_after_s, signal_group, [signal.SIGKILL])] if limit_s else []
+        for t in timers:
+            t.daemon = True
+            t.start()
+        try:
+            _, rc, mb = self.reap(p.pid)
+        finally:
+            for t in timers:
+                t.cancel()
+        return rc, mb, timed_out.is_set()
+
     def run(self, cmd, out_path=None, err_path=None, limit_s=None, **kw):
-        """Runs cmd to its end: (exit code, peak MB, seconds). limit_s: stopped (its process
-        group sent SIGTERM) after that many seconds; the caller tells by the seconds."""
+        """Runs cmd to its end: (exit code, peak MB, seconds). limit_s: stopped (wait) after
+        that many seconds; the caller tells by the seconds."""
         t0 = time.time()
         with open(out_path or os.devnull, "w") as o, open(err_path or os.devnull, "w") as e:
             p = self.start(cmd, stdout=o, stderr=e, **kw)
-            timer = None
-            if limit_s:
-                def stop_it():
-                    try:
-                        os.killpg(p.pid, signal.SIGTERM)
-                    except OSError:
-                        pass
-                timer = threading.Timer(limit_s, stop_it)
-                timer.daemon = True
-                timer.start()
-            _, rc, mb = self.reap(p.pid)
-            if timer:
-                timer.cancel()
+            rc, mb, _ = self.wait(p, limit_s)
         return rc, mb, int(time.time() - t0)
 
     def stop(self):

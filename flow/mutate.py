@@ -208,36 +208,21 @@ class Suite:
     def run_stage(self, stage, k, log_path, limit):
         """STAGE on mutant K (0: the design as written), its output appended to LOG_PATH;
         (exit status as a shell gives it, whether it ran out of time). After LIMIT seconds
-        (0: no limit) its process group gets SIGTERM, 10 s later SIGKILL (`timeout -k 10`)."""
+        (0: no limit) its process group gets SIGTERM, 10 s later SIGKILL (Run.wait)."""
         if self.stopping.is_set():
             raise Stopped()
         with open(log_path, "a") as f:
             p = self.run.start(self.cmd(stage), cwd=str(ROOT), env={"MCADSW_MUTANT": str(k)},
                                stdout=f, stderr=subprocess.STDOUT)
-        timed_out = threading.Event()
-
-        def signal_group(sig):
-            if sig == signal.SIGTERM:
-                timed_out.set()
+        if self.stopping.is_set():             # stopped while this one started
             try:
-                os.killpg(p.pid, sig)
+                os.killpg(p.pid, signal.SIGKILL)
             except OSError:
                 pass
-        if self.stopping.is_set():             # stopped while this one started
-            signal_group(signal.SIGKILL)
-        timers = [threading.Timer(limit, signal_group, [signal.SIGTERM]),
-                  threading.Timer(limit + 10, signal_group, [signal.SIGKILL])] if limit else []
-        for t in timers:
-            t.daemon = True
-            t.start()
-        try:
-            _, rc, _ = self.run.reap(p.pid)
-        finally:
-            for t in timers:
-                t.cancel()
+        rc, _, timed_out = self.run.wait(p, limit or None)
         if self.stopping.is_set():
             raise Stopped()
-        if timed_out.is_set() and rc != 0:
+        if timed_out and rc != 0:
             return (137 if rc == -signal.SIGKILL else 124), True
         return (rc if rc >= 0 else 128 - rc), False
 

@@ -7,7 +7,8 @@ The sample (flow/mutate.py sample_picks) is the linear congruential generator
 state = (state * 1103515245 + 12345) mod 2^31, k = state mod N + 1, from state = SEED; CI's
 sample depends on it. Its draws are checked against ones computed by hand, with the mutants
 the survivors list gives as equivalent skipped and drawn again in their place. Then bad
-input to flow/mutate.py: one message naming the setting, exit 2, before Yosys runs.
+input to flow/mutate.py: one message naming the setting, exit 2, before Yosys runs. Then a
+stage out of time: stopped, and killed when it ignores the stop.
   tests/mutate/sample_test.py     (a few seconds; Python 3 standard library only)
 """
 import subprocess
@@ -68,5 +69,19 @@ with tempfile.TemporaryDirectory() as build:
         r = subprocess.run([sys.executable, str(ROOT / "flow" / "mutate.py"), "--build", build] + args,
                            capture_output=True, text=True)
         check(" ".join(args), (r.returncode, r.stderr.strip()), (2, message))
+
+# A stage out of time (flowlib.Run.wait, which make mutate's stages use): SIGTERM to its
+# process group after the limit, SIGKILL a grace period later when SIGTERM is ignored.
+import flowlib  # noqa: E402
+run = flowlib.Run()
+p = run.start(["sleep", "30"])
+rc, _, late = run.wait(p, limit_s=0.5, kill_after_s=1)
+check("a stage out of time: SIGTERM", (rc, late), (-15, True))
+p = run.start(["bash", "-c", "trap '' TERM; sleep 30 & wait; sleep 30"])
+rc, _, late = run.wait(p, limit_s=0.5, kill_after_s=1)
+check("a stage that ignores SIGTERM: SIGKILL", (rc, late), (-9, True))
+p = run.start(["true"])
+check("a stage in time", run.wait(p, limit_s=5)[::2], (0, False))
+run.stop()
 
 sys.exit(1 if fails else 0)
