@@ -29,6 +29,7 @@ mcadsw_regs.sv
 mcadsw_scheduler.sv
 mcadsw_strip_stage.sv
 mcadsw_sum_tree.sv
+mcadsw_tag_delay.sv
 mcadsw_top.sv
 mcadsw_vert_agg.sv
 mcadsw_weight_gen.sv

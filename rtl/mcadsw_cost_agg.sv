@@ -48,7 +48,8 @@
 // The transposition buffer holds a row per weight slot (WEIGHT_SLOTS = 3): the
 // vertical side fills row r + 1's while the reader empties row r's, and a slot is
 // refilled only after the weight generator has taken it back, which it does on the
-// row's last horizontal read, after the reader's last.
+// row's last horizontal read, after the reader's last. The vertical sums take
+// VLAT = 3 cycles and the horizontal ones HLAT = 2 (registered inputs and terms).
 //
 // P disparities a step (docs/blocks/cost_agg.md 1): a step evaluates d ..
 // d + P - 1 (d = vrd_d_o, a multiple of P). The right census input holds LANES +
@@ -253,16 +254,9 @@ module mcadsw_cost_agg #(
   assign v1t = {v1_valid_q, v1_first_q, v1_last_q, v1_row_q, v1_d_q, v1_grp_q, v1_lcol_q, v1_slot_q,
                 v1_lanes_q};
   if (VLAT > 1) begin : g_vdelay
-    logic [(VLAT-1)*VTW-1:0] vd_q;    // stage i at i VTW, its valid bit on top
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) vd_q <= '0;
-      else vd_q <= ((VLAT-1)*VTW)'({vd_q, v1t});
-    end
-    assign v1x = vd_q[(VLAT-2)*VTW +: VTW];
-    always_comb begin
-      vx_busy = 1'b0;
-      for (int i = 0; i < VLAT - 1; i++) vx_busy = vx_busy || vd_q[i*VTW + VTW - 1];
-    end
+    mcadsw_tag_delay #(.W(VTW), .N(VLAT - 1)) u_delay (
+      .clk_i, .rst_ni, .tags_i(v1t), .tags_o(v1x), .busy_o(vx_busy)
+    );
   end else begin : g_vdirect
     assign v1x     = v1t;
     assign vx_busy = 1'b0;
@@ -629,9 +623,24 @@ module mcadsw_cost_agg #(
                                   h0_grp_q, h0_slot_q, h0_lanes_q};
       {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q} <=
           {h1_valid_q, h1_first_q, h1_last_q, h1_row_q, h1_d_q, h1_grp_q, h1_lanes_q};
-      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <=
-          {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q};
+      {h3_valid_q, h3_first_q, h3_last_q, h3_row_q, h3_d_q, h3_grp_q, h3_lanes_q} <= h2x;
     end
+  end
+
+  // The tags of h2 reach h3 with the final costs: one cycle, or HLAT = 2 on the
+  // FPGA target (mcadsw_horz_agg's latency: its terms registered first).
+  localparam int HLAT = (mcadsw_pkg::FPGA != 0) ? 2 : 1;
+  localparam int HTW  = 3 + RB + DB + GB + P;
+  logic [HTW-1:0] h2t, h2x;
+  logic           hx_busy;            // tags on their way from h2 to h3
+  assign h2t = {h2_valid_q, h2_first_q, h2_last_q, h2_row_q, h2_d_q, h2_grp_q, h2_lanes_q};
+  if (HLAT > 1) begin : g_hdelay
+    mcadsw_tag_delay #(.W(HTW), .N(HLAT - 1)) u_delay (
+      .clk_i, .rst_ni, .tags_i(h2t), .tags_o(h2x), .busy_o(hx_busy)
+    );
+  end else begin : g_hdirect
+    assign h2x     = h2t;
+    assign hx_busy = 1'b0;
   end
 
   logic [P-1:0]          fc_valid_p;
@@ -698,7 +707,7 @@ module mcadsw_cost_agg #(
   assign disp_row_o = disp_row_q;
 
   assign busy_o = busy_q || v1_valid_q || vx_busy || v2_valid_q || tr_busy || h0_valid_q ||
-                  h1_valid_q || h2_valid_q || h3_valid_q || disp_valid_o;
+                  h1_valid_q || h2_valid_q || hx_busy || h3_valid_q || disp_valid_o;
   assign vbusy_o = GORDER ? (busy_q || feed_busy || v1_valid_q || vx_busy || v2_valid_q) : busy_o;
   // The sub-pixel stages follow the disparities by two cycles.
   logic sub_d1_q;
@@ -715,6 +724,7 @@ module mcadsw_cost_agg #(
   // word from before it), and a bank is handed over only when the horizontal side
   // has finished the previous one.
   `MCADSW_ASSERT(EvWithItsTags, ev_valid == v2_valid_q)
+  `MCADSW_ASSERT(FcWithItsTags, fc_valid == h3_valid_q)
   `MCADSW_ASSERT(BankNotOverwrittenBeforeRead, !(pw_valid && h0_valid_q && wbank_q == h0_bank_q))
   `MCADSW_ASSERT(BankHandedOverWhenRead, !(bank_full && h0_valid_q && h0_grp_q != GB'(GROUPS - 1)))
 

@@ -4,7 +4,9 @@
 // Horizontal aggregation (paper Fig. 12 right, Eq. 4): HAGG aggregators, each
 // summing WINDOW vertical costs shifted by their one-hot horizontal weights.
 // Aggregator m takes costs m .. m + WINDOW - 1 of the 33-cost window from the
-// ping-pong buffer (partial column reuse). Result registered.
+// ping-pong buffer (partial column reuse). Result registered: one cycle after
+// valid_i, or LAT = 2 on the FPGA target, whose terms are registered before their
+// adder tree (the weights' block-RAM read and the multipliers, then the tree).
 `default_nettype none
 
 module mcadsw_horz_agg #(
@@ -41,19 +43,22 @@ module mcadsw_horz_agg #(
     weight_of = (e == '0) ? '0 : WVB'(1) << (e - WB'(1));
   endfunction
 
+  localparam int LAT = FPGA ? 2 : 1;   // cycles from valid_i to valid_o
+  logic [LAT-1:0] valid_q;             // valid_i, one bit a cycle of the pipeline
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else valid_o <= valid_i;
+    if (!rst_ni) valid_q <= '0;
+    else valid_q <= LAT'({valid_q, valid_i});
   end
+  assign valid_o = valid_q[LAT-1];
 
   if (FPGA) begin : g_fpga_sum
     // FPGA target: each aggregator's WINDOW products (TB bits: a vertical cost
-    // shifted by at most 2^WB - 2) summed by a balanced tree of carry-chain
-    // adders (mcadsw_sum_tree); the sum fits FB bits (g_bad_param above).
+    // shifted by at most 2^WB - 2), registered, then summed by a balanced tree of
+    // carry-chain adders (mcadsw_sum_tree); the sum fits FB bits (g_bad_param above).
     localparam int TB = VB + (1 << WB) - 2;
     localparam int SW = TB + $clog2(WINDOW);
     for (genvar m = 0; m < HAGG; m++) begin : g_agg
-      logic [WINDOW*TB-1:0] terms;
+      logic [WINDOW*TB-1:0] terms, terms_q;
       logic [SW-1:0]        sum;
       for (genvar j = 0; j < WINDOW; j++) begin : g_term
         logic [FB-1:0] t;
@@ -66,10 +71,14 @@ module mcadsw_horz_agg #(
         assign terms[j*TB +: TB] = t[TB-1:0];
         assign t_unused = t[FB-1:TB];
       end
-      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms), .sum_o(sum));
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) terms_q <= '0;
+        else if (valid_i) terms_q <= terms;
+      end
+      mcadsw_sum_tree #(.N(WINDOW), .W(TB)) u_sum (.terms_i(terms_q), .sum_o(sum));
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) fc_o[m*FB +: FB] <= '0;
-        else if (valid_i) fc_o[m*FB +: FB] <= FB'(sum);
+        else if (valid_q[0]) fc_o[m*FB +: FB] <= FB'(sum);
       end
     end
   end else begin : g_asic_sum

@@ -29,7 +29,7 @@ measure "census (right, $((48 + dmax - 1)) cols)" mcadsw_census "-set COLS $((48
   mcadsw_strip_stage.sv mcadsw_census.sv
 measure "weight generator" mcadsw_weight_gen "" mcadsw_strip_stage.sv mcadsw_weight_gen.sv
 measure "cost aggregator + ping-pong + WTA" mcadsw_cost_agg "" \
-  mcadsw_sum_tree.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv mcadsw_cost_agg.sv
+  mcadsw_sum_tree.sv mcadsw_tag_delay.sv mcadsw_vert_agg.sv mcadsw_pingpong.sv mcadsw_horz_agg.sv mcadsw_wta.sv mcadsw_cost_agg.sv
 printf "| block | memory bits | flip-flop bits | total bits | kB |\n|---|---|---|---|---|\n"
 tm=0; tf=0
 for r in "${rows[@]}"; do
