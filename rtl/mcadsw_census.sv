@@ -28,7 +28,8 @@
 // longer needs the ring strip it replaces, and a census column is computed
 // once its 5 luma columns are in.
 //
-// Kernel: one column of ROWS codes a cycle. Position (i, j) of the census
+// Kernel: one column of ROWS codes a cycle (the FPGA target: a quarter of the
+// rows a cycle, below). Position (i, j) of the census
 // buffer receives the code of the nearest in-image position (clamp(i, lo_x,
 // hi_x), clamp(j, lo_y, hi_y)): the border rule of docs/algorithm.md, applied
 // once, when the buffer is written. Columns left of lo_x are computed from the
@@ -128,12 +129,18 @@ module mcadsw_census #(
   localparam int LW     = LROWS * 8;               // luma column word
   localparam int CWB    = ROWS * CB;               // census column word
   localparam int KB     = $clog2(COLS + 4);        // luma column index in the window
+  // The kernel computes a column in KCH chunks of RCH rows, one a cycle: the ASIC
+  // target all at once, the FPGA target in 4 (a column's luma arrives at most every
+  // 13 cycles: a strip word of 4 columns a row, ROWS + 4 rows).
+  localparam int KCH    = FPGA ? 4 : 1;
+  localparam int RCH    = ROWS / KCH;              // rows a chunk
+  localparam int KW     = (RCH + 4) * 8;           // a chunk's luma rows of one column
 
   if (ROWS < WINDOW || LANES != SUB || CB != 6 || STRIPS * 4 < COLS + 4 + 3 || COLS < BLOCK ||
       RING % CSUB != 0 || RING < COLS + BLOCK || (1 << LSB) != LS || LS < 4 ||
       LDEPTH < 2 || (!FPGA && (RL < LANES || RL > CSUB)) || (1 << CSB) != CSUB ||
       RL > COLS || ROWS - WINDOW > WINDOW || RPORTS != (FPGA ? RL : 1) ||
-      RDW != (FPGA ? RL*ROWS*CB : RL*WINDOW*CB)) begin : g_bad_param
+      RDW != (FPGA ? RL*ROWS*CB : RL*WINDOW*CB) || ROWS % KCH != 0) begin : g_bad_param
     mcadsw_error_census_geometry u_error ();
   end
 
@@ -164,12 +171,13 @@ module mcadsw_census #(
   logic [KB-1:0] lk;
   logic          need_luma;      // ki <= hi_x: the column is computed, not repeated
   logic          luma_ok, ring_ok, issue;
+  logic          kern_ok;        // the kernel has the column's codes but the last chunk's
   assign ic        = (ki_q < lo_x_q) ? lo_x_q : ki_q;
   assign lk        = KB'(ofs_q) + KB'(ic);
   assign need_luma = ki_q <= hi_x_q;
   // A band-start block's columns from RING - COLS on are the previous block's.
   assign ring_ok   = cont_q || ring_free_i || 32'(ki_q) < RING - COLS;
-  assign issue     = state_q == RUN && !kfin_q && luma_ok && ring_ok;
+  assign issue     = state_q == RUN && !kfin_q && luma_ok && ring_ok && kern_ok;
 
   // A strip may be written when the kernel no longer needs the ring strip it
   // replaces (window strip s - LS): all strips from lk/4 on are still needed.
@@ -265,17 +273,18 @@ module mcadsw_census #(
   // Written as functions and called only where a column is computed, so a
   // simulator evaluates them in the kernel's COLS cycles of a block, not in every
   // cycle; the hardware is the same combinational kernel.
-  // The codes of rows 0 .. ROWS-1 from luma columns lcol .. lcol + 4 (lcols), unclamped.
-  function automatic logic [CWB-1:0] census_codes(input logic [5*LW-1:0] lcols);
-    for (int j = 0; j < ROWS; j++) begin
+  // The codes of a chunk's RCH rows from its luma rows (RCH + 4) of columns lcol ..
+  // lcol + 4 (kcols, a column every KW bits), unclamped.
+  function automatic logic [RCH*CB-1:0] census_codes(input logic [5*KW-1:0] kcols);
+    for (int j = 0; j < RCH; j++) begin
       logic [7:0] c;
-      c = lcols[2*LW + (j + 2)*8 +: 8];
-      census_codes[j*CB + 5] = lcols[(2 + mcadsw_pkg::TAP0_DX)*LW + (j + 2 + mcadsw_pkg::TAP0_DY)*8 +: 8] <= c;
-      census_codes[j*CB + 4] = lcols[(2 + mcadsw_pkg::TAP1_DX)*LW + (j + 2 + mcadsw_pkg::TAP1_DY)*8 +: 8] <= c;
-      census_codes[j*CB + 3] = lcols[(2 + mcadsw_pkg::TAP2_DX)*LW + (j + 2 + mcadsw_pkg::TAP2_DY)*8 +: 8] <= c;
-      census_codes[j*CB + 2] = lcols[(2 + mcadsw_pkg::TAP3_DX)*LW + (j + 2 + mcadsw_pkg::TAP3_DY)*8 +: 8] <= c;
-      census_codes[j*CB + 1] = lcols[(2 + mcadsw_pkg::TAP4_DX)*LW + (j + 2 + mcadsw_pkg::TAP4_DY)*8 +: 8] <= c;
-      census_codes[j*CB + 0] = lcols[(2 + mcadsw_pkg::TAP5_DX)*LW + (j + 2 + mcadsw_pkg::TAP5_DY)*8 +: 8] <= c;
+      c = kcols[2*KW + (j + 2)*8 +: 8];
+      census_codes[j*CB + 5] = kcols[(2 + mcadsw_pkg::TAP0_DX)*KW + (j + 2 + mcadsw_pkg::TAP0_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 4] = kcols[(2 + mcadsw_pkg::TAP1_DX)*KW + (j + 2 + mcadsw_pkg::TAP1_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 3] = kcols[(2 + mcadsw_pkg::TAP2_DX)*KW + (j + 2 + mcadsw_pkg::TAP2_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 2] = kcols[(2 + mcadsw_pkg::TAP3_DX)*KW + (j + 2 + mcadsw_pkg::TAP3_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 1] = kcols[(2 + mcadsw_pkg::TAP4_DX)*KW + (j + 2 + mcadsw_pkg::TAP4_DY)*8 +: 8] <= c;
+      census_codes[j*CB + 0] = kcols[(2 + mcadsw_pkg::TAP5_DX)*KW + (j + 2 + mcadsw_pkg::TAP5_DY)*8 +: 8] <= c;
     end
   endfunction
 
@@ -330,10 +339,13 @@ module mcadsw_census #(
     // order, into a window of the 5 columns the kernel needs (a shift register):
     // column nl once it is written (nl < wcol) while the window, after this
     // cycle's issue, still lacks it (nl < lk' + 5). The kernel issues when the
-    // window holds lk .. lk + 4 (nl = lk + 5); cycle 1 computes the codes from
-    // the window, cycle 2 clamps the rows. Against the ASIC target a block's
-    // first column waits for its 5 loads and a column that needs a new strip
-    // for that column's write and load (docs/blocks/fpga_target.md).
+    // window holds lk .. lk + 4 (nl = lk + 5) and the kernel has computed the
+    // column's first KCH - 1 chunks of rows from it, one a cycle (the window stays:
+    // the loader waits for the issue); the issue cycle computes the last chunk,
+    // the next cycle clamps the rows. Against the ASIC target a block's first
+    // column waits for its 5 loads, a column that needs a new strip for that
+    // column's write and load, and every computed column for its chunks: a column
+    // every KCH cycles at most (docs/blocks/fpga_target.md).
     localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
     logic [LW-1:0]   lmem [4*LS];
     logic [4*LW-1:0] hold_q;          // the strip's columns, column 0 first
@@ -348,19 +360,41 @@ module mcadsw_census #(
     logic [NB-1:0]   lk0;             // ... and its lk
     logic            load;
     logic [CWB-1:0]  raw_q;           // stage 1: the codes, rows not yet clamped
+    localparam int KCB = $clog2(KCH);
+    logic [KCB-1:0]  ph_q;            // the chunk the kernel computes next
+    logic            kern_win;        // the window holds a computed column's luma
+    logic [RCH*CB-1:0] kcodes;        // chunk ph_q's codes
+    // Chunk c's luma rows of the window's 5 columns: rows c RCH .. c RCH + RCH + 3.
+    // A KCH:1 select of constant slices (not a shifter).
+    function automatic logic [5*KW-1:0] chunk_rows(input logic [5*LW-1:0] lcols, input logic [KCB-1:0] c);
+      chunk_rows = '0;
+      for (int k = 0; k < KCH; k++)
+        if (c == KCB'(k))
+          for (int dx = 0; dx < 5; dx++) chunk_rows[dx*KW +: KW] = lcols[dx*LW + k*RCH*8 +: KW];
+    endfunction
     assign hb      = 2'(3'd4 - hn_q);
     assign lk_next = NB'(lk) + NB'(issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1));
     assign ki0     = cfg_cont_i ? XB'(COLS - BLOCK) : '0;
     assign lk0     = NB'(cfg_ofs_i) + NB'((ki0 < cfg_lo_x_i) ? cfg_lo_x_i : ki0);
     assign load    = state_q == RUN && nl_q < wcol_q && nl_q < lk_next + NB'(5);
     assign luma_ok = !need_luma || nl_q == NB'(lk) + NB'(5);
+    assign kern_win = state_q == RUN && !kfin_q && need_luma && luma_ok;
+    assign kern_ok  = !need_luma || ph_q == KCB'(KCH - 1);
+    // Evaluated only while the kernel runs (simulation speed; the same hardware).
+    always_comb begin
+      kcodes = '0;
+      if (kern_win) kcodes = census_codes(chunk_rows(win_q, ph_q));
+    end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         hn_q     <= '0;
         hstrip_q <= '0;
         wcol_q   <= '0;
         nl_q     <= '0;
+        ph_q     <= '0;
       end else begin
+        if (issue) ph_q <= '0;
+        else if (kern_win && ph_q != KCB'(KCH - 1)) ph_q <= ph_q + KCB'(1);
         if (pix_fire && strip_end) begin
           hn_q     <= 3'd4;
           hstrip_q <= wstrip;
@@ -380,7 +414,7 @@ module mcadsw_census #(
       if (pix_fire && strip_end) hold_q <= strip_cols;
       if (hn_q != '0) lmem[{hstrip_q, hb}] <= hold_q[32'(hb)*LW +: LW];
       if (load) win_q <= {lmem[LCB'({base_q, 2'b00}) + LCB'(nl_q)], win_q[5*LW-1:LW]};
-      if (issue && need_luma) raw_q <= census_codes(win_q);
+      for (int k = 0; k < KCH; k++) if (kern_win && ph_q == KCB'(k)) raw_q[k*RCH*CB +: RCH*CB] <= kcodes;
       if (rd_valid_q && rd_fresh_q) col_q <= clamp_rows(raw_q, lo_y_q, hi_y_q);
     end
     assign lsub_q  = '0;
@@ -395,6 +429,7 @@ module mcadsw_census #(
     `MCADSW_ASSERT(WindowNotAhead, !(state_q == RUN && need_luma && !kfin_q && nl_q > NB'(lk) + NB'(5)))
   end else begin : g_asic_luma
     assign luma_ok = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
+    assign kern_ok = 1'b1;                // a column's codes in one cycle (KCH = 1)
 
     for (genvar b = 0; b < SUB; b++) begin : g_lsub
       // Ring strip t holds columns 4t .. 4t+3: sub-bank b receives column
