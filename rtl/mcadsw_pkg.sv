@@ -25,6 +25,7 @@ package mcadsw_pkg;
   localparam int BLOCK_COLS       = 48;  // Ev columns per block row (31x48 window)
   localparam int GROUPS           = 6;  // cycles per disparity
   localparam int WEIGHT_SLOTS     = 2;  // weight-buffer row slots (FPGA: the horizontal side a row behind)
+  localparam int WEIGHT_KPH       = 1;  // weight kernel cycles an entry (FPGA at DMAX >= 23: 2)
   localparam int MAX_WIDTH        = 2048;  // largest image width
   localparam int MAX_HEIGHT       = 2048;  // largest image height
   localparam int LR_T_MAX         = 63;  // largest LR check tolerance T

@@ -50,12 +50,13 @@
 // address) and frees it with hrd_rel_i on its last horizontal read.
 //
 // FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the input buffer is
-// one block RAM a plane with a column an entry, and the kernel has ROWS distance
-// units that compare whole columns (vertical) or the whole centre row
-// (horizontal) with the centre, so neither pass selects a window of pixels. A
-// vertical entry holds the window's WINDOW codes in the census buffer's folded
-// order (mcadsw_census): tap k is the code of column row k + WINDOW when k < r,
-// of row k otherwise. Same values, same cycles.
+// one block RAM a plane with a column an entry, and the kernel register takes
+// the window's pixels in the census buffer's folded order (mcadsw_census: tap k
+// is row k + WINDOW when k < r, row k otherwise), so neither pass selects a
+// window of pixels; a vertical entry holds its codes in that order. The kernel
+// makes an entry in KPH cycles with ceil(WINDOW / KPH) distance units
+// (mcadsw_pkg::WEIGHT_KPH: 2 when DMAX >= 23, so a row takes 134 cycles instead
+// of 67, hidden behind the aggregator's 6 D + 1 for D >= 23). Same values.
 //
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
@@ -76,6 +77,7 @@ module mcadsw_weight_gen #(
   parameter int NTHR   = mcadsw_pkg::WTHRESHOLDS,
   parameter bit FPGA   = 1'(mcadsw_pkg::FPGA),      // the FPGA target's buffer shapes
   parameter int NSLOT  = mcadsw_pkg::WEIGHT_SLOTS,  // row slots (2; FPGA target 3)
+  parameter int KPH    = mcadsw_pkg::WEIGHT_KPH,    // kernel cycles an entry (FPGA target; ASIC 1)
   parameter int SLB    = $clog2(NSLOT),
   parameter int WPR    = COLS / 4 + 1,              // strips a window (offset 0..3)
   parameter int NEW    = (BLOCK + 3) / 4,           // most strips a continuing block adds (5)
@@ -126,7 +128,7 @@ module mcadsw_weight_gen #(
   if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
       COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
       HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4 ||
-      ROWS - WINDOW > WINDOW || NSLOT < 2) begin : g_bad_param
+      ROWS - WINDOW > WINDOW || NSLOT < 2 || KPH < 1 || (!FPGA && KPH != 1)) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -192,6 +194,8 @@ module mcadsw_weight_gen #(
   logic [SLB-1:0] k_slot2_q;
   logic           w_done;          // the last write of a row done (stage 2, FPGA: 3) ...
   logic [SLB-1:0] w_slot;          // ... and its slot
+  logic           k_adv;           // the pass moves to its next column or pixel (ASIC: every cycle)
+  logic           k_busy;          // a row's last entry still in the kernel's stages
 
   // The slot after s: slots are used in turn.
   function automatic logic [SLB-1:0] next_slot(input logic [SLB-1:0] s);
@@ -254,7 +258,7 @@ module mcadsw_weight_gen #(
           state_q <= VERT;
           c_q     <= '0;
         end
-        VERT: begin                   // the COLS columns of row r
+        VERT: if (k_adv) begin        // the COLS columns of row r
           if (c_q == XB'(COLS - 1)) state_q <= GAP;
           else c_q <= c_q + XB'(1);
         end
@@ -264,7 +268,7 @@ module mcadsw_weight_gen #(
           hg_q    <= '0;
           hm_q    <= '0;
         end
-        HORZ: begin                   // the BLOCK output pixels of row r
+        HORZ: if (k_adv) begin        // the BLOCK output pixels of row r
           c_q <= c_q + XB'(1);
           if (hm_q == 2'(HAGG - 1)) begin
             hm_q <= '0;
@@ -295,7 +299,7 @@ module mcadsw_weight_gen #(
     end
   end
 
-  assign busy_o      = l_busy_q || pend_q || gen_busy || k_done_q || w_done;
+  assign busy_o      = l_busy_q || pend_q || gen_busy || k_busy;
   assign row_ready_o = rdy_q[rslot_q];
   assign rd_slot_o   = rslot_q;
 
@@ -451,24 +455,24 @@ module mcadsw_weight_gen #(
       k_done_q  <= 1'b0;
       k_slot2_q <= '0;
     end else begin
-      s1_q      <= state_q == VERT;
+      s1_q      <= state_q == VERT && k_adv;
       s1_sel_q  <= rcol[1:0];
       s1_r_q    <= r_q;
       s1_c_q    <= c_q;
       s1_slot_q <= wslot_q;
       k_vert_q  <= s1_q;
-      k_horz_q  <= state_q == HORZ;
+      k_horz_q  <= state_q == HORZ && k_adv;
       if (s1_q) begin
         k_slot_q <= s1_slot_q;
         k_grp_q  <= GB'(s1_c_q[XB-1:3]);
         k_pos_q  <= s1_c_q[2:0];
-      end else if (state_q == HORZ) begin
+      end else if (state_q == HORZ && k_adv) begin
         k_slot_q <= wslot_q;
         k_grp_q  <= hg_q;
         k_pos_q  <= 3'(hm_q);
       end
       // The row is complete with its last horizontal entry.
-      k_done_q  <= state_q == HORZ && c_q == XB'(BLOCK - 1);
+      k_done_q  <= state_q == HORZ && k_adv && c_q == XB'(BLOCK - 1);
       k_slot2_q <= wslot_q;
     end
   end
@@ -495,18 +499,33 @@ module mcadsw_weight_gen #(
   assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
 
   if (FPGA) begin : g_fpga_kernel
-    // FPGA target: no window select of pixels. The kernel register takes the
-    // ROWS pixels of the column (vertical) or of the centre row (horizontal) in
-    // folded order, WINDOW of them: pixel k is row (column) k + WINDOW when
-    // k < a, k otherwise (a = r, or x; a 2:1 select of the first ROWS - WINDOW),
-    // so every pixel of the window once. WINDOW distance units compare them with
-    // the centre. Their codes are the vertical entry as the census buffer folds
-    // it (mcadsw_census); the horizontal entry, the codes of columns x .. x +
-    // WINDOW - 1 in order, is them rotated by x: code j is unit (j + x) mod WINDOW.
+    // FPGA target: no window select of pixels, and an entry in KPH cycles. The
+    // kernel register takes the ROWS pixels of the column (vertical) or of the
+    // centre row (horizontal) in folded order, WINDOW of them: pixel k is row
+    // (column) k + WINDOW when k < a, k otherwise (a = r, or x; a 2:1 select of
+    // the first ROWS - WINDOW), so every pixel of the window once. NU distance
+    // units compare NU of them a cycle with the centre (pixels 0 .. NU - 1, then
+    // the register shifted by NU pixels: NU .. WINDOW - 1), so the passes take a
+    // column or pixel every KPH cycles (k_adv). The WINDOW codes are the vertical
+    // entry as the census buffer folds it (mcadsw_census); the horizontal entry,
+    // the codes of columns x .. x + WINDOW - 1 in order, is them rotated by x:
+    // code j is unit (j + x) mod WINDOW.
+    localparam int NU  = (WINDOW + KPH - 1) / KPH;   // distance units
     localparam int WPX = WINDOW * PW;
-    logic [WPX-1:0] k_px_q;                  // the window's pixels, folded
+    localparam int PHB = KPH > 1 ? $clog2(KPH) : 1;
+    localparam int SW  = 3 + SLB;            // stage-2 flags: vertical, horizontal, done, slot
+    logic [WPX-1:0] k_px_q;                  // the window's pixels, folded (shifted by NU a cycle)
     logic [PW-1:0]  k_ctr_q;                 // the centre
     logic [RB-1:0]  k_at_q;                  // row r (vertical) or pixel x (horizontal)
+    logic [PHB-1:0] kph_q;                   // the pass's cycle of its column or pixel
+    logic [KPH*SW-1:0] kst;                  // the stage-2 flags in the entry's cycle p at p*SW
+    logic           k_mid;                   // stage 2 in an entry's cycle before its last
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) kph_q <= '0;
+      else if ((state_q == VERT || state_q == HORZ) && !k_adv) kph_q <= kph_q + PHB'(1);
+      else kph_q <= '0;
+    end
+    assign k_adv = kph_q == PHB'(KPH - 1);
 
     // Rows (pixels) a .. a + WINDOW - 1 of ROWS pixels px (row j at j*PW) in folded order.
     function automatic logic [WPX-1:0] fold_pixels(input logic [ROWS*PW-1:0] px, input logic [RB-1:0] a);
@@ -525,24 +544,33 @@ module mcadsw_weight_gen #(
         k_px_q  <= fold_pixels(column_pixels(column), s1_r_q);
         k_ctr_q <= centre_pixel(column, s1_r_q);
         k_at_q  <= s1_r_q;
-      end else if (state_q == HORZ) begin
+      end else if (state_q == HORZ && k_adv) begin
         k_px_q  <= fold_pixels(hrow_q, RB'(c_q));
         for (int c = 0; c < BLOCK; c++)
           if (c_q == XB'(c)) k_ctr_q <= hrow_q[(c + RADIUS)*PW +: PW];
         k_at_q  <= RB'(c_q);
+      end else if (k_mid) begin
+        k_px_q  <= k_px_q >> (NU*PW);        // the entry's next cycle: the next NU pixels
       end
     end
 
-    function automatic logic [ENTRY-1:0] window_codes(input logic [WPX-1:0] px, input logic [PW-1:0] ctr,
-                                                      input logic [NTHR*DCB-1:0] thr);
-      for (int k = 0; k < WINDOW; k++) window_codes[k*WB +: WB] = code_of(cdist(px[k*PW +: PW], ctr), thr);
+    // The codes of the register's first NU pixels (past the window: don't care).
+    function automatic logic [NU*WB-1:0] unit_codes(input logic [WPX-1:0] px, input logic [PW-1:0] ctr,
+                                                    input logic [NTHR*DCB-1:0] thr);
+      for (int k = 0; k < NU; k++) unit_codes[k*WB +: WB] = code_of(cdist(px[k*PW +: PW], ctr), thr);
     endfunction
     // Code j of the horizontal entry: unit (j + x) mod WINDOW, a rotation.
     function automatic logic [ENTRY-1:0] unfold(input logic [ENTRY-1:0] codes, input logic [RB-1:0] x);
       unfold = ENTRY'({codes, codes} >> (32'(x)*WB));
     endfunction
-    // Stage 3 (FPGA target only): stage 2's codes registered, then placed and
-    // written; the row is ready a cycle later than on the ASIC target.
+    // Stage 2 takes KPH cycles, NU codes a cycle (kst: its flags, delayed a
+    // cycle at a time; the entry's tags and centre stand until its last cycle
+    // ends, the next entry coming KPH cycles later). Stage 3 (FPGA target only):
+    // the codes registered, then placed and written; a row is ready KPH cycles
+    // later than on the ASIC target, and its passes take KPH times the cycles.
+    logic [KPH*NU*WB-1:0] k_codes;           // the last cycle's units over the earlier ones'
+    logic [SW-1:0]     k_last;               // the stage-2 flags in the entry's last cycle
+    logic              k_last_en;
     logic [ENTRY-1:0]  k3_codes_q;
     logic [RB-1:0]     k3_at_q;
     logic              k3_vert_q, k3_horz_q, k3_done_q;
@@ -550,16 +578,47 @@ module mcadsw_weight_gen #(
     logic [2:0]        k3_pos_q;
     logic [VAB-1:0]    k3_vaddr_q;
     logic [HAB-1:0]    k3_haddr_q;
+    assign kst[SW-1:0] = {k_vert_q, k_horz_q, k_done_q, k_slot2_q};
+    for (genvar p = 1; p < KPH; p++) begin : g_kst
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) kst[p*SW +: SW] <= '0;
+        else         kst[p*SW +: SW] <= kst[(p-1)*SW +: SW];
+      end
+    end
+    always_comb begin
+      k_mid  = 1'b0;
+      k_busy = k3_done_q;
+      for (int p = 0; p < KPH; p++) begin
+        if (p < KPH - 1) k_mid = k_mid || kst[p*SW + SW - 1] || kst[p*SW + SW - 2];
+        k_busy = k_busy || kst[p*SW + SLB];
+      end
+    end
+    assign k_last    = kst[(KPH-1)*SW +: SW];
+    assign k_last_en = k_last[SW-1] || k_last[SW-2];
+    if (KPH > 1) begin : g_acc
+      localparam int ACCW = (KPH-1)*NU*WB;
+      logic [ACCW-1:0] acc_q;                // the earlier cycles' codes, the first lowest
+      always_ff @(posedge clk_i) begin
+        if (k_mid) acc_q <= ACCW'({unit_codes(k_px_q, k_ctr_q, thr_i), acc_q} >> (NU*WB));
+      end
+      assign k_codes = {unit_codes(k_px_q, k_ctr_q, thr_i), acc_q};
+    end else begin : g_one
+      assign k_codes = unit_codes(k_px_q, k_ctr_q, thr_i);
+    end
+    if (KPH*NU > WINDOW) begin : g_past
+      logic codes_unused;                    // units past the window's last pixel
+      assign codes_unused = ^k_codes[KPH*NU*WB-1:ENTRY];
+    end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         {k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q} <= '0;
       end else begin
-        {k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q} <= {k_vert_q, k_horz_q, k_done_q, k_slot2_q};
+        {k3_vert_q, k3_horz_q, k3_done_q, k3_slot_q} <= k_last;
       end
     end
     always_ff @(posedge clk_i) begin
-      if (k_vert_q || k_horz_q) begin
-        k3_codes_q <= window_codes(k_px_q, k_ctr_q, thr_i);
+      if (k_last_en) begin
+        k3_codes_q <= k_codes[ENTRY-1:0];
         k3_at_q    <= k_at_q;
         k3_pos_q   <= k_pos_q;
         k3_vaddr_q <= k_vaddr;
@@ -568,6 +627,12 @@ module mcadsw_weight_gen #(
     end
     assign w_done = k3_done_q;
     assign w_slot = k3_slot_q;
+    // One entry in stage 2 at a time: its tags and centre stand for its KPH cycles.
+    logic [KPH-1:0] k_in_stage;
+    for (genvar p = 0; p < KPH; p++) begin : g_in_stage
+      assign k_in_stage[p] = kst[p*SW + SW - 1] || kst[p*SW + SW - 2];
+    end
+    `MCADSW_ASSERT(OneEntryInStage2, (k_in_stage & (k_in_stage - KPH'(1))) == '0)
     logic [VENTRY-1:0] k_ventry;
     logic [ENTRY-1:0]  k_hentry;
     logic [VAB-1:0]    vrd_addr;
@@ -597,6 +662,8 @@ module mcadsw_weight_gen #(
   end else begin : g_asic_kernel
     assign w_done = k_done_q;
     assign w_slot = k_slot2_q;
+    assign k_adv  = 1'b1;
+    assign k_busy = k_done_q;
     // ASIC target: rows r .. r + WINDOW - 1 of the column, as pixels: each plane's
     // window is one of BLOCK row offsets (an AND-OR multiplexer, not a
     // bit-granular shifter), then Y, U, V are interleaved at constant positions;

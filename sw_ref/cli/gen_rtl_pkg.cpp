@@ -368,6 +368,11 @@ int main(int argc, char** argv) {
   p("BLOCK_COLS", kBlockCols, "Ev columns per block row (31x48 window)");
   p("GROUPS", kGroups, "cycles per disparity");
   p("WEIGHT_SLOTS", fpga ? 3 : 2, "weight-buffer row slots (FPGA: the horizontal side a row behind)");
+  // The FPGA target's weight kernel makes an entry in two cycles with half the units where
+  // its row (2 (48 + 18) + 2 cycles) still fits the aggregator's (6 DMAX / PAR + 1) at DMAX.
+  const int kernel_row2 = 2 * (kBlockCols + kBlock) + 2;
+  const int kph = (fpga && kGroups * dmax / par + 1 >= kernel_row2) ? 2 : 1;
+  p("WEIGHT_KPH", kph, "weight kernel cycles an entry (FPGA at DMAX >= 23: 2)");
   p("MAX_WIDTH", kMaxWidth, "largest image width");
   p("MAX_HEIGHT", kMaxHeight, "largest image height");
   p("LR_T_MAX", kLrToleranceMax, "largest LR check tolerance T");

@@ -9,7 +9,9 @@
 // ones), with the table loaded as weight_thresholds(). Random input stalls,
 // random aggregator pace, borders, partial blocks, all-64 / all-0 / random
 // tables, row bands with column reuse, band starts that must wait for the
-// previous block's last row, a real image.
+// previous block's last row, a real image. In the FPGA build every case also
+// runs on the kernel an entry in 1 and in 3 cycles (KPH, besides the package's
+// WEIGHT_KPH: docs/blocks/fpga_target.md).
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -18,6 +20,10 @@
 #include <sstream>
 
 #include "Vmcadsw_weight_gen.h"
+#if MCADSW_FPGA
+#include "Vweight_gen_kph1.h"
+#include "Vweight_gen_kph3.h"
+#endif
 #include "mcadsw/image_io.hpp"
 #include "mcadsw/ref.hpp"
 #include "test_util.hpp"
@@ -56,6 +62,7 @@ struct Stats {
 // Rows of a block the aggregator asks for: those inside the image.
 int block_rows(const Sequence& r, const Block& b) { return std::min(kBlock, r.img.height() - b.by); }
 
+template <class Model>
 class WeightGenBench {
  public:
   WeightGenBench() {
@@ -244,19 +251,30 @@ class WeightGenBench {
     return "";
   }
 
-  std::unique_ptr<Vmcadsw_weight_gen> top_ = std::make_unique<Vmcadsw_weight_gen>();
+  std::unique_ptr<Model> top_ = std::make_unique<Model>();
   Weights ref_;
 };
 
-Stats run(const Sequence& r, uint32_t seed = 77) {
+template <class Model>
+Stats run_model(const Sequence& r, const char* model, uint32_t seed) {
   std::mt19937 rng(seed);
-  WeightGenBench bench;
+  WeightGenBench<Model> bench;
   Stats st;
   const std::string err = bench.run(r, rng, &st);
-  EXPECT_TRUE(err.empty()) << r.name << ": " << err;
-  std::printf("[%s] %dx%d, %zu blocks: %ld cycles, %ld rows, %ld weights compared\n",
-              r.name.c_str(), r.img.width(), r.img.height(), r.blocks.size(), st.cycles, st.rows,
-              st.compared);
+  EXPECT_TRUE(err.empty()) << r.name << " (" << model << "): " << err;
+  std::printf("[%s%s] %dx%d, %zu blocks: %ld cycles, %ld rows, %ld weights compared\n",
+              r.name.c_str(), model, r.img.width(), r.img.height(), r.blocks.size(), st.cycles,
+              st.rows, st.compared);
+  return st;
+}
+
+// The package's model; in the FPGA build also the kernel in 1 and 3 cycles an entry.
+std::vector<Stats> run(const Sequence& r, uint32_t seed = 77) {
+  std::vector<Stats> st{run_model<Vmcadsw_weight_gen>(r, "", seed)};
+#if MCADSW_FPGA
+  st.push_back(run_model<Vweight_gen_kph1>(r, ", KPH 1", seed));
+  st.push_back(run_model<Vweight_gen_kph3>(r, ", KPH 3", seed));
+#endif
   return st;
 }
 
@@ -340,8 +358,8 @@ TEST(WeightGen, WholeImageReusesColumns) {
 TEST(WeightGen, BandStartWaitsForThePreviousBlock) {
   Sequence r{"band-start", smooth_image(40, 40, 13), make_weight_table(kDefaultGamma), all_blocks(40, 40)};
   r.take = 0.01;
-  const Stats st = run(r);
-  EXPECT_GT(st.band_waits, 0) << "the loader never waited: the case does not test the wait";
+  for (const Stats& st : run(r))
+    EXPECT_GT(st.band_waits, 0) << "the loader never waited: the case does not test the wait";
 }
 
 TEST(WeightGen, RealImageTeddyCif) {
