@@ -522,8 +522,7 @@ module mcadsw_weight_gen #(
     logic           k_mid;                   // stage 2 in an entry's cycle before its last
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) kph_q <= '0;
-      else if ((state_q == VERT || state_q == HORZ) && !k_adv) kph_q <= kph_q + PHB'(1);
-      else kph_q <= '0;
+      else         kph_q <= (state_q == VERT || state_q == HORZ) && !k_adv ? kph_q + PHB'(1) : '0;
     end
     assign k_adv = kph_q == PHB'(KPH - 1);
 
@@ -568,6 +567,7 @@ module mcadsw_weight_gen #(
     // ends, the next entry coming KPH cycles later). Stage 3 (FPGA target only):
     // the codes registered, then placed and written; a row is ready KPH cycles
     // later than on the ASIC target, and its passes take KPH times the cycles.
+    logic [NU*WB-1:0]  k_units;              // this cycle's codes
     logic [KPH*NU*WB-1:0] k_codes;           // the last cycle's units over the earlier ones'
     logic [SW-1:0]     k_last;               // the stage-2 flags in the entry's last cycle
     logic              k_last_en;
@@ -593,17 +593,18 @@ module mcadsw_weight_gen #(
         k_busy = k_busy || kst[p*SW + SLB];
       end
     end
+    assign k_units   = unit_codes(k_px_q, k_ctr_q, thr_i);
     assign k_last    = kst[(KPH-1)*SW +: SW];
     assign k_last_en = k_last[SW-1] || k_last[SW-2];
     if (KPH > 1) begin : g_acc
       localparam int ACCW = (KPH-1)*NU*WB;
       logic [ACCW-1:0] acc_q;                // the earlier cycles' codes, the first lowest
       always_ff @(posedge clk_i) begin
-        if (k_mid) acc_q <= ACCW'({unit_codes(k_px_q, k_ctr_q, thr_i), acc_q} >> (NU*WB));
+        if (k_mid) acc_q <= ACCW'({k_units, acc_q} >> (NU*WB));
       end
-      assign k_codes = {unit_codes(k_px_q, k_ctr_q, thr_i), acc_q};
+      assign k_codes = {k_units, acc_q};
     end else begin : g_one
-      assign k_codes = unit_codes(k_px_q, k_ctr_q, thr_i);
+      assign k_codes = k_units;
     end
     if (KPH*NU > WINDOW) begin : g_past
       logic codes_unused;                    // units past the window's last pixel
