@@ -585,17 +585,18 @@ module mcadsw_weight_gen #(
         else         kst[p*SW +: SW] <= kst[(p-1)*SW +: SW];
       end
     end
-    always_comb begin
-      k_mid  = 1'b0;
-      k_busy = k3_done_q;
-      for (int p = 0; p < KPH; p++) begin
-        if (p < KPH - 1) k_mid = k_mid || kst[p*SW + SW - 1] || kst[p*SW + SW - 2];
-        k_busy = k_busy || kst[p*SW + SLB];
-      end
+    logic [KPH-1:0] k_in_stage;              // an entry in the stage's cycle p
+    for (genvar p = 0; p < KPH; p++) begin : g_in_stage
+      assign k_in_stage[p] = kst[p*SW + SW - 1] || kst[p*SW + SW - 2];
     end
+    always_comb begin
+      k_busy = k3_done_q;
+      for (int p = 0; p < KPH; p++) k_busy = k_busy || kst[p*SW + SLB];
+    end
+    assign k_mid     = (k_in_stage & ~(KPH'(1) << (KPH - 1))) != '0;
     assign k_units   = unit_codes(k_px_q, k_ctr_q, thr_i);
     assign k_last    = kst[(KPH-1)*SW +: SW];
-    assign k_last_en = k_last[SW-1] || k_last[SW-2];
+    assign k_last_en = k_in_stage[KPH-1];
     if (KPH > 1) begin : g_acc
       localparam int ACCW = (KPH-1)*NU*WB;
       logic [ACCW-1:0] acc_q;                // the earlier cycles' codes, the first lowest
@@ -629,10 +630,6 @@ module mcadsw_weight_gen #(
     assign w_done = k3_done_q;
     assign w_slot = k3_slot_q;
     // One entry in stage 2 at a time: its tags and centre stand for its KPH cycles.
-    logic [KPH-1:0] k_in_stage;
-    for (genvar p = 0; p < KPH; p++) begin : g_in_stage
-      assign k_in_stage[p] = kst[p*SW + SW - 1] || kst[p*SW + SW - 2];
-    end
     `MCADSW_ASSERT(OneEntryInStage2, (k_in_stage & (k_in_stage - KPH'(1))) == '0)
     logic [VENTRY-1:0] k_ventry;
     logic [ENTRY-1:0]  k_hentry;
