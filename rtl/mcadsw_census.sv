@@ -252,8 +252,10 @@ module mcadsw_census #(
   // ---- Input buffer -------------------------------------------------------------------
   logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
   logic              in_plane_unused;
+  logic [2:0]        col_left;         // FPGA target: the strip's columns one a cycle
+  logic [LW-1:0]     col_word;
 
-  mcadsw_strip_stage #(.ROWS(LROWS), .STRIPS(STRIPS), .PLANES(1)) u_stage (
+  mcadsw_strip_stage #(.ROWS(LROWS), .STRIPS(STRIPS), .PLANES(1), .COLUMNS(FPGA)) u_stage (
     .clk_i, .rst_ni,
     .start_i (cfg_valid_i && cfg_ready_o),
     .first_i (cfg_first_i),
@@ -263,7 +265,9 @@ module mcadsw_census #(
     .done_o  (win_done),
     .plane_o (in_plane_unused),
     .strip_o (in_strip),
-    .cols_o  (strip_cols)
+    .cols_o  (strip_cols),
+    .col_left_o (col_left),
+    .col_o   (col_word)
   );
 
   logic [LSB-1:0] wstrip;         // ring strip of the finished input strip
@@ -333,9 +337,9 @@ module mcadsw_census #(
 
   if (FPGA) begin : g_fpga_luma
     // FPGA target: the ring is one RAM of 4 LS luma columns, a column an entry
-    // (distributed RAM, no sub-banks and no column selects). A finished strip's
-    // 4 columns are held and written one a cycle over the next 4 cycles (a strip
-    // ends every ROWS + 4 words at most). A loader reads one column a cycle, in
+    // (distributed RAM, no sub-banks and no column selects). The strip stage
+    // presents a finished strip's 4 columns one a cycle over the next 4 cycles
+    // (COLUMNS), and they are written so. A loader reads one column a cycle, in
     // order, into a window of the 5 columns the kernel needs (a shift register):
     // column nl once it is written (nl < wcol) while the window, after this
     // cycle's issue, still lacks it (nl < lk' + 5). The kernel issues when the
@@ -348,9 +352,7 @@ module mcadsw_census #(
     // every KCH cycles at most (docs/blocks/fpga_target.md).
     localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
     logic [LW-1:0]   lmem [4*LS];
-    logic [4*LW-1:0] hold_q;          // the strip's columns, column 0 first
-    logic [2:0]      hn_q;            // columns still to write (4 .. 0)
-    logic [LSB-1:0]  hstrip_q;        // their ring strip
+    logic [LSB-1:0]  hstrip_q;        // the ring strip of the columns written
     logic [1:0]      hb;              // the column written, in its strip
     logic [NB-1:0]   wcol_q;          // window luma columns written: those < wcol_q
     logic [NB-1:0]   nl_q;            // the window luma column the loader reads next
@@ -372,7 +374,7 @@ module mcadsw_census #(
         if (c == KCB'(k))
           for (int dx = 0; dx < 5; dx++) chunk_rows[dx*KW +: KW] = lcols[dx*LW + k*RCH*8 +: KW];
     endfunction
-    assign hb      = 2'(3'd4 - hn_q);
+    assign hb      = 2'(3'd4 - col_left);
     assign lk_next = NB'(lk) + NB'(issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1));
     assign ki0     = cfg_cont_i ? XB'(COLS - BLOCK) : '0;
     assign lk0     = NB'(cfg_ofs_i) + NB'((ki0 < cfg_lo_x_i) ? cfg_lo_x_i : ki0);
@@ -387,7 +389,6 @@ module mcadsw_census #(
     end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        hn_q     <= '0;
         hstrip_q <= '0;
         wcol_q   <= '0;
         nl_q     <= '0;
@@ -395,24 +396,18 @@ module mcadsw_census #(
       end else begin
         if (issue) ph_q <= '0;
         else if (kern_win && ph_q != KCB'(KCH - 1)) ph_q <= ph_q + KCB'(1);
-        if (pix_fire && strip_end) begin
-          hn_q     <= 3'd4;
-          hstrip_q <= wstrip;
-        end else if (hn_q != '0) begin
-          hn_q <= hn_q - 3'd1;
-        end
+        if (pix_fire && strip_end) hstrip_q <= wstrip;
         if (state_q == IDLE && cfg_valid_i) begin
           wcol_q <= NB'({cfg_first_i, 2'b00});
           nl_q   <= lk0;
         end else begin
-          if (state_q == RUN && hn_q != '0) wcol_q <= wcol_q + NB'(1);
+          if (state_q == RUN && col_left != '0) wcol_q <= wcol_q + NB'(1);
           if (load) nl_q <= nl_q + NB'(1);
         end
       end
     end
     always_ff @(posedge clk_i) begin
-      if (pix_fire && strip_end) hold_q <= strip_cols;
-      if (hn_q != '0) lmem[{hstrip_q, hb}] <= hold_q[32'(hb)*LW +: LW];
+      if (col_left != '0) lmem[{hstrip_q, hb}] <= col_word;
       if (load) win_q <= {lmem[LCB'({base_q, 2'b00}) + LCB'(nl_q)], win_q[5*LW-1:LW]};
       for (int k = 0; k < KCH; k++) if (kern_win && ph_q == KCB'(k)) raw_q[k*RCH*CB +: RCH*CB] <= kcodes;
       if (rd_valid_q && rd_fresh_q) col_q <= clamp_rows(raw_q, lo_y_q, hi_y_q);
@@ -420,14 +415,15 @@ module mcadsw_census #(
     assign lsub_q  = '0;
     assign rd_lc_q = '0;
     logic asic_unused;
-    assign asic_unused = ^{lsub_q, rd_lc_q, lc};
+    assign asic_unused = ^{lsub_q, rd_lc_q, lc, strip_cols};
     // The previous block's last column write may share the cycle of the next
     // block's configuration, never its run; the loader starts at a delivered strip.
-    `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && hn_q > 3'd1))
+    `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && col_left > 3'd1))
     `MCADSW_ASSERT(FirstColumnDelivered, !(state_q == IDLE && cfg_valid_i && !cfg_cont_i && lk0 < NB'({cfg_first_i, 2'b00})))
-    `MCADSW_ASSERT(StripsRowsApart, !(pix_fire && strip_end && hn_q != '0))
     `MCADSW_ASSERT(WindowNotAhead, !(state_q == RUN && need_luma && !kfin_q && nl_q > NB'(lk) + NB'(5)))
   end else begin : g_asic_luma
+    logic cols_unused;                    // the stage's columns one a cycle: FPGA target
+    assign cols_unused = ^{col_left, col_word};
     assign luma_ok = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
     assign kern_ok = 1'b1;                // a column's codes in one cycle (KCH = 1)
 

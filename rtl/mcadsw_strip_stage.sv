@@ -13,12 +13,23 @@
 // (the strips before it are still in the input buffer from the previous,
 // horizontally adjacent block: partial column reuse, Sec. IV); every plane
 // then delivers strips first_i .. STRIPS-1.
+//
+// COLUMNS (the FPGA target's input buffers, a column an entry): the finished
+// strip's 4 column words also leave one a cycle in the 4 cycles after its last
+// word (col_left_o = 4 .. 1, column 4 - col_left_o in col_o), from the stage
+// itself rather than a copy of it. The next strip's words, one a cycle at most,
+// overwrite the stage's rows 0 .. 2 by then (column k, presented in the k-th
+// cycle after the last word, meets the next strip's rows 0 .. k - 2), so those
+// rows and the last row (which never enters the stage) are kept apart: 128
+// flip-flops instead of 4 ROWS x 8.
 `default_nettype none
+`include "mcadsw_assert.svh"
 
 module mcadsw_strip_stage #(
   parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,  // rows of a strip
   parameter int STRIPS = 13,                      // strips a plane
   parameter int PLANES = 1,
+  parameter bit COLUMNS = 0,                     // col_o: the columns one a cycle
   parameter int RB     = $clog2(ROWS),
   parameter int SB     = $clog2(STRIPS),
   parameter int PB     = (PLANES > 1) ? $clog2(PLANES) : 1
@@ -33,7 +44,9 @@ module mcadsw_strip_stage #(
   output logic                 done_o,    // this word ends the window
   output logic [PB-1:0]        plane_o,   // plane and strip of the word
   output logic [SB-1:0]        strip_o,
-  output logic [4*ROWS*8-1:0]  cols_o     // column b at b*ROWS*8, row y at byte y
+  output logic [4*ROWS*8-1:0]  cols_o,    // column b at b*ROWS*8, row y at byte y
+  output logic [2:0]           col_left_o,  // COLUMNS: columns still to present, this one included
+  output logic [ROWS*8-1:0]    col_o        // ... column 4 - col_left_o of the last strip
 );
 
   logic [RB-1:0]          row_q;
@@ -81,6 +94,41 @@ module mcadsw_strip_stage #(
   for (genvar b = 0; b < 4; b++) begin : g_col
     assign cols_o[b*ROWS*8 +: (ROWS - 1)*8] = stage_q[b*(ROWS - 1)*8 +: (ROWS - 1)*8];
     assign cols_o[(b*ROWS + ROWS - 1)*8 +: 8] = data_i[b*8 +: 8];
+  end
+
+  if (COLUMNS) begin : g_columns
+    localparam int KEPT = 3;                // rows the next strip reaches before column 3
+    logic [4*KEPT*8-1:0] kept_q;            // rows 0 .. KEPT-1, column b at b*KEPT*8
+    logic [31:0]         last_q;            // the last row, column b at byte b
+    logic [2:0]          left_q;
+    logic [1:0]          b;
+    assign b = 2'(3'd4 - left_q);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni)            left_q <= '0;
+      else if (last_o)        left_q <= 3'd4;
+      else if (left_q != '0)  left_q <= left_q - 3'd1;
+    end
+    always_ff @(posedge clk_i) begin
+      if (last_o) begin
+        for (int i = 0; i < 4; i++) kept_q[i*KEPT*8 +: KEPT*8] <= stage_q[i*(ROWS - 1)*8 +: KEPT*8];
+        last_q <= data_i;
+      end
+    end
+    // An AND-OR select of constant slices.
+    always_comb begin
+      col_o = '0;
+      for (int i = 0; i < 4; i++)
+        col_o = col_o | ({last_q[i*8 +: 8], stage_q[(i*(ROWS - 1) + KEPT)*8 +: (ROWS - 1 - KEPT)*8],
+                          kept_q[i*KEPT*8 +: KEPT*8]} & {(ROWS*8){b == 2'(i)}});
+    end
+    assign col_left_o = left_q;
+    // A strip's columns are out before the next one ends, and its rows KEPT ..
+    // ROWS - 2 stand in the stage until its last column is.
+    `MCADSW_ASSERT(StripsRowsApart, !(last_o && left_q != '0))
+    `MCADSW_ASSERT(KeptRowsSuffice, !(wr_i && left_q > 3'd1 && row_q >= RB'(KEPT)))
+  end else begin : g_no_columns
+    assign col_left_o = '0;
+    assign col_o      = '0;
   end
 
 endmodule

@@ -162,7 +162,9 @@ module mcadsw_weight_gen #(
   assign pix_ready_o = l_busy_q && !(gen_busy && new_idx >= SB'(NEW));
   assign pix_fire    = pix_valid_i && pix_ready_o;
 
-  mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3)) u_stage (
+  logic [2:0]       col_left;               // FPGA target: the strip's columns one a cycle
+  logic [CW-1:0]    col_word;
+  mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3), .COLUMNS(FPGA)) u_stage (
     .clk_i, .rst_ni,
     .start_i (cfg_fire),
     .first_i (cfg_first_i),
@@ -172,7 +174,9 @@ module mcadsw_weight_gen #(
     .done_o  (win_done),
     .plane_o (in_plane),
     .strip_o (in_strip),
-    .cols_o  (strip_cols)
+    .cols_o  (strip_cols),
+    .col_left_o (col_left),
+    .col_o   (col_word)
   );
 
   // ---- Kernel control ------------------------------------------------------------
@@ -319,41 +323,31 @@ module mcadsw_weight_gen #(
 
   if (FPGA) begin : g_fpga_in
     // FPGA target: one RAM a plane, a ring column an entry (4 RS deep, ROWS bytes
-    // wide: block RAM). A finished strip's 4 columns are held and written one a
-    // cycle over the next 4 cycles (a plane's strips are ROWS words apart); the
-    // kernel never reads them that early (ColumnWrittenBeforeRead), so no read
-    // meets the write of its entry (no_rw_check: docs/blocks/fpga_target.md).
+    // wide: block RAM). The strip stage presents a finished strip's 4 columns one
+    // a cycle over the next 4 cycles (COLUMNS); the kernel never reads them that
+    // early (ColumnWrittenBeforeRead), so no read meets the write of its entry
+    // (no_rw_check: docs/blocks/fpga_target.md).
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] y_mem [4*RS];
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] u_mem [4*RS];
     (* ram_style = "block", no_rw_check *) logic [CW-1:0] v_mem [4*RS];
     logic [CW-1:0]   y_rd_q, u_rd_q, v_rd_q;
-    logic [4*CW-1:0] hold_q;                 // the strip's columns, column 0 first
-    logic [2:0]      hn_q;                   // columns still to write (4 .. 0)
     logic [1:0]      hplane_q;
     logic [RSB-1:0]  hstrip_q;
     logic [CB-1:0]   hcol;                   // ring column written
-    assign hcol = CB'(4*32'(hstrip_q) + 4 - 32'(hn_q));
+    assign hcol = CB'(4*32'(hstrip_q) + 4 - 32'(col_left));
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        hn_q     <= '0;
         hplane_q <= '0;
         hstrip_q <= '0;
       end else if (pix_fire && strip_end) begin
-        hn_q     <= 3'd4;
         hplane_q <= in_plane;
         hstrip_q <= wstrip;
-      end else if (hn_q != '0) begin
-        hn_q <= hn_q - 3'd1;
       end
     end
     always_ff @(posedge clk_i) begin
-      if (pix_fire && strip_end) hold_q <= strip_cols;
-      else if (hn_q != '0) hold_q <= hold_q >> CW;
-    end
-    always_ff @(posedge clk_i) begin
-      if (hn_q != '0 && hplane_q == 2'd0) y_mem[hcol] <= hold_q[CW-1:0];
-      if (hn_q != '0 && hplane_q == 2'd1) u_mem[hcol] <= hold_q[CW-1:0];
-      if (hn_q != '0 && hplane_q == 2'd2) v_mem[hcol] <= hold_q[CW-1:0];
+      if (col_left != '0 && hplane_q == 2'd0) y_mem[hcol] <= col_word;
+      if (col_left != '0 && hplane_q == 2'd1) u_mem[hcol] <= col_word;
+      if (col_left != '0 && hplane_q == 2'd2) v_mem[hcol] <= col_word;
     end
     always_ff @(posedge clk_i) begin
       if (state_q == VERT) begin
@@ -363,10 +357,9 @@ module mcadsw_weight_gen #(
       end
     end
     assign column = {v_rd_q, u_rd_q, y_rd_q};
-    logic sel_unused;
-    assign sel_unused = ^s1_sel_q;
-    `MCADSW_ASSERT(StripsRowsApart, !(pix_fire && strip_end && hn_q != '0))
-    `MCADSW_ASSERT(ColumnWrittenBeforeRead, !(state_q == VERT && hn_q != '0 && rcol[CB-1:2] == (CB-2)'(hstrip_q)))
+    logic sel_unused;                        // the ASIC target's column select and strip word
+    assign sel_unused = ^{s1_sel_q, strip_cols};
+    `MCADSW_ASSERT(ColumnWrittenBeforeRead, !(state_q == VERT && col_left != '0 && rcol[CB-1:2] == (CB-2)'(hstrip_q)))
   end else begin : g_asic_in
     // ASIC target: one RAM a plane, entry t the 4 column words of ring strip t
     // (column b at b*CW, row y at byte y); the kernel reads a whole strip and
@@ -375,6 +368,8 @@ module mcadsw_weight_gen #(
     logic [4*CW-1:0] u_mem [RS];
     logic [4*CW-1:0] v_mem [RS];
     logic [4*CW-1:0] y_rd_q, u_rd_q, v_rd_q;
+    logic cols_unused;                       // the stage's columns one a cycle: FPGA target
+    assign cols_unused = ^{col_left, col_word};
     always_ff @(posedge clk_i) begin
       if (pix_fire && strip_end && in_plane == 2'd0) y_mem[wstrip] <= strip_cols;
       if (pix_fire && strip_end && in_plane == 2'd1) u_mem[wstrip] <= strip_cols;
@@ -491,12 +486,6 @@ module mcadsw_weight_gen #(
   // entry position (LANES and HAGG of them, an entry a word, no partial writes),
   // all read at the same address.
   localparam int VENTRY = WINDOW * WB;       // one vertical entry
-  localparam int VAB = $clog2(NSLOT * VGRP);
-  localparam int HAB = $clog2(NSLOT * HGRP);
-  logic [VAB-1:0] k_vaddr;
-  logic [HAB-1:0] k_haddr;
-  assign k_vaddr = VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q));
-  assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
 
   if (FPGA) begin : g_fpga_kernel
     // FPGA target: no window select of pixels, and an entry in KPH cycles. The
@@ -514,6 +503,7 @@ module mcadsw_weight_gen #(
     localparam int WPX = WINDOW * PW;
     localparam int PHB = KPH > 1 ? $clog2(KPH) : 1;
     localparam int SW  = 3 + SLB;            // stage-2 flags: vertical, horizontal, done, slot
+    localparam int FAB = SLB + GB;           // weight-buffer address {slot, word}: no product
     logic [WPX-1:0] k_px_q;                  // the window's pixels, folded (shifted by NU a cycle)
     logic [PW-1:0]  k_ctr_q;                 // the centre
     logic [RB-1:0]  k_at_q;                  // row r (vertical) or pixel x (horizontal)
@@ -558,9 +548,13 @@ module mcadsw_weight_gen #(
                                                     input logic [NTHR*DCB-1:0] thr);
       for (int k = 0; k < NU; k++) unit_codes[k*WB +: WB] = code_of(cdist(px[k*PW +: PW], ctr), thr);
     endfunction
-    // Code j of the horizontal entry: unit (j + x) mod WINDOW, a rotation.
+    // Code j of the horizontal entry: unit (j + x) mod WINDOW, a rotation by x
+    // codes, one constant rotation a bit of x (x < WINDOW; no product x * WB, which
+    // Yosys would place on a multiplier).
     function automatic logic [ENTRY-1:0] unfold(input logic [ENTRY-1:0] codes, input logic [RB-1:0] x);
-      unfold = ENTRY'({codes, codes} >> (32'(x)*WB));
+      unfold = codes;
+      for (int b = 0; b < RB; b++)
+        if (x[b]) unfold = ENTRY'({unfold, unfold} >> ((1 << b)*WB));
     endfunction
     // Stage 2 takes KPH cycles, NU codes a cycle (kst: its flags, delayed a
     // cycle at a time; the entry's tags and centre stand until its last cycle
@@ -576,8 +570,7 @@ module mcadsw_weight_gen #(
     logic              k3_vert_q, k3_horz_q, k3_done_q;
     logic [SLB-1:0]    k3_slot_q;
     logic [2:0]        k3_pos_q;
-    logic [VAB-1:0]    k3_vaddr_q;
-    logic [HAB-1:0]    k3_haddr_q;
+    logic [FAB-1:0]    k3_addr_q;
     assign kst[SW-1:0] = {k_vert_q, k_horz_q, k_done_q, k_slot2_q};
     for (genvar p = 1; p < KPH; p++) begin : g_kst
       always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -623,8 +616,7 @@ module mcadsw_weight_gen #(
         k3_codes_q <= k_codes[ENTRY-1:0];
         k3_at_q    <= k_at_q;
         k3_pos_q   <= k_pos_q;
-        k3_vaddr_q <= k_vaddr;
-        k3_haddr_q <= k_haddr;
+        k3_addr_q  <= {k_slot_q, k_grp_q};
       end
     end
     assign w_done = k3_done_q;
@@ -633,31 +625,36 @@ module mcadsw_weight_gen #(
     `MCADSW_ASSERT(OneEntryInStage2, (k_in_stage & (k_in_stage - KPH'(1))) == '0)
     logic [VENTRY-1:0] k_ventry;
     logic [ENTRY-1:0]  k_hentry;
-    logic [VAB-1:0]    vrd_addr;
-    logic [HAB-1:0]    hrd_addr;
-    assign vrd_addr = VAB'(32'(vrd_slot_i)*VGRP + 32'(vrd_grp_i));
-    assign hrd_addr = HAB'(32'(hrd_slot_i)*HGRP + 32'(hrd_grp_i));
+    logic [FAB-1:0]    vrd_addr, hrd_addr;
+    assign vrd_addr = {vrd_slot_i, vrd_grp_i};
+    assign hrd_addr = {hrd_slot_i, hrd_grp_i};
     assign k_ventry = k3_codes_q;
     assign k_hentry = unfold(k3_codes_q, k3_at_q);
     for (genvar e = 0; e < LANES; e++) begin : g_vmem
-      (* ram_style = "block", no_rw_check *) logic [VENTRY-1:0] mem_q [NSLOT*VGRP];
+      (* ram_style = "block", no_rw_check *) logic [VENTRY-1:0] mem_q [2**FAB];
       always_ff @(posedge clk_i) begin
-        if (k3_vert_q && k3_pos_q == 3'(e)) mem_q[k3_vaddr_q] <= k_ventry;
+        if (k3_vert_q && k3_pos_q == 3'(e)) mem_q[k3_addr_q] <= k_ventry;
         if (vrd_en_i) wv_o[e*VENTRY +: VENTRY] <= mem_q[vrd_addr];
       end
     end
     for (genvar e = 0; e < HAGG; e++) begin : g_hmem
-      (* ram_style = "block", no_rw_check *) logic [ENTRY-1:0] mem_q [NSLOT*HGRP];
+      (* ram_style = "block", no_rw_check *) logic [ENTRY-1:0] mem_q [2**FAB];
       always_ff @(posedge clk_i) begin
-        if (k3_horz_q && k3_pos_q == 3'(e)) mem_q[k3_haddr_q] <= k_hentry;
+        if (k3_horz_q && k3_pos_q == 3'(e)) mem_q[k3_addr_q] <= k_hentry;
         if (hrd_en_i) wh_o[e*ENTRY +: ENTRY] <= mem_q[hrd_addr];
       end
     end
     // The kernel fills a slot the aggregator does not read: no read meets the
     // write of its entry (the RAMs are no_rw_check, docs/blocks/fpga_target.md).
-    `MCADSW_ASSERT(NoVertReadOfEntryWritten, !(k3_vert_q && vrd_en_i && k3_vaddr_q == vrd_addr))
-    `MCADSW_ASSERT(NoHorzReadOfEntryWritten, !(k3_horz_q && hrd_en_i && k3_haddr_q == hrd_addr))
+    `MCADSW_ASSERT(NoVertReadOfEntryWritten, !(k3_vert_q && vrd_en_i && k3_addr_q == vrd_addr))
+    `MCADSW_ASSERT(NoHorzReadOfEntryWritten, !(k3_horz_q && hrd_en_i && k3_addr_q == hrd_addr))
   end else begin : g_asic_kernel
+    localparam int VAB = $clog2(NSLOT * VGRP);
+    localparam int HAB = $clog2(NSLOT * HGRP);
+    logic [VAB-1:0] k_vaddr;
+    logic [HAB-1:0] k_haddr;
+    assign k_vaddr = VAB'(32'(k_slot_q)*VGRP + 32'(k_grp_q));
+    assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
     assign w_done = k_done_q;
     assign w_slot = k_slot2_q;
     assign k_adv  = 1'b1;
