@@ -252,7 +252,8 @@ module mcadsw_census #(
   // ---- Input buffer -------------------------------------------------------------------
   logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
   logic              in_plane_unused;
-  logic [2:0]        col_left;         // FPGA target: the strip's columns one a cycle
+  logic              col_valid;        // FPGA target: the strip's columns one a cycle
+  logic [1:0]        col_b;            // ... column col_b of the last strip
   logic [LW-1:0]     col_word;
 
   mcadsw_strip_stage #(.ROWS(LROWS), .STRIPS(STRIPS), .PLANES(1), .COLUMNS(FPGA)) u_stage (
@@ -266,7 +267,8 @@ module mcadsw_census #(
     .plane_o (in_plane_unused),
     .strip_o (in_strip),
     .cols_o  (strip_cols),
-    .col_left_o (col_left),
+    .col_valid_o (col_valid),
+    .col_n_o (col_b),
     .col_o   (col_word)
   );
 
@@ -353,7 +355,6 @@ module mcadsw_census #(
     localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
     logic [LW-1:0]   lmem [4*LS];
     logic [LSB-1:0]  hstrip_q;        // the ring strip of the columns written
-    logic [1:0]      hb;              // the column written, in its strip
     logic [NB-1:0]   wcol_q;          // window luma columns written: those < wcol_q
     logic [NB-1:0]   nl_q;            // the window luma column the loader reads next
     logic [5*LW-1:0] win_q;           // luma columns nl - 5 .. nl - 1, the oldest at 0
@@ -374,7 +375,6 @@ module mcadsw_census #(
         if (c == KCB'(k))
           for (int dx = 0; dx < 5; dx++) chunk_rows[dx*KW +: KW] = lcols[dx*LW + k*RCH*8 +: KW];
     endfunction
-    assign hb      = 2'(3'd4 - col_left);
     assign lk_next = NB'(lk) + NB'(issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1));
     assign ki0     = cfg_cont_i ? XB'(COLS - BLOCK) : '0;
     assign lk0     = NB'(cfg_ofs_i) + NB'((ki0 < cfg_lo_x_i) ? cfg_lo_x_i : ki0);
@@ -401,13 +401,13 @@ module mcadsw_census #(
           wcol_q <= NB'({cfg_first_i, 2'b00});
           nl_q   <= lk0;
         end else begin
-          if (state_q == RUN && col_left != '0) wcol_q <= wcol_q + NB'(1);
+          if (state_q == RUN && col_valid) wcol_q <= wcol_q + NB'(1);
           if (load) nl_q <= nl_q + NB'(1);
         end
       end
     end
     always_ff @(posedge clk_i) begin
-      if (col_left != '0) lmem[{hstrip_q, hb}] <= col_word;
+      if (col_valid) lmem[{hstrip_q, col_b}] <= col_word;
       if (load) win_q <= {lmem[LCB'({base_q, 2'b00}) + LCB'(nl_q)], win_q[5*LW-1:LW]};
       for (int k = 0; k < KCH; k++) if (kern_win && ph_q == KCB'(k)) raw_q[k*RCH*CB +: RCH*CB] <= kcodes;
       if (rd_valid_q && rd_fresh_q) col_q <= clamp_rows(raw_q, lo_y_q, hi_y_q);
@@ -418,12 +418,12 @@ module mcadsw_census #(
     assign asic_unused = ^{lsub_q, rd_lc_q, lc, strip_cols};
     // The previous block's last column write may share the cycle of the next
     // block's configuration, never its run; the loader starts at a delivered strip.
-    `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && col_left > 3'd1))
+    `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && col_valid && col_b != 2'd3))
     `MCADSW_ASSERT(FirstColumnDelivered, !(state_q == IDLE && cfg_valid_i && !cfg_cont_i && lk0 < NB'({cfg_first_i, 2'b00})))
     `MCADSW_ASSERT(WindowNotAhead, !(state_q == RUN && need_luma && !kfin_q && nl_q > NB'(lk) + NB'(5)))
   end else begin : g_asic_luma
     logic cols_unused;                    // the stage's columns one a cycle: FPGA target
-    assign cols_unused = ^{col_left, col_word};
+    assign cols_unused = ^{col_valid, col_b, col_word};
     assign luma_ok = !need_luma || SB'(lk[KB-1:2]) + SB'(1) < wcnt_q;
     assign kern_ok = 1'b1;                // a column's codes in one cycle (KCH = 1)
 

@@ -14,14 +14,16 @@
 // horizontally adjacent block: partial column reuse, Sec. IV); every plane
 // then delivers strips first_i .. STRIPS-1.
 //
-// COLUMNS (the FPGA target's input buffers, a column an entry): the finished
-// strip's 4 column words also leave one a cycle in the 4 cycles after its last
-// word (col_left_o = 4 .. 1, column 4 - col_left_o in col_o), from the stage
-// itself rather than a copy of it. The next strip's words, one a cycle at most,
-// overwrite the stage's rows 0 .. 2 by then (column k, presented in the k-th
-// cycle after the last word, meets the next strip's rows 0 .. k - 2), so those
-// rows and the last row (which never enters the stage) are kept apart: 128
-// flip-flops instead of 4 ROWS x 8.
+// COLUMNS (the FPGA target's input buffers, a column chunk an entry): the
+// finished strip's 4 column words also leave in CHUNKS chunks of ROWS / CHUNKS
+// rows, one chunk of one column a cycle in the 4 CHUNKS cycles after its last
+// word, chunk by chunk (col_n_o = 4 c + b: chunk c of column b in col_o), from
+// the stage itself rather than a copy of it. The next strip's words, one a cycle
+// at most, overwrite the stage's rows 0 .. 2 before chunk 0 of column 3 leaves
+// (word n, presented in the (n+1)-th cycle after the last word, meets the next
+// strip's rows 0 .. n - 1), so those rows and the last row (which never enters
+// the stage) are kept apart: 128 flip-flops instead of 4 ROWS x 8. The later
+// chunks' rows (from ROWS / CHUNKS on) stand until they leave.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -29,7 +31,9 @@ module mcadsw_strip_stage #(
   parameter int ROWS   = mcadsw_pkg::BLOCK_COLS,  // rows of a strip
   parameter int STRIPS = 13,                      // strips a plane
   parameter int PLANES = 1,
-  parameter bit COLUMNS = 0,                     // col_o: the columns one a cycle
+  parameter bit COLUMNS = 0,                     // col_o: the column chunks one a cycle
+  parameter int CHUNKS = 1,                      // chunks a column
+  parameter int NB     = $clog2(4 * CHUNKS),     // col_n_o
   parameter int RB     = $clog2(ROWS),
   parameter int SB     = $clog2(STRIPS),
   parameter int PB     = (PLANES > 1) ? $clog2(PLANES) : 1
@@ -45,9 +49,14 @@ module mcadsw_strip_stage #(
   output logic [PB-1:0]        plane_o,   // plane and strip of the word
   output logic [SB-1:0]        strip_o,
   output logic [4*ROWS*8-1:0]  cols_o,    // column b at b*ROWS*8, row y at byte y
-  output logic [2:0]           col_left_o,  // COLUMNS: columns still to present, this one included
-  output logic [ROWS*8-1:0]    col_o        // ... column 4 - col_left_o of the last strip
+  output logic                 col_valid_o,         // COLUMNS: col_o holds ...
+  output logic [NB-1:0]        col_n_o,             // ... chunk col_n_o / 4 of column col_n_o % 4
+  output logic [ROWS/CHUNKS*8-1:0] col_o            //     of the last strip
 );
+
+  if (COLUMNS && (ROWS % CHUNKS != 0 || ROWS / CHUNKS < 4 * CHUNKS - 1)) begin : g_bad_param
+    mcadsw_error_strip_stage_chunks u_error ();   // a later chunk's rows overwritten before they leave
+  end
 
   logic [RB-1:0]          row_q;
   logic [SB-1:0]          first_q;
@@ -97,16 +106,25 @@ module mcadsw_strip_stage #(
   end
 
   if (COLUMNS) begin : g_columns
-    localparam int KEPT = 3;                // rows the next strip reaches before column 3
+    localparam int KEPT = 3;                // rows the next strip reaches before chunk 0 of column 3
+    localparam int CR   = ROWS / CHUNKS;    // rows a chunk
+    localparam int NW   = 4 * CHUNKS;       // words presented a strip
     logic [4*KEPT*8-1:0] kept_q;            // rows 0 .. KEPT-1, column b at b*KEPT*8
     logic [31:0]         last_q;            // the last row, column b at byte b
-    logic [2:0]          left_q;
-    logic [1:0]          b;
-    assign b = 2'(3'd4 - left_q);
+    logic                valid_q;
+    logic [NB-1:0]       n_q;
+    logic [ROWS*8-1:0]   col;               // column n_q % 4
     always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni)            left_q <= '0;
-      else if (last_o)        left_q <= 3'd4;
-      else if (left_q != '0)  left_q <= left_q - 3'd1;
+      if (!rst_ni) begin
+        valid_q <= 1'b0;
+        n_q     <= '0;
+      end else if (last_o) begin
+        valid_q <= 1'b1;
+        n_q     <= '0;
+      end else if (valid_q) begin
+        valid_q <= n_q != NB'(NW - 1);
+        n_q     <= n_q + NB'(1);
+      end
     end
     always_ff @(posedge clk_i) begin
       if (last_o) begin
@@ -114,21 +132,27 @@ module mcadsw_strip_stage #(
         last_q <= data_i;
       end
     end
-    // An AND-OR select of constant slices.
+    // AND-OR selects of constant slices: the column, then its chunk.
     always_comb begin
-      col_o = '0;
+      col = '0;
       for (int i = 0; i < 4; i++)
-        col_o = col_o | ({last_q[i*8 +: 8], stage_q[(i*(ROWS - 1) + KEPT)*8 +: (ROWS - 1 - KEPT)*8],
-                          kept_q[i*KEPT*8 +: KEPT*8]} & {(ROWS*8){b == 2'(i)}});
+        col = col | ({last_q[i*8 +: 8], stage_q[(i*(ROWS - 1) + KEPT)*8 +: (ROWS - 1 - KEPT)*8],
+                      kept_q[i*KEPT*8 +: KEPT*8]} & {(ROWS*8){n_q[1:0] == 2'(i)}});
+      col_o = '0;
+      for (int c = 0; c < CHUNKS; c++)
+        col_o = col_o | (col[c*CR*8 +: CR*8] & {(CR*8){32'(n_q) / 4 == c}});
     end
-    assign col_left_o = left_q;
-    // A strip's columns are out before the next one ends, and its rows KEPT ..
-    // ROWS - 2 stand in the stage until its last column is.
-    `MCADSW_ASSERT(StripsRowsApart, !(last_o && left_q != '0))
-    `MCADSW_ASSERT(KeptRowsSuffice, !(wr_i && left_q > 3'd1 && row_q >= RB'(KEPT)))
+    assign col_valid_o = valid_q;
+    assign col_n_o     = n_q;
+    // A strip's words are out before the next one ends, and no word reaches a row
+    // KEPT .. ROWS - 2 that a chunk still to leave reads from the stage.
+    `MCADSW_ASSERT(StripsRowsApart, !(last_o && valid_q))
+    `MCADSW_ASSERT(KeptRowsSuffice, !(wr_i && !last_o && valid_q && row_q >= RB'(KEPT) &&
+                                     4*(32'(row_q) / CR) + 3 > 32'(n_q)))
   end else begin : g_no_columns
-    assign col_left_o = '0;
-    assign col_o      = '0;
+    assign col_valid_o = 1'b0;
+    assign col_n_o     = '0;
+    assign col_o       = '0;
   end
 
 endmodule

@@ -124,11 +124,14 @@ module mcadsw_weight_gen #(
   localparam int RADIUS = WINDOW / 2;
   localparam int ENTRY  = WINDOW * WB;              // one weight-buffer entry
   localparam int RSB    = $clog2(RS);
+  localparam int CR     = ROWS / KPH;               // rows a chunk of a column (ASIC: ROWS)
+  localparam int PHB    = KPH > 1 ? $clog2(KPH) : 1;  // a cycle of an entry, a chunk
 
   if (COLS % 4 != 0 || WPR * 4 < COLS + 3 || ROWS != BLOCK + WINDOW - 1 ||
       COLS != BLOCK + WINDOW - 1 || NTHR != (1 << WB) - 1 || VGRP * LANES != COLS ||
       HGRP * HAGG != BLOCK || LANES != 8 || NEW < (BLOCK + 3) / 4 ||
-      ROWS - WINDOW > WINDOW || NSLOT < 2 || KPH < 1 || (!FPGA && KPH != 1)) begin : g_bad_param
+      ROWS - WINDOW > WINDOW || NSLOT < 2 || KPH < 1 || (!FPGA && KPH != 1) ||
+      ROWS % KPH != 0 || (KPH > 1 && CR > WINDOW)) begin : g_bad_param
     mcadsw_error_weight_gen_geometry u_error ();
   end
 
@@ -162,9 +165,11 @@ module mcadsw_weight_gen #(
   assign pix_ready_o = l_busy_q && !(gen_busy && new_idx >= SB'(NEW));
   assign pix_fire    = pix_valid_i && pix_ready_o;
 
-  logic [2:0]       col_left;               // FPGA target: the strip's columns one a cycle
-  logic [CW-1:0]    col_word;
-  mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3), .COLUMNS(FPGA)) u_stage (
+  localparam int CNB = $clog2(4 * KPH);
+  logic             col_valid;              // FPGA target: the strip's column chunks one a cycle:
+  logic [CNB-1:0]   col_n;                  // chunk col_n / 4 of column col_n % 4
+  logic [CR*8-1:0]  col_word;
+  mcadsw_strip_stage #(.ROWS(ROWS), .STRIPS(WPR), .PLANES(3), .COLUMNS(FPGA), .CHUNKS(KPH)) u_stage (
     .clk_i, .rst_ni,
     .start_i (cfg_fire),
     .first_i (cfg_first_i),
@@ -175,7 +180,8 @@ module mcadsw_weight_gen #(
     .plane_o (in_plane),
     .strip_o (in_strip),
     .cols_o  (strip_cols),
-    .col_left_o (col_left),
+    .col_valid_o (col_valid),
+    .col_n_o (col_n),
     .col_o   (col_word)
   );
 
@@ -198,7 +204,9 @@ module mcadsw_weight_gen #(
   logic [SLB-1:0] k_slot2_q;
   logic           w_done;          // the last write of a row done (stage 2, FPGA: 3) ...
   logic [SLB-1:0] w_slot;          // ... and its slot
-  logic           k_adv;           // the pass moves to its next column or pixel (ASIC: every cycle)
+  logic [PHB-1:0] kph_q;           // the pass's cycle of its column or pixel (0 .. KPH-1; ASIC 0)
+  logic           k_adv;           // its last: the pass moves to its next column or pixel
+  logic           k_first;         // its first
   logic           k_busy;          // a row's last entry still in the kernel's stages
 
   // The slot after s: slots are used in turn.
@@ -303,6 +311,17 @@ module mcadsw_weight_gen #(
     end
   end
 
+  if (KPH > 1) begin : g_kph
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) kph_q <= '0;
+      else         kph_q <= (state_q == VERT || state_q == HORZ) && !k_adv ? kph_q + PHB'(1) : '0;
+    end
+  end else begin : g_kph1
+    assign kph_q = '0;
+  end
+  assign k_adv   = kph_q == PHB'(KPH - 1);
+  assign k_first = kph_q == '0;
+
   assign busy_o      = l_busy_q || pend_q || gen_busy || k_busy;
   assign row_ready_o = rdy_q[rslot_q];
   assign rd_slot_o   = rslot_q;
@@ -318,23 +337,37 @@ module mcadsw_weight_gen #(
   assign rcol   = CB'(wrap(4*32'(g_base_q) + 32'(g_ofs_q) + 32'(cc), 4*RS));
   assign wstrip = RSB'(wrap(32'(l_base_q) + 32'(in_strip), RS));
 
-  logic [3*CW-1:0] column;                   // stage 1: the column read, {V, U, Y}
-  logic [1:0]      s1_sel_q;                 // ASIC target: its column in the strip
+  // The vertical pass reads a column in KPH chunks of CR rows, a chunk a cycle,
+  // the chunk with the centre row r + RADIUS first (k_chunk); ASIC target: one.
+  logic [3*CR*8-1:0] chunk;                  // stage 1: the chunk read, {V, U, Y}
+  logic [1:0]        s1_sel_q;               // ASIC target: its column in the strip
+  logic [PHB-1:0]    k_chunk;                // the chunk the vertical pass reads
+
+  // The chunk of a column that holds its centre row r + RADIUS.
+  function automatic int centre_chunk(input logic [RB-1:0] r);
+    centre_chunk = 0;
+    for (int o = 0; o < BLOCK; o++) if (r == RB'(o)) centre_chunk = (o + RADIUS) / CR;
+  endfunction
+  assign k_chunk = PHB'(wrap(centre_chunk(r_q) + 32'(kph_q), KPH));
 
   if (FPGA) begin : g_fpga_in
-    // FPGA target: one RAM a plane, a ring column an entry (4 RS deep, ROWS bytes
-    // wide: block RAM). The strip stage presents a finished strip's 4 columns one
-    // a cycle over the next 4 cycles (COLUMNS); the kernel never reads them that
-    // early (ColumnWrittenBeforeRead), so no read meets the write of its entry
+    // FPGA target: one RAM a plane, a chunk of a ring column an entry (address
+    // {ring column, chunk}; 4 RS x KPH entries of CR bytes: block RAM). The strip
+    // stage presents a finished strip's column chunks one a cycle over the next
+    // 4 KPH cycles (COLUMNS); the kernel never reads them that early
+    // (ColumnWrittenBeforeRead), so no read meets the write of its entry
     // (no_rw_check: docs/blocks/fpga_target.md).
-    (* ram_style = "block", no_rw_check *) logic [CW-1:0] y_mem [4*RS];
-    (* ram_style = "block", no_rw_check *) logic [CW-1:0] u_mem [4*RS];
-    (* ram_style = "block", no_rw_check *) logic [CW-1:0] v_mem [4*RS];
-    logic [CW-1:0]   y_rd_q, u_rd_q, v_rd_q;
+    localparam int CHB = $clog2(KPH);        // chunk bits of an address (0: KPH = 1)
+    localparam int AB  = CB + CHB;
+    (* ram_style = "block", no_rw_check *) logic [CR*8-1:0] y_mem [(4*RS) << CHB];
+    (* ram_style = "block", no_rw_check *) logic [CR*8-1:0] u_mem [(4*RS) << CHB];
+    (* ram_style = "block", no_rw_check *) logic [CR*8-1:0] v_mem [(4*RS) << CHB];
+    logic [CR*8-1:0] y_rd_q, u_rd_q, v_rd_q;
     logic [1:0]      hplane_q;
     logic [RSB-1:0]  hstrip_q;
-    logic [CB-1:0]   hcol;                   // ring column written
-    assign hcol = CB'(4*32'(hstrip_q) + 4 - 32'(col_left));
+    logic [AB-1:0]   waddr, raddr;           // {ring column, chunk}
+    assign waddr = AB'(((4*32'(hstrip_q) + 32'(col_n[1:0])) << CHB) + (32'(col_n) >> 2));
+    assign raddr = AB'((32'(rcol) << CHB) + 32'(k_chunk));
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         hplane_q <= '0;
@@ -345,21 +378,21 @@ module mcadsw_weight_gen #(
       end
     end
     always_ff @(posedge clk_i) begin
-      if (col_left != '0 && hplane_q == 2'd0) y_mem[hcol] <= col_word;
-      if (col_left != '0 && hplane_q == 2'd1) u_mem[hcol] <= col_word;
-      if (col_left != '0 && hplane_q == 2'd2) v_mem[hcol] <= col_word;
+      if (col_valid && hplane_q == 2'd0) y_mem[waddr] <= col_word;
+      if (col_valid && hplane_q == 2'd1) u_mem[waddr] <= col_word;
+      if (col_valid && hplane_q == 2'd2) v_mem[waddr] <= col_word;
     end
     always_ff @(posedge clk_i) begin
       if (state_q == VERT) begin
-        y_rd_q <= y_mem[rcol];
-        u_rd_q <= u_mem[rcol];
-        v_rd_q <= v_mem[rcol];
+        y_rd_q <= y_mem[raddr];
+        u_rd_q <= u_mem[raddr];
+        v_rd_q <= v_mem[raddr];
       end
     end
-    assign column = {v_rd_q, u_rd_q, y_rd_q};
+    assign chunk = {v_rd_q, u_rd_q, y_rd_q};
     logic sel_unused;                        // the ASIC target's column select and strip word
     assign sel_unused = ^{s1_sel_q, strip_cols};
-    `MCADSW_ASSERT(ColumnWrittenBeforeRead, !(state_q == VERT && col_left != '0 && rcol[CB-1:2] == (CB-2)'(hstrip_q)))
+    `MCADSW_ASSERT(ColumnWrittenBeforeRead, !(state_q == VERT && col_valid && rcol[CB-1:2] == (CB-2)'(hstrip_q)))
   end else begin : g_asic_in
     // ASIC target: one RAM a plane, entry t the 4 column words of ring strip t
     // (column b at b*CW, row y at byte y); the kernel reads a whole strip and
@@ -368,8 +401,8 @@ module mcadsw_weight_gen #(
     logic [4*CW-1:0] u_mem [RS];
     logic [4*CW-1:0] v_mem [RS];
     logic [4*CW-1:0] y_rd_q, u_rd_q, v_rd_q;
-    logic cols_unused;                       // the stage's columns one a cycle: FPGA target
-    assign cols_unused = ^{col_left, col_word};
+    logic cols_unused;                       // the stage's chunks one a cycle: FPGA target
+    assign cols_unused = ^{col_valid, col_n, col_word, k_chunk};
     always_ff @(posedge clk_i) begin
       if (pix_fire && strip_end && in_plane == 2'd0) y_mem[wstrip] <= strip_cols;
       if (pix_fire && strip_end && in_plane == 2'd1) u_mem[wstrip] <= strip_cols;
@@ -386,16 +419,19 @@ module mcadsw_weight_gen #(
       bank_word = '0;
       for (int i = 0; i < 4; i++) bank_word = bank_word | (w[i*CW +: CW] & {CW{b == 2'(i)}});
     endfunction
-    assign column = {bank_word(v_rd_q, s1_sel_q), bank_word(u_rd_q, s1_sel_q),
-                     bank_word(y_rd_q, s1_sel_q)};
+    assign chunk = {bank_word(v_rd_q, s1_sel_q), bank_word(u_rd_q, s1_sel_q),
+                    bank_word(y_rd_q, s1_sel_q)};
   end
 
   // ---- Kernel pipeline -------------------------------------------------------------
-  // Stage 1 (vertical only): the column from the input buffer; its window and
-  // centre pixel. Stage 2: distances, codes, one weight-buffer entry.
+  // Stage 1 (vertical only): a chunk of the column from the input buffer (its
+  // first: the centre pixel). Stage 2: distances, codes, one weight-buffer entry
+  // (FPGA target: over KPH cycles, a chunk a cycle).
   localparam int PW  = 24;                   // Y, U, V of one pixel
   localparam int WPW = WINDOW * PW;          // a window of pixels
-  logic           s1_q;                      // stage 1 holds a vertical column
+  logic           s1_q;                      // stage 1 holds a chunk of a vertical column ...
+  logic           s1_first_q;                // ... its first
+  logic [PHB-1:0] s1_ch_q;                   // ... which
   logic [RB-1:0]  s1_r_q;
   logic [XB-1:0]  s1_c_q;
   logic [SLB-1:0] s1_slot_q;
@@ -422,12 +458,13 @@ module mcadsw_weight_gen #(
     code_of = WB'(NTHR) - passed;
   endfunction
 
-  // The centre pixel r + RADIUS of the column goes into the horizontal row buffer.
-  function automatic logic [PW-1:0] centre_pixel(input logic [3*CW-1:0] col, input logic [RB-1:0] r);
+  // The centre pixel r + RADIUS of the column, from the chunk that holds it (the
+  // vertical pass's first), goes into the horizontal row buffer.
+  function automatic logic [PW-1:0] centre_pixel(input logic [3*CR*8-1:0] ch, input logic [RB-1:0] r);
     centre_pixel = '0;
     for (int o = 0; o < BLOCK; o++)
-      centre_pixel = centre_pixel | ({col[2*CW + (o + RADIUS)*8 +: 8], col[CW + (o + RADIUS)*8 +: 8],
-                                      col[(o + RADIUS)*8 +: 8]} & {PW{r == RB'(o)}});
+      centre_pixel = centre_pixel | ({ch[2*CR*8 + ((o + RADIUS) % CR)*8 +: 8], ch[CR*8 + ((o + RADIUS) % CR)*8 +: 8],
+                                      ch[((o + RADIUS) % CR)*8 +: 8]} & {PW{r == RB'(o)}});
   endfunction
 
   logic           k_vert_q, k_horz_q;        // stage 2 writes a vertical / horizontal entry
@@ -438,6 +475,8 @@ module mcadsw_weight_gen #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       s1_q      <= 1'b0;
+      s1_first_q <= 1'b0;
+      s1_ch_q   <= '0;
       s1_sel_q  <= '0;
       s1_r_q    <= '0;
       s1_c_q    <= '0;
@@ -450,33 +489,36 @@ module mcadsw_weight_gen #(
       k_done_q  <= 1'b0;
       k_slot2_q <= '0;
     end else begin
-      s1_q      <= state_q == VERT && k_adv;
+      s1_q      <= state_q == VERT;
+      s1_first_q <= k_first;
+      s1_ch_q   <= k_chunk;
       s1_sel_q  <= rcol[1:0];
       s1_r_q    <= r_q;
       s1_c_q    <= c_q;
       s1_slot_q <= wslot_q;
-      k_vert_q  <= s1_q;
-      k_horz_q  <= state_q == HORZ && k_adv;
-      if (s1_q) begin
+      // An entry's tags with its first chunk (vertical) or cycle (horizontal).
+      k_vert_q  <= s1_q && s1_first_q;
+      k_horz_q  <= state_q == HORZ && k_first;
+      if (s1_q && s1_first_q) begin
         k_slot_q <= s1_slot_q;
         k_grp_q  <= GB'(s1_c_q[XB-1:3]);
         k_pos_q  <= s1_c_q[2:0];
-      end else if (state_q == HORZ && k_adv) begin
+      end else if (state_q == HORZ && k_first) begin
         k_slot_q <= wslot_q;
         k_grp_q  <= hg_q;
         k_pos_q  <= 3'(hm_q);
       end
       // The row is complete with its last horizontal entry.
-      k_done_q  <= state_q == HORZ && k_adv && c_q == XB'(BLOCK - 1);
+      k_done_q  <= state_q == HORZ && k_first && c_q == XB'(BLOCK - 1);
       k_slot2_q <= wslot_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
     // Decoded pixel by pixel (constant part-selects, no shifter across the row).
-    if (s1_q)
+    if (s1_q && s1_first_q)
       for (int c = 0; c < COLS; c++)
-        if (s1_c_q == XB'(c)) hrow_q[c*PW +: PW] <= centre_pixel(column, s1_r_q);
+        if (s1_c_q == XB'(c)) hrow_q[c*PW +: PW] <= centre_pixel(chunk, s1_r_q);
   end
 
   // ---- Weight buffers: NSLOT row slots, one word per aggregator read ---------------
@@ -488,81 +530,101 @@ module mcadsw_weight_gen #(
   localparam int VENTRY = WINDOW * WB;       // one vertical entry
 
   if (FPGA) begin : g_fpga_kernel
-    // FPGA target: no window select of pixels, and an entry in KPH cycles. The
-    // kernel register takes the ROWS pixels of the column (vertical) or of the
-    // centre row (horizontal) in folded order, WINDOW of them: pixel k is row
-    // (column) k + WINDOW when k < a, k otherwise (a = r, or x; a 2:1 select of
-    // the first ROWS - WINDOW), so every pixel of the window once. NU distance
-    // units compare NU of them a cycle with the centre (pixels 0 .. NU - 1, then
-    // the register shifted by NU pixels: NU .. WINDOW - 1), so the passes take a
-    // column or pixel every KPH cycles (k_adv). The WINDOW codes are the vertical
-    // entry as the census buffer folds it (mcadsw_census); the horizontal entry,
-    // the codes of columns x .. x + WINDOW - 1 in order, is them rotated by x:
-    // code j is unit (j + x) mod WINDOW.
-    localparam int NU  = (WINDOW + KPH - 1) / KPH;   // distance units
-    localparam int WPX = WINDOW * PW;
-    localparam int PHB = KPH > 1 ? $clog2(KPH) : 1;
-    localparam int SW  = 3 + SLB;            // stage-2 flags: vertical, horizontal, done, slot
-    localparam int FAB = SLB + GB;           // weight-buffer address {slot, word}: no product
-    logic [WPX-1:0] k_px_q;                  // the window's pixels, folded (shifted by NU a cycle)
+    // FPGA target: no window select of pixels, and an entry in KPH cycles, a
+    // chunk of CR rows (columns) a cycle. The kernel register takes a chunk of the
+    // column (vertical; the centre's chunk first) or of the centre row
+    // (horizontal; in order), and NU = CR distance units compare it with the
+    // centre, so the codes of all ROWS rows (columns) j; the window's WINDOW are
+    // placed in folded order: code k is that of row (column) k + WINDOW when k < a,
+    // k otherwise (a = r, or x; a 2:1 select of the first ROWS - WINDOW). KPH = 1
+    // (CR = ROWS > WINDOW: FOLD): the register takes the column's or the row's
+    // WINDOW pixels in that order instead, and WINDOW units compare them. The
+    // folded codes are the vertical entry as the census buffer folds it
+    // (mcadsw_census); the horizontal entry, the codes of columns x .. x + WINDOW
+    // - 1 in order, is them rotated by x: code j is folded code (j + x) mod WINDOW.
+    localparam bit FOLD = CR > WINDOW;       // KPH = 1: the pixels folded, WINDOW units
+    localparam int NU   = FOLD ? WINDOW : CR;   // distance units
+    localparam int UPX  = NU * PW;
+    localparam int SW   = 3 + SLB;           // stage-2 flags: vertical, horizontal, done, slot
+    localparam int FAB  = SLB + GB;          // weight-buffer address {slot, word}: no product
+    logic [UPX-1:0] k_px_q;                  // the units' pixels
     logic [PW-1:0]  k_ctr_q;                 // the centre
     logic [RB-1:0]  k_at_q;                  // row r (vertical) or pixel x (horizontal)
-    logic [PHB-1:0] kph_q;                   // the pass's cycle of its column or pixel
+    logic [PHB-1:0] k_ch_q;                  // the chunk in the units
     logic [KPH*SW-1:0] kst;                  // the stage-2 flags in the entry's cycle p at p*SW
     logic           k_mid;                   // stage 2 in an entry's cycle before its last
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) kph_q <= '0;
-      else         kph_q <= (state_q == VERT || state_q == HORZ) && !k_adv ? kph_q + PHB'(1) : '0;
-    end
-    assign k_adv = kph_q == PHB'(KPH - 1);
 
     // Rows (pixels) a .. a + WINDOW - 1 of ROWS pixels px (row j at j*PW) in folded order.
-    function automatic logic [WPX-1:0] fold_pixels(input logic [ROWS*PW-1:0] px, input logic [RB-1:0] a);
-      fold_pixels = px[WPX-1:0];
+    function automatic logic [WPW-1:0] fold_pixels(input logic [ROWS*PW-1:0] px, input logic [RB-1:0] a);
+      fold_pixels = px[WPW-1:0];
       for (int k = 0; k < ROWS - WINDOW; k++)
         if (k < 32'(a)) fold_pixels[k*PW +: PW] = px[(k + WINDOW)*PW +: PW];
     endfunction
-    // A column's rows as pixels: Y, U, V of row j interleaved at j*PW.
-    function automatic logic [ROWS*PW-1:0] column_pixels(input logic [3*CW-1:0] col);
-      for (int j = 0; j < ROWS; j++)
-        column_pixels[j*PW +: PW] = {col[2*CW + j*8 +: 8], col[CW + j*8 +: 8], col[j*8 +: 8]};
+    // A chunk's rows as pixels: Y, U, V of row j interleaved at j*PW.
+    function automatic logic [CR*PW-1:0] chunk_pixels(input logic [3*CR*8-1:0] ch);
+      for (int j = 0; j < CR; j++)
+        chunk_pixels[j*PW +: PW] = {ch[2*CR*8 + j*8 +: 8], ch[CR*8 + j*8 +: 8], ch[j*8 +: 8]};
+    endfunction
+    // Chunk q of the centre row: a KPH:1 select of constant slices.
+    function automatic logic [CR*PW-1:0] row_chunk(input logic [COLS*PW-1:0] row, input logic [PHB-1:0] q);
+      row_chunk = '0;
+      for (int i = 0; i < KPH; i++) row_chunk = row_chunk | (row[i*CR*PW +: CR*PW] & {(CR*PW){q == PHB'(i)}});
     endfunction
 
+    if (FOLD) begin : g_fold_px
+      always_ff @(posedge clk_i) begin
+        if (s1_q) k_px_q <= fold_pixels(chunk_pixels(chunk), s1_r_q);
+        else if (state_q == HORZ) k_px_q <= fold_pixels(hrow_q, RB'(c_q));
+      end
+    end else begin : g_chunk_px
+      always_ff @(posedge clk_i) begin
+        if (s1_q) k_px_q <= chunk_pixels(chunk);
+        else if (state_q == HORZ) k_px_q <= row_chunk(hrow_q, kph_q);
+      end
+    end
     always_ff @(posedge clk_i) begin
       if (s1_q) begin
-        k_px_q  <= fold_pixels(column_pixels(column), s1_r_q);
-        k_ctr_q <= centre_pixel(column, s1_r_q);
-        k_at_q  <= s1_r_q;
-      end else if (state_q == HORZ && k_adv) begin
-        k_px_q  <= fold_pixels(hrow_q, RB'(c_q));
-        for (int c = 0; c < BLOCK; c++)
-          if (c_q == XB'(c)) k_ctr_q <= hrow_q[(c + RADIUS)*PW +: PW];
-        k_at_q  <= RB'(c_q);
-      end else if (k_mid) begin
-        k_px_q  <= k_px_q >> (NU*PW);        // the entry's next cycle: the next NU pixels
+        k_ch_q <= s1_ch_q;
+        if (s1_first_q) begin
+          k_ctr_q <= centre_pixel(chunk, s1_r_q);
+          k_at_q  <= s1_r_q;
+        end
+      end else if (state_q == HORZ) begin
+        k_ch_q <= kph_q;
+        if (k_first) begin
+          for (int c = 0; c < BLOCK; c++)
+            if (c_q == XB'(c)) k_ctr_q <= hrow_q[(c + RADIUS)*PW +: PW];
+          k_at_q <= RB'(c_q);
+        end
       end
     end
 
-    // The codes of the register's first NU pixels (past the window: don't care).
-    function automatic logic [NU*WB-1:0] unit_codes(input logic [WPX-1:0] px, input logic [PW-1:0] ctr,
+    // The codes of the register's NU pixels.
+    function automatic logic [NU*WB-1:0] unit_codes(input logic [UPX-1:0] px, input logic [PW-1:0] ctr,
                                                     input logic [NTHR*DCB-1:0] thr);
       for (int k = 0; k < NU; k++) unit_codes[k*WB +: WB] = code_of(cdist(px[k*PW +: PW], ctr), thr);
     endfunction
-    // Code j of the horizontal entry: unit (j + x) mod WINDOW, a rotation by x
-    // codes, one constant rotation a bit of x (x < WINDOW; no product x * WB, which
-    // Yosys would place on a multiplier).
+    // The WINDOW codes of rows (columns) a .. a + WINDOW - 1 of the ROWS codes in folded order.
+    function automatic logic [ENTRY-1:0] fold_codes(input logic [ROWS*WB-1:0] codes, input logic [RB-1:0] a);
+      fold_codes = codes[ENTRY-1:0];
+      for (int k = 0; k < ROWS - WINDOW; k++)
+        if (k < 32'(a)) fold_codes[k*WB +: WB] = codes[(k + WINDOW)*WB +: WB];
+    endfunction
+    // Code j of the horizontal entry: folded code (j + x) mod WINDOW, a rotation by
+    // x codes, one constant rotation a bit of x (x < WINDOW; no product x * WB,
+    // which Yosys would place on a multiplier).
     function automatic logic [ENTRY-1:0] unfold(input logic [ENTRY-1:0] codes, input logic [RB-1:0] x);
       unfold = codes;
       for (int b = 0; b < RB; b++)
         if (x[b]) unfold = ENTRY'({unfold, unfold} >> ((1 << b)*WB));
     endfunction
-    // Stage 2 takes KPH cycles, NU codes a cycle (kst: its flags, delayed a
+    // Stage 2 takes KPH cycles, a chunk's codes a cycle (kst: its flags, delayed a
     // cycle at a time; the entry's tags and centre stand until its last cycle
     // ends, the next entry coming KPH cycles later). Stage 3 (FPGA target only):
-    // the codes registered, then placed and written; a row is ready KPH cycles
-    // later than on the ASIC target, and its passes take KPH times the cycles.
+    // the codes registered, then placed and written; a row is ready a cycle later
+    // than on the ASIC target, and its passes take KPH times the cycles.
     logic [NU*WB-1:0]  k_units;              // this cycle's codes
-    logic [KPH*NU*WB-1:0] k_codes;           // the last cycle's units over the earlier ones'
+    logic [ENTRY-1:0]  k_codes;              // the entry's codes in folded order (its last cycle)
     logic [SW-1:0]     k_last;               // the stage-2 flags in the entry's last cycle
     logic              k_last_en;
     logic [ENTRY-1:0]  k3_codes_q;
@@ -590,19 +652,24 @@ module mcadsw_weight_gen #(
     assign k_units   = unit_codes(k_px_q, k_ctr_q, thr_i);
     assign k_last    = kst[(KPH-1)*SW +: SW];
     assign k_last_en = k_in_stage[KPH-1];
-    if (KPH > 1) begin : g_acc
-      localparam int ACCW = (KPH-1)*NU*WB;
-      logic [ACCW-1:0] acc_q;                // the earlier cycles' codes, the first lowest
-      always_ff @(posedge clk_i) begin
-        if (k_mid) acc_q <= ACCW'({k_units, acc_q} >> (NU*WB));
-      end
-      assign k_codes = {k_units, acc_q};
-    end else begin : g_one
+    if (FOLD) begin : g_fold_codes
       assign k_codes = k_units;
-    end
-    if (KPH*NU > WINDOW) begin : g_past
-      logic codes_unused;                    // units past the window's last pixel
-      assign codes_unused = ^k_codes[KPH*NU*WB-1:ENTRY];
+      logic ch_unused;
+      assign ch_unused = ^{k_ch_q, k_mid};
+    end else begin : g_acc
+      logic [ROWS*WB-1:0] acc_q;             // the earlier chunks' codes, chunk q at q*CR*WB
+      logic [ROWS*WB-1:0] rows;              // the ROWS codes, this cycle's chunk from the units
+      always_ff @(posedge clk_i) begin
+        if (k_mid)
+          for (int q = 0; q < KPH; q++)
+            if (k_ch_q == PHB'(q)) acc_q[q*NU*WB +: NU*WB] <= k_units;
+      end
+      always_comb begin
+        rows = acc_q;
+        for (int q = 0; q < KPH; q++)
+          if (k_ch_q == PHB'(q)) rows[q*NU*WB +: NU*WB] = k_units;
+      end
+      assign k_codes = fold_codes(rows, k_at_q);
     end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -613,7 +680,7 @@ module mcadsw_weight_gen #(
     end
     always_ff @(posedge clk_i) begin
       if (k_last_en) begin
-        k3_codes_q <= k_codes[ENTRY-1:0];
+        k3_codes_q <= k_codes;
         k3_at_q    <= k_at_q;
         k3_pos_q   <= k_pos_q;
         k3_addr_q  <= {k_slot_q, k_grp_q};
@@ -657,8 +724,9 @@ module mcadsw_weight_gen #(
     assign k_haddr = HAB'(32'(k_slot_q)*HGRP + 32'(k_grp_q));
     assign w_done = k_done_q;
     assign w_slot = k_slot2_q;
-    assign k_adv  = 1'b1;
     assign k_busy = k_done_q;
+    logic ch_unused;                         // a column in one chunk
+    assign ch_unused = ^{s1_ch_q, s1_first_q};
     // ASIC target: rows r .. r + WINDOW - 1 of the column, as pixels: each plane's
     // window is one of BLOCK row offsets (an AND-OR multiplexer, not a
     // bit-granular shifter), then Y, U, V are interleaved at constant positions;
@@ -690,7 +758,7 @@ module mcadsw_weight_gen #(
     logic [HAGG*ENTRY-1:0]   hbuf_q [NSLOT*HGRP];
     logic [WPW-1:0] k_win_q;
     always_ff @(posedge clk_i) begin
-      if (s1_q) k_win_q <= vwindow(column, s1_r_q);
+      if (s1_q) k_win_q <= vwindow(chunk, s1_r_q);
       else if (state_q == HORZ) k_win_q <= hwindow(hrow_q, c_q);
     end
 
