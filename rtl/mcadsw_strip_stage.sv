@@ -132,16 +132,22 @@ module mcadsw_strip_stage #(
         last_q <= data_i;
       end
     end
-    // AND-OR selects of constant slices: the column, then its chunk.
-    always_comb begin
-      col = '0;
+    // AND-OR selects of constant slices: column b of the strip, then chunk c of it.
+    function automatic logic [ROWS*8-1:0] strip_col(input logic [(ROWS-1)*32-1:0] stage,
+                                                    input logic [4*KEPT*8-1:0] kept,
+                                                    input logic [31:0] last, input logic [1:0] b);
+      strip_col = '0;
       for (int i = 0; i < 4; i++)
-        col = col | ({last_q[i*8 +: 8], stage_q[(i*(ROWS - 1) + KEPT)*8 +: (ROWS - 1 - KEPT)*8],
-                      kept_q[i*KEPT*8 +: KEPT*8]} & {(ROWS*8){n_q[1:0] == 2'(i)}});
-      col_o = '0;
+        strip_col = strip_col | ({last[i*8 +: 8], stage[(i*(ROWS - 1) + KEPT)*8 +: (ROWS - 1 - KEPT)*8],
+                                  kept[i*KEPT*8 +: KEPT*8]} & {(ROWS*8){b == 2'(i)}});
+    endfunction
+    function automatic logic [CR*8-1:0] col_chunk(input logic [ROWS*8-1:0] c_word, input logic [NB-1:0] n);
+      col_chunk = '0;
       for (int c = 0; c < CHUNKS; c++)
-        col_o = col_o | (col[c*CR*8 +: CR*8] & {(CR*8){32'(n_q) / 4 == c}});
-    end
+        col_chunk = col_chunk | (c_word[c*CR*8 +: CR*8] & {(CR*8){32'(n) / 4 == c}});
+    endfunction
+    assign col   = strip_col(stage_q, kept_q, last_q, n_q[1:0]);
+    assign col_o = col_chunk(col, n_q);
     assign col_valid_o = valid_q;
     assign col_n_o     = n_q;
     // A strip's words are out before the next one ends, and no word reaches a row
