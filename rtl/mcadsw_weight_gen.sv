@@ -50,13 +50,14 @@
 // address) and frees it with hrd_rel_i on its last horizontal read.
 //
 // FPGA target (mcadsw_pkg::FPGA, docs/blocks/fpga_target.md): the input buffer is
-// one block RAM a plane with a column an entry, and the kernel register takes
-// the window's pixels in the census buffer's folded order (mcadsw_census: tap k
-// is row k + WINDOW when k < r, row k otherwise), so neither pass selects a
+// one block RAM a plane with a chunk of a column (ROWS / KPH rows) an entry, and
+// the kernel places its codes in the census buffer's folded order (mcadsw_census:
+// tap k is row k + WINDOW when k < r, row k otherwise), so neither pass selects a
 // window of pixels; a vertical entry holds its codes in that order. The kernel
-// makes an entry in KPH cycles with ceil(WINDOW / KPH) distance units
-// (mcadsw_pkg::WEIGHT_KPH: 2 when DMAX >= 23, so a row takes 134 cycles instead
-// of 67, hidden behind the aggregator's 6 D + 1 for D >= 23). Same values.
+// makes an entry in KPH cycles, a chunk a cycle (mcadsw_pkg::WEIGHT_KPH: 2 when
+// DMAX >= 23, so a row takes 134 cycles instead of 67, hidden behind the
+// aggregator's 6 D + 1 for D >= 23; KPH = 1: the folded window's 31 pixels in
+// 31 units). Same values.
 //
 // Weight table: the 7 colour distances at which the 3-bit weight code drops
 // (code = 7 - number of thresholds <= dC), loaded at run time and converted
