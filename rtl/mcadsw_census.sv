@@ -305,12 +305,14 @@ module mcadsw_census #(
     end
   endfunction
 
-  // Pipeline: cycle 1 reads the luma columns of census column ki, cycle 2
-  // computes its codes into col_q (or keeps col_q: a column right of hi_x),
-  // cycle 3 writes them.
+  // Pipeline (ASIC target): cycle 1 reads the luma columns of census column ki,
+  // cycle 2 computes its codes into col_q (or keeps col_q: a column right of
+  // hi_x), cycle 3 writes them. (FPGA target: the chunks enter col_q up to the
+  // issue cycle, the next writes the column, its rows clamped.)
   logic           rd_valid_q, rd_fresh_q, col_valid_q;
   logic [XB-1:0]  rd_ki_q, col_ki_q;
   logic [CWB-1:0] col_q;
+  logic [CWB-1:0] col_wr;      // the column written (FPGA target: col_q with its rows clamped)
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rd_valid_q  <= 1'b0;
@@ -352,6 +354,14 @@ module mcadsw_census #(
     // column waits for its 5 loads, a column that needs a new strip for that
     // column's write and load, and every computed column for its chunks: a column
     // every KCH cycles at most (docs/blocks/fpga_target.md).
+    // The chunks' codes enter col_q unclamped; rows lo_y's and hi_y's codes are
+    // also held (elo_q, ehi_q: a RCH:1 select of the chunk's codes, at their
+    // chunks' cycles), and the column is clamped on its way into the buffer, in
+    // the cycle after its issue: rows above lo_y take elo_q, rows below hi_y
+    // ehi_q (above_q, below_q: masks set with the block), so there is no ROWS:1
+    // select of the edge rows and no second register of the column. (The next
+    // column's first chunk may enter col_q in that cycle: the write takes the
+    // column before it.)
     localparam int NB = $clog2(COLS + 11);   // window luma columns, up to 4 STRIPS and lk + 6
     logic [LW-1:0]   lmem [4*LS];
     logic [LSB-1:0]  hstrip_q;        // the ring strip of the columns written
@@ -362,11 +372,15 @@ module mcadsw_census #(
     logic [XB-1:0]   ki0;             // a block's first column
     logic [NB-1:0]   lk0;             // ... and its lk
     logic            load;
-    logic [CWB-1:0]  raw_q;           // stage 1: the codes, rows not yet clamped
     localparam int KCB = $clog2(KCH);
+    localparam int OCB = $clog2(RCH);
     logic [KCB-1:0]  ph_q;            // the chunk the kernel computes next
+    logic [KCB-1:0]  c_lo_q, c_hi_q;  // the chunks of rows lo_y and hi_y (set with them)
+    logic [OCB-1:0]  o_lo_q, o_hi_q;  // ... and the rows' places in them
+    logic [ROWS-1:0] above_q, below_q;  // rows above lo_y, below hi_y
     logic            kern_win;        // the window holds a computed column's luma
-    logic [RCH*CB-1:0] kcodes;        // chunk ph_q's codes
+    logic [RCH*CB-1:0] kcodes;        // chunk ph_q's codes, unclamped
+    logic [CB-1:0]   elo_q, ehi_q;    // rows lo_y's and hi_y's codes of the column
     // Chunk c's luma rows of the window's 5 columns: rows c RCH .. c RCH + RCH + 3.
     // A KCH:1 select of constant slices (not a shifter).
     function automatic logic [5*KW-1:0] chunk_rows(input logic [5*LW-1:0] lcols, input logic [KCB-1:0] c);
@@ -393,9 +407,25 @@ module mcadsw_census #(
         wcol_q   <= '0;
         nl_q     <= '0;
         ph_q     <= '0;
+        c_lo_q   <= '0;
+        c_hi_q   <= '0;
+        o_lo_q   <= '0;
+        o_hi_q   <= '0;
+        above_q  <= '0;
+        below_q  <= '0;
       end else begin
         if (issue) ph_q <= '0;
         else if (kern_win && ph_q != KCB'(KCH - 1)) ph_q <= ph_q + KCB'(1);
+        if (state_q == IDLE && cfg_valid_i) begin
+          c_lo_q <= KCB'(32'(cfg_lo_y_i) / RCH);
+          o_lo_q <= OCB'(32'(cfg_lo_y_i) % RCH);
+          c_hi_q <= KCB'(32'(cfg_hi_y_i) / RCH);
+          o_hi_q <= OCB'(32'(cfg_hi_y_i) % RCH);
+          for (int j = 0; j < ROWS; j++) begin
+            above_q[j] <= j < 32'(cfg_lo_y_i);
+            below_q[j] <= j > 32'(cfg_hi_y_i);
+          end
+        end
         if (pix_fire && strip_end) hstrip_q <= wstrip;
         if (state_q == IDLE && cfg_valid_i) begin
           wcol_q <= NB'({cfg_first_i, 2'b00});
@@ -409,13 +439,18 @@ module mcadsw_census #(
     always_ff @(posedge clk_i) begin
       if (col_valid) lmem[{hstrip_q, col_b}] <= col_word;
       if (load) win_q <= {lmem[LCB'({base_q, 2'b00}) + LCB'(nl_q)], win_q[5*LW-1:LW]};
-      for (int k = 0; k < KCH; k++) if (kern_win && ph_q == KCB'(k)) raw_q[k*RCH*CB +: RCH*CB] <= kcodes;
-      if (rd_valid_q && rd_fresh_q) col_q <= clamp_rows(raw_q, lo_y_q, hi_y_q);
+      for (int k = 0; k < KCH; k++) if (kern_win && ph_q == KCB'(k)) col_q[k*RCH*CB +: RCH*CB] <= kcodes;
+      if (kern_win && ph_q == c_lo_q) elo_q <= kcodes[32'(o_lo_q)*CB +: CB];
+      if (kern_win && ph_q == c_hi_q) ehi_q <= kcodes[32'(o_hi_q)*CB +: CB];
+    end
+    // The column into the buffer, rows clamped.
+    for (genvar j = 0; j < ROWS; j++) begin : g_clamp
+      assign col_wr[j*CB +: CB] = above_q[j] ? elo_q : below_q[j] ? ehi_q : col_q[j*CB +: CB];
     end
     assign lsub_q  = '0;
     assign rd_lc_q = '0;
     logic asic_unused;
-    assign asic_unused = ^{lsub_q, rd_lc_q, lc, strip_cols};
+    assign asic_unused = ^{lsub_q, rd_lc_q, lc, strip_cols, rd_fresh_q, lo_y_q, hi_y_q};
     // The previous block's last column write may share the cycle of the next
     // block's configuration, never its run; the loader starts at a delivered strip.
     `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && col_valid && col_b != 2'd3))
@@ -466,11 +501,19 @@ module mcadsw_census #(
       if (rd_valid_q && rd_fresh_q)
         col_q <= clamp_rows(census_codes(luma_cols(lsub_q, 32'(rd_lc_q))), lo_y_q, hi_y_q);
     end
+    assign col_wr = col_q;
   end
 
   // ---- Census buffer and read port ----------------------------------------------------
+  // A column is written in the cycle after it was read and computed (col_valid_q),
+  // on the FPGA target in the cycle after its issue (its last chunk entered col_q
+  // in the issue cycle; the rows are clamped on the way, col_wr).
+  logic          wr_en;
+  logic [XB-1:0] wr_ki;
+  assign wr_en = FPGA ? rd_valid_q : col_valid_q;
+  assign wr_ki = FPGA ? rd_ki_q : col_ki_q;
   logic [QB-1:0] wq, rq;        // ring columns of the column written and of the first read
-  assign wq = QB'(wrap(32'(cpos_q) + 32'(col_ki_q), RING));
+  assign wq = QB'(wrap(32'(cpos_q) + 32'(wr_ki), RING));
   assign rq = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i[XB-1:0]), RING));
   // ASIC target: lane l is ring column rq + l, from sub-bank (rq + l) % CSUB: a
   // CSUB:1 multiplexer whose one-hot select is decoded from the address and
@@ -507,12 +550,12 @@ module mcadsw_census #(
       logic [QB-1:0]  ra;
       assign ra = QB'(wrap(32'(bpos_q[32'(rd_bank_i)*QB +: QB]) + 32'(rd_col_i[p*XB +: XB]), RING));
       always_ff @(posedge clk_i) begin
-        if (col_valid_q) mem_q[wq] <= col_q;
+        if (wr_en) mem_q[wq] <= col_wr;
         if (rd_en_i[p]) col_rd_q <= mem_q[ra];
       end
       // The kernel writes ring columns no block in the aggregator reads: no read
       // meets the write of its column (no_rw_check: docs/blocks/fpga_target.md).
-      `MCADSW_ASSERT(NoReadOfColumnWritten, !(col_valid_q && rd_en_i[p] && wq == ra))
+      `MCADSW_ASSERT(NoReadOfColumnWritten, !(wr_en && rd_en_i[p] && wq == ra))
       assign rd_data_o[p*CWB +: CWB] = col_rd_q;
     end
   end else begin : g_asic_buf
@@ -520,7 +563,7 @@ module mcadsw_census #(
     for (genvar b = 0; b < CSUB; b++) begin : g_csub
       logic [CWB-1:0] mem_q [CDEPTH];
       always_ff @(posedge clk_i) begin
-        if (col_valid_q && wq[CSB-1:0] == CSB'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:CSB])] <= col_q;
+        if (wr_en && wq[CSB-1:0] == CSB'(b)) mem_q[$clog2(CDEPTH)'(wq[QB-1:CSB])] <= col_wr;
       end
       // The lane of ring columns rq .. rq + CSUB - 1 that lives in this sub-bank.
       // Its word: that of rq, or the next one when b is below rq's sub-bank.
