@@ -60,6 +60,14 @@ MUTANTS = [
      "if (en[e]) entries_q[e*W +: W] <= second[e] ? data2_i : data_i;",
      "if (en[e]) entries_q[e*W +: W] <= second[e] ? data_i : data2_i;",
      "two entries pushed in a cycle stored in each other's place"),
+    ("rect_port", "rect/mcadsw_rect_port.sv",
+     "lock_q <= mem_req_o && !mem_gnt_i ? sel : 2'd0;",
+     "lock_q <= 2'd0;",
+     "a request not granted gives the port to a write that arrives after it"),
+    ("rect_port", "rect/mcadsw_rect_port.sv",
+     "tag_client_q[tag_wr_q] <= sel == 2'd3;",
+     "tag_client_q[tag_wr_q] <= sel == 2'd2;",
+     "read beats to the other client"),
     ("frame_ctrl", "mcadsw_frame_ctrl.sv",
      "state_q != StCheck && state_d == StIdle) done_d = 1'b1;",
      "state_q != StCheck && state_d != StCheck) done_d = 1'b1;",
@@ -85,7 +93,7 @@ def sby_info(name):
 def cover_name(src, line):
     """The name of the cover at SRC:LINE (a file of rtl/ or formal/): an MCADSW_COVER's, or
     a label's (`Name: cover (...)` in a props file); else SRC:LINE."""
-    for d in (ROOT / "rtl", FORMAL):
+    for d in (ROOT / "rtl", ROOT / "rtl" / "rect", FORMAL):
         if (d / src).is_file():
             text = (d / src).read_text().splitlines()[int(line) - 1]
             m = re.search(r"MCADSW_COVER\((\w+)", text) or re.search(r"(\w+):\s*cover\b", text)
@@ -201,7 +209,7 @@ def selftest(a, out, env):
                 bad.append(f"mutant {i} ({name}): its text is in rtl/{rtl} {src.count(old)} times, not once")
                 continue
             mdir = out / "mutants" / str(i)
-            mdir.mkdir(parents=True, exist_ok=True)
+            (mdir / rtl).parent.mkdir(parents=True, exist_ok=True)
             (mdir / rtl).write_text(src.replace(old, new))
             text, tasks, _ = sby_info(name)
             assert text.count(f"../rtl/{rtl}\n") == 1, (name, rtl)
@@ -209,7 +217,7 @@ def selftest(a, out, env):
             # "name path" form); its paths stay relative to formal/, where it runs.
             sby = mdir / f"{name}.sby"
             sby.write_text(text.replace(f"../rtl/{rtl}\n",
-                                        f"{rtl} {os.path.relpath(mdir / rtl, FORMAL)}\n"))
+                                        f"{Path(rtl).name} {os.path.relpath(mdir / rtl, FORMAL)}\n"))
             status, secs, logtext = run_task(run, env, sby, "bmc", out / f"mutant_{i}")
             if status == "FAIL" and "counterexample trace" in logtext:
                 log(f"selftest: {name} mutant {i} ({what}) fails the proof with a counterexample, "

@@ -40,6 +40,7 @@ rect/mcadsw_rect_load.sv
 rect/mcadsw_rect_nodes.sv
 rect/mcadsw_rect_sample.sv
 rect/mcadsw_rect_write.sv
+rect/mcadsw_rect_port.sv
 rect/mcadsw_rect_mark.sv
 rect/mcadsw_rect_check.sv
 rect/mcadsw_rect.sv

@@ -398,58 +398,16 @@ module mcadsw_rect #(
     .done_o(wr_done), .idle_o(wr_idle)
   );
 
-  // ---- Port arbiter: writes first, then node reads, then loads; a presented request is
-  //      held (with its client) until granted. Read data goes to the oldest read's client.
-  logic [1:0] sel;                                        // 0 none, 1 write, 2 node read, 3 load
-  logic [1:0] lock_q;
-  logic [$clog2(OUTS):0] outs_q;                          // read bursts in flight
-  logic       tag_full;
-  assign tag_full = 32'(outs_q) >= OUTS;
-  always_comb begin
-    sel = 2'd0;
-    if (lock_q != 2'd0) sel = lock_q;
-    else if (wr_req) sel = 2'd1;
-    else if (nrd_req && !tag_full) sel = 2'd2;
-    else if (ld_req && !tag_full) sel = 2'd3;
-  end
-  assign mem_req_o   = sel != 2'd0;
-  assign mem_we_o    = sel == 2'd1;
-  assign mem_be_o    = sel == 2'd1 ? wr_be : 4'b0;
-  assign mem_addr_o  = sel == 2'd1 ? wr_addr : sel == 2'd2 ? nrd_addr : ld_addr;
-  assign mem_len_o   = sel == 2'd2 ? nrd_len : sel == 2'd3 ? ld_len : 3'd0;
-  assign mem_wdata_o = sel == 2'd1 ? wr_data : 32'd0;
-  assign wr_gnt  = sel == 2'd1 && mem_gnt_i;
-  assign nrd_gnt = sel == 2'd2 && mem_gnt_i;
-  assign ld_gnt  = sel == 2'd3 && mem_gnt_i;
-  // Tags of the reads in flight: client (0 node read, 1 load) and words
-  logic [OUTS-1:0] tag_client_q;
-  logic [OUTS*4-1:0] tag_len_q;                          // burst i's words at bits 4 i
-  logic [$clog2(OUTS)-1:0] tag_wr_q, tag_rd_q;
-  logic [3:0]      beat_q;
-  logic            rd_last;
-  assign rd_last = mem_rvalid_i && beat_q == tag_len_q[tag_rd_q * 4 +: 4] - 4'd1;
-  assign nrd_rvalid = mem_rvalid_i && !tag_client_q[tag_rd_q];
-  assign ld_rvalid  = mem_rvalid_i && tag_client_q[tag_rd_q];
-  logic rd_granted;
-  assign rd_granted = mem_gnt_i && (sel == 2'd2 || sel == 2'd3);
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      lock_q <= '0; outs_q <= '0; tag_wr_q <= '0; tag_rd_q <= '0; beat_q <= '0;
-    end else begin
-      lock_q <= mem_req_o && !mem_gnt_i ? sel : 2'd0;
-      if (rd_granted) tag_wr_q <= tag_wr_q + 1'b1;
-      if (mem_rvalid_i) beat_q <= rd_last ? 4'd0 : beat_q + 4'd1;
-      if (rd_last) tag_rd_q <= tag_rd_q + 1'b1;
-      outs_q <= outs_q + ($clog2(OUTS) + 1)'(rd_granted) - ($clog2(OUTS) + 1)'(rd_last);
-    end
-  end
-
-  always_ff @(posedge clk_i) begin                        // tag entries: written before read
-    if (rd_granted) begin
-      tag_client_q[tag_wr_q] <= sel == 2'd3;
-      tag_len_q[tag_wr_q * 4 +: 4] <= {1'b0, mem_len_o} + 4'd1;
-    end
-  end
+  // ---- Port arbiter: writes first, then node reads, then loads; a presented request
+  //      keeps the port until granted; read data to the oldest read's client.
+  mcadsw_rect_port #(.OUTS(OUTS)) u_port (
+    .clk_i, .rst_ni,
+    .wr_req_i(wr_req), .wr_gnt_o(wr_gnt), .wr_addr_i(wr_addr), .wr_be_i(wr_be), .wr_data_i(wr_data),
+    .nrd_req_i(nrd_req), .nrd_gnt_o(nrd_gnt), .nrd_addr_i(nrd_addr), .nrd_len_i(nrd_len),
+    .nrd_rvalid_o(nrd_rvalid),
+    .ld_req_i(ld_req), .ld_gnt_o(ld_gnt), .ld_addr_i(ld_addr), .ld_len_i(ld_len), .ld_rvalid_o(ld_rvalid),
+    .mem_req_o, .mem_gnt_i, .mem_we_o, .mem_be_o, .mem_addr_o, .mem_len_o, .mem_wdata_o, .mem_rvalid_i
+  );
 
   // ---- Status --------------------------------------------------------------------------------
   logic done_q;
@@ -466,7 +424,6 @@ module mcadsw_rect #(
                          unused_nrd_odd, nd_rows[CW:6], nd_cols[CW:7], stride_i[31:29]};
 
   `MCADSW_ASSERT(load_when_idle, !ld_start || !ld_busy)
-  `MCADSW_ASSERT(reads_answered_in_order, !mem_rvalid_i || outs_q != '0)
 endmodule
 
 `default_nettype wire

@@ -9,6 +9,7 @@ mcadsw_rect_load.sv
 mcadsw_rect_nodes.sv
 mcadsw_rect_sample.sv
 mcadsw_rect_write.sv
+mcadsw_rect_port.sv
 mcadsw_rect_mark.sv
 mcadsw_rect_check.sv
 mcadsw_rect.sv
