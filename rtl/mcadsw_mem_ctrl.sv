@@ -160,6 +160,60 @@ module mcadsw_mem_ctrl #(
   `MCADSW_ASSUME(RequestHeldUntilGranted, !(hold_q && (hold_wr_q ? !wr_req_i : !rd_req_i[hold_id_q])))
   `MCADSW_ASSUME(LengthHeldUntilGranted, !(hold_q && !hold_wr_q && mem_len_o != hold_len_q))
 
+`ifdef FORMAL
+  // The proof's reference (make formal, formal/mem_ctrl.sby; with these invariants the
+  // proof closes by induction):
+  // - each reader's beats granted and not yet routed to it (f_own_q), which the queue of
+  //   bursts in flight accounts for entry by entry; read data only to a reader with beats
+  //   of its own outstanding;
+  // - round robin: the read grants to others while a reader waits (f_waited_q), at most
+  //   NR - 1. Invariant: waited + the reader's distance after the last reader served is at
+  //   most NR (each grant to another brings the reader nearer); a read held since before
+  //   (picked while the reader already waited) lies no further than the reader.
+  localparam int FOB = OB + 5;
+  localparam int FWB = IB + 1;
+  logic [NR*FOB-1:0] f_own_q;
+  logic [NR*FWB-1:0] f_waited_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      f_own_q    <= '0;
+      f_waited_q <= '0;
+    end else begin
+      for (int r = 0; r < NR; r++) begin
+        f_own_q[r*FOB +: FOB] <= f_own_q[r*FOB +: FOB] - FOB'(rd_rvalid_o[r]) +
+                                 (rd_gnt_o[r] ? FOB'(mem_len_o) + FOB'(1) : '0);
+        if (!rd_req_i[r] || rd_gnt_o[r]) f_waited_q[r*FWB +: FWB] <= '0;
+        else if (|rd_gnt_o) f_waited_q[r*FWB +: FWB] <= f_waited_q[r*FWB +: FWB] + FWB'(1);
+      end
+    end
+  end
+  // Reader r's place after reader l in the round robin: 1 .. NR (NR: r is l).
+  function automatic int f_dist(input logic [IB-1:0] l, input int r);
+    f_dist = r > 32'(l) ? r - 32'(l) : r + NR - 32'(l);
+  endfunction
+  `MCADSW_ASSERT(BurstsWithinQueue, 32'(nids_q) <= OUTS)
+  `MCADSW_ASSERT(HeldReadHasRoom, !(hold_q && !hold_wr_q) || rd_ok)   // presented with room
+  `MCADSW_ASSERT(HeadBeatWithinBurst, nids_q == '0 ? beat_q == '0 : beat_q <= lens_q[3:0])
+  `MCADSW_ASSERT(LastServedIsAReader, 32'(last_q) < NR && (!hold_q || hold_wr_q || 32'(hold_id_q) < NR))
+  for (genvar i = 0; i < OUTS; i++) begin : g_f_ids
+    `MCADSW_ASSERT(QueuedIdIsAReader, 32'(nids_q) <= i || 32'(ids_q[i*IB +: IB]) < NR)
+  end
+  for (genvar r = 0; r < NR; r++) begin : g_f_reader
+    logic [FOB-1:0] queued;                // r's beats in the queue, less the head's returned
+    always_comb begin
+      queued = '0;
+      for (int i = 0; i < OUTS; i++)
+        if (i < 32'(nids_q) && ids_q[i*IB +: IB] == IB'(r)) queued = queued + FOB'(lens_q[i*4 +: 4]) + FOB'(1);
+      if (nids_q != '0 && ids_q[IB-1:0] == IB'(r)) queued = queued - FOB'(beat_q);
+    end
+    `MCADSW_ASSERT(OwnBeatsQueued, f_own_q[r*FOB +: FOB] == queued)
+    `MCADSW_ASSERT(ReadDataOnlyToAReaderOwed, !rd_rvalid_o[r] || f_own_q[r*FOB +: FOB] != '0)
+    `MCADSW_ASSERT(RoundRobinBound, 32'(f_waited_q[r*FWB +: FWB]) + f_dist(last_q, r) <= NR)
+    `MCADSW_ASSERT(HeldReadNoFurther, !(hold_q && !hold_wr_q && f_waited_q[r*FWB +: FWB] != '0) ||
+                                      f_dist(last_q, 32'(hold_id_q)) <= f_dist(last_q, r))
+  end
+`endif
+
   // Events the block's proof must reach (formal only): each kind of grant, read data
   // routed, and a write that waits behind a held read.
   `MCADSW_COVER(ReadGranted, |rd_gnt_o)
