@@ -18,6 +18,8 @@
 //      beat while not draining;
 //   5. nothing is granted while draining;
 //   6. wr_idle_o: no write granted but unanswered; idle_o: no read either.
+// 3, and the counting parts of 4 and 6, are the block's own (its `ifdef FORMAL` section),
+// with the invariants that close the proof by induction.
 `default_nettype none
 
 module axi_master_props #(
@@ -77,23 +79,8 @@ module axi_master_props #(
     assume (mem_addr_i[1:0] == 2'b00);
     if (!mem_we_i) assume (mem_len_i < 4'd4 && 32'(mem_addr_i[11:0]) + 4 * (32'(mem_len_i) + 1) <= 4096);
   end
-  // The slave answers only what it accepted (R beats and B responses counted).
-  logic [5:0] r_out_q, b_out_q, rd_eng_q;
-  always_ff @(posedge clk_i or negedge rst_ni)
-    if (!rst_ni) begin
-      r_out_q  <= '0;
-      b_out_q  <= '0;
-      rd_eng_q <= '0;
-    end else begin
-      r_out_q  <= r_out_q + (arvalid && m_arready_i ? 6'(arlen) + 6'd1 : 6'd0) - 6'(m_rvalid_i);
-      b_out_q  <= b_out_q + 6'(awvalid && m_awready_i) - 6'(m_bvalid_i);
-      rd_eng_q <= rd_eng_q + (mem_req_i && mem_gnt && !mem_we_i ? 6'(mem_len_i) + 6'd1 : 6'd0)
-                           - 6'(mem_rvalid);
-    end
-  always_comb begin
-    if (r_out_q == '0) assume (!m_rvalid_i);
-    if (b_out_q == '0) assume (!m_bvalid_i);
-  end
+  // The slave answers only what it accepted: R beats (the block's FORMAL section counts
+  // the ARs' beats accepted), B responses (the block's own assumption).
 
   // ---- Properties -----------------------------------------------------------------------
   // 1. VALID held, payload stable, until READY.
@@ -122,42 +109,12 @@ module axi_master_props #(
   always_ff @(posedge clk_i) if (past_ok && rst_ni && $past(mem_req_i && mem_gnt && !mem_we_i))
     assert (arvalid && araddr == $past(mem_addr_i) && arlen == 8'($past(mem_len_i)));
 
-  // 3. WLAST: W burst lengths against AW lengths, in order (queues of 4).
-  logic [4*8-1:0] awq_q, wq_q;
-  logic [2:0]     awn_q, wn_q;
-  logic [7:0]     wbeats_q;          // beats of the W burst in progress
-  always_ff @(posedge clk_i)         // (synchronous reset: a check under an asynchronous
-                                     // reset is a two-trigger check SymbiYosys refuses)
-    if (!rst_ni) begin
-      awq_q <= '0; wq_q <= '0; awn_q <= '0; wn_q <= '0; wbeats_q <= '0;
-    end else begin
-      logic [4*8-1:0] aq, wq;
-      logic [2:0]     an, wn;
-      aq = awq_q; wq = wq_q; an = awn_q; wn = wn_q;
-      if (awvalid && m_awready_i) begin
-        aq[32'(an)*8 +: 8] = awlen;
-        an = an + 3'd1;
-      end
-      if (wvalid && m_wready_i) begin
-        if (wlast) begin
-          wq[32'(wn)*8 +: 8] = wbeats_q;
-          wn = wn + 3'd1;
-          wbeats_q <= '0;
-        end else begin
-          wbeats_q <= wbeats_q + 8'd1;
-        end
-      end
-      if (an != '0 && wn != '0) begin
-        assert (aq[7:0] == wq[7:0]);
-        aq = aq >> 8; wq = wq >> 8; an = an - 3'd1; wn = wn - 3'd1;
-      end
-      assert (an < 3'd4 && wn < 3'd4);
-      awq_q <= aq; wq_q <= wq; awn_q <= an; wn_q <= wn;
-    end
+  // 3. WLAST: in the block's `ifdef FORMAL` section (QueuesMatch: each W burst as long as
+  // its AW, in order), with the invariants that close the induction.
 
   // 4. Read data to the engine only for its reads; every R beat passed on unless draining.
+  // (Only for its reads: the block's ReadDataOnlyWhenOwed.)
   always_comb if (rst_ni) begin
-    if (mem_rvalid) assert (rd_eng_q != '0);
     if (m_rvalid_i && !drain_i) assert (mem_rvalid && mem_rdata == m_rdata_i);
     assert (rready && bready);
   end
@@ -166,9 +123,11 @@ module axi_master_props #(
   always_comb if (rst_ni && drain_i) assert (!mem_gnt);
 
   // 6. Idle flags.
+  // (No B or R outstanding: the block's wr_idle_o counts the B responses owed, and its
+  // IdleNoReadOutstanding the R beats.)
   always_comb if (rst_ni) begin
-    if (wr_idle) assert (!awvalid && !wvalid && b_out_q == '0);
-    if (idle) assert (wr_idle && r_out_q == '0 && !arvalid);
+    if (wr_idle) assert (!awvalid && !wvalid);
+    if (idle) assert (wr_idle && !arvalid);
   end
 
   logic unused;

@@ -346,6 +346,113 @@ module mcadsw_axi_master #(
   `MCADSW_ASSUME(WriteResponseInFlight, !(m_bvalid_i && b_out_q == '0))
   `MCADSW_ASSERT(OneGrantReadOrWrite, !(wr_take && rd_take))
 
+`ifdef FORMAL
+  // The proof's reference (make formal, formal/axi_master.sby), on the engine's port
+  // (SLICE = 0), with the invariants that close it by induction:
+  // - reads: the slave's beats outstanding (ARs accepted) and the engine's (reads
+  //   granted): the block's count is the slave's plus the AR waiting; read data goes to
+  //   the engine only while it is owed some;
+  // - writes: the lengths of the AW bursts accepted whose W burst is not complete (f_aq),
+  //   or of the W bursts complete whose AW is not accepted (f_wq), matched in order (each
+  //   W burst as long as its AW); the AW and W queues hold the same closed bursts, one
+  //   queue ahead of the other by the unmatched ones; the write buffer holds exactly the
+  //   beats of the W bursts not yet sent and of the open burst; no burst crosses 4 KiB.
+  if (!SLICE) begin : g_f
+    localparam int FRB = RB + 5;
+    logic [FRB-1:0]    f_r_out_q, f_rd_eng_q;
+    logic [ND*LB-1:0]  f_aq_q, f_wq_q;
+    logic [1:0]        f_an_q, f_wn_q;
+    logic [LB-1:0]     f_wbeats_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        f_r_out_q <= '0; f_rd_eng_q <= '0;
+        f_aq_q <= '0; f_wq_q <= '0; f_an_q <= '0; f_wn_q <= '0; f_wbeats_q <= '0;
+      end else begin
+        logic [ND*LB-1:0] aq, wq;
+        logic [1:0]       an, wn;
+        f_r_out_q  <= f_r_out_q + (m_arvalid_o && m_arready_i ? FRB'(arlen_q) + FRB'(1) : '0)
+                                - FRB'(m_rvalid_i);
+        f_rd_eng_q <= f_rd_eng_q + (rd_take ? FRB'(s_len) + FRB'(1) : '0) - FRB'(m_rvalid_i);
+        aq = f_aq_q; wq = f_wq_q; an = f_an_q; wn = f_wn_q;
+        if (aw_go) begin
+          aq[32'(an)*LB +: LB] = awq_q[0 +: LB];
+          an = an + 2'd1;
+        end
+        if (w_go) begin
+          if (m_wlast_o) begin
+            wq[32'(wn)*LB +: LB] = f_wbeats_q;
+            wn = wn + 2'd1;
+            f_wbeats_q <= '0;
+          end else begin
+            f_wbeats_q <= f_wbeats_q + LB'(1);
+          end
+        end
+        if (an != '0 && wn != '0) begin
+          aq = aq >> LB; wq = wq >> LB; an = an - 2'd1; wn = wn - 2'd1;
+        end
+        f_aq_q <= aq; f_wq_q <= wq; f_an_q <= an; f_wn_q <= wn;
+      end
+    end
+    `MCADSW_ASSUME(ReadBeatOfAnAcceptedAr, !m_rvalid_i || f_r_out_q != '0)
+    `MCADSW_ASSERT(ReadBeatsCounted, 32'(rd_out_q) == 32'(f_r_out_q) + (arvalid_q ? 32'(arlen_q) + 1 : 0) &&
+                                     f_rd_eng_q == FRB'(rd_out_q) && 32'(rd_out_q) <= ROUTS)
+    `MCADSW_ASSERT(ReadDataOnlyWhenOwed, !mem_rvalid_o || f_rd_eng_q != '0)
+    `MCADSW_ASSERT(IdleNoReadOutstanding, !idle_o || (f_r_out_q == '0 && !m_arvalid_o))
+    `MCADSW_ASSERT(AReadWithinItsPage, !arvalid_q || 32'(araddr_q[11:0]) + 4 * (32'(arlen_q) + 1) <= 4096)
+
+    // The AW and W queues against the unmatched bursts.
+    function automatic logic [LB-1:0] f_awl(input int i);     // AW queue entry i's length
+      f_awl = awq_q[i*(AW+LB) +: LB];
+    endfunction
+    logic f_queues_ok;
+    always_comb begin
+      int a, w;
+      a = 32'(awq_n_q);
+      w = 32'(wlq_n_q);
+      f_queues_ok = a <= ND && w <= ND && (f_an_q == '0 || f_wn_q == '0);
+      if (f_an_q != '0) begin
+        f_queues_ok = f_queues_ok && w == a + 32'(f_an_q);
+        for (int i = 0; i < ND; i++) begin
+          if (i < 32'(f_an_q)) f_queues_ok = f_queues_ok && f_aq_q[i*LB +: LB] == wlq_q[i*LB +: LB];
+          if (i < a && i + 32'(f_an_q) < ND)
+            f_queues_ok = f_queues_ok && f_awl(i) == wlq_q[(i + 32'(f_an_q))*LB +: LB];
+        end
+      end else if (f_wn_q != '0) begin
+        f_queues_ok = f_queues_ok && a == w + 32'(f_wn_q);
+        for (int i = 0; i < ND; i++) begin
+          if (i < 32'(f_wn_q)) f_queues_ok = f_queues_ok && f_wq_q[i*LB +: LB] == f_awl(i);
+          if (i < w && i + 32'(f_wn_q) < ND)
+            f_queues_ok = f_queues_ok && wlq_q[i*LB +: LB] == f_awl(i + 32'(f_wn_q));
+        end
+      end else begin
+        f_queues_ok = f_queues_ok && a == w;
+        for (int i = 0; i < ND; i++)
+          if (i < a) f_queues_ok = f_queues_ok && f_awl(i) == wlq_q[i*LB +: LB];
+      end
+    end
+    `MCADSW_ASSERT(QueuesMatch, f_queues_ok)
+    `MCADSW_ASSERT(WBeatOfTheHeadBurst, f_wbeats_q == wbeat_q &&
+                                        (wlq_n_q == '0 ? wbeat_q == '0 : wbeat_q <= wlq_q[0 +: LB]))
+    // The write buffer: the beats of the W bursts not sent and of the open burst.
+    logic [31:0] f_beats;
+    always_comb begin
+      f_beats = 32'(ob_n_q) - 32'(wbeat_q);
+      for (int i = 0; i < ND; i++) if (i < 32'(wlq_n_q)) f_beats = f_beats + 32'(wlq_q[i*LB +: LB]) + 1;
+    end
+    `MCADSW_ASSERT(BufferHoldsTheBeats, 32'((DB + 1)'(wwr_q - wrd_q)) == f_beats && f_beats <= WD &&
+                                        32'(ob_n_q) <= BL && 32'(b_out_q) <= BOUTS)
+    logic [AW-1:0] f_ob_end;                               // the word after the open burst
+    assign f_ob_end = ob_addr_q + AW'({ob_n_q, 2'b00});
+    `MCADSW_ASSERT(OpenBurstContiguous, ob_n_q == '0 || (ob_next_q == f_ob_end && ob_addr_q[1:0] == 2'b00))
+    `MCADSW_ASSERT(OpenBurstInItsPage, ob_n_q == '0 || 32'(ob_addr_q[11:0]) + 4 * 32'(ob_n_q) <= 4096)
+    for (genvar i = 0; i < ND; i++) begin : g_f_aw
+      `MCADSW_ASSERT(QueuedBurstInItsPage, 32'(awq_n_q) <= i ||
+                     (awq_q[i*(AW+LB) + LB +: 2] == 2'b00 &&
+                      32'(awq_q[i*(AW+LB) + LB +: 12]) + 4 * (32'(awq_q[i*(AW+LB) +: LB]) + 1) <= 4096))
+    end
+  end
+`endif
+
   // Events the block's proof must reach (formal only): a read burst's last beat, a
   // write burst's last beat, a write response, and idle again after them.
   `MCADSW_COVER(ReadBurstDone, m_rvalid_i && m_rready_o && m_rlast_i)
