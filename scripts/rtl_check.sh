@@ -82,11 +82,24 @@ lint_top() {
 # rect/mcadsw_rect_none.sv).
 tops_of() { sed -n 's/^module \([a-z_0-9]*\).*/\1/p' "$1"; }
 
+# Each top in its own Verilator process, as many at a time as the machine has cores
+# (make lint stays within the pre-stop hook's time); a failing top's messages are
+# printed once all have run.
 run_lint() {
-  local top
+  local f top tmp running=0 failed=0 jobs
+  jobs=$(nproc)
+  tmp=$(mktemp -d)
   for f in "${mods[@]}"; do
-    for top in $(tops_of "$f"); do lint_top "$top" || return 1; done
+    for top in $(tops_of "$f"); do
+      lint_top "$top" > "$tmp/$top.log" 2>&1 &
+      running=$((running + 1))
+      if [ "$running" -ge "$jobs" ]; then wait -n || failed=1; running=$((running - 1)); fi
+    done
   done
+  while [ "$running" -gt 0 ]; do wait -n || failed=1; running=$((running - 1)); done
+  for f in "$tmp"/*.log; do [ -s "$f" ] && cat "$f"; done
+  rm -rf "$tmp"
+  [ "$failed" = 0 ] || return 1
   echo "rtl_check: verilator --lint-only -Wall clean on ${#mods[@]} modules$what"
 }
 
