@@ -372,7 +372,8 @@ module mcadsw_axi_master #(
         logic [1:0]       an, wn;
         f_r_out_q  <= f_r_out_q + (m_arvalid_o && m_arready_i ? FRB'(arlen_q) + FRB'(1) : '0)
                                 - FRB'(m_rvalid_i);
-        f_rd_eng_q <= f_rd_eng_q + (rd_take ? FRB'(s_len) + FRB'(1) : '0) - FRB'(m_rvalid_i);
+        f_rd_eng_q <= f_rd_eng_q + (mem_req_i && mem_gnt_o && !mem_we_i ? FRB'(mem_len_i) + FRB'(1) : '0)
+                                 - FRB'(m_rvalid_i);
         aq = f_aq_q; wq = f_wq_q; an = f_an_q; wn = f_wn_q;
         if (aw_go) begin
           aq[32'(an)*LB +: LB] = awq_q[0 +: LB];

@@ -107,12 +107,9 @@ module mcadsw_rect_port #(
   // verilator coverage_off
   logic        req_held_q;                                // last cycle's request, not granted
   logic [1:0]  sel_held_q;                                // ... its client
-  logic [31:0] addr_held_q, wdata_held_q;
+  logic [31:0] addr_held_q, wdata_held_q;                 // ... its payload (the client's)
   logic [3:0]  be_held_q;
   logic [2:0]  len_held_q;
-  logic [31:0] wr_addr_q, wr_data_q, nrd_addr_q, ld_addr_q;
-  logic [3:0]  wr_be_q;
-  logic [2:0]  nrd_len_q, ld_len_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) req_held_q <= 1'b0;
     else req_held_q <= mem_req_o && !mem_gnt_i;
@@ -120,16 +117,14 @@ module mcadsw_rect_port #(
   always_ff @(posedge clk_i) begin
     sel_held_q <= sel; addr_held_q <= mem_addr_o; wdata_held_q <= mem_wdata_o;
     be_held_q <= mem_be_o; len_held_q <= mem_len_o;
-    wr_addr_q <= wr_addr_i; wr_data_q <= wr_data_i; wr_be_q <= wr_be_i;
-    nrd_addr_q <= nrd_addr_i; nrd_len_q <= nrd_len_i; ld_addr_q <= ld_addr_i; ld_len_q <= ld_len_i;
   end
   // A client whose request the port presented and the memory did not grant keeps it.
   `MCADSW_ASSUME(PresentedWriteHeld, !(req_held_q && sel_held_q == 2'd1) ||
-                 (wr_req_i && wr_addr_i == wr_addr_q && wr_data_i == wr_data_q && wr_be_i == wr_be_q))
+                 (wr_req_i && wr_addr_i == addr_held_q && wr_data_i == wdata_held_q && wr_be_i == be_held_q))
   `MCADSW_ASSUME(PresentedNodeReadHeld, !(req_held_q && sel_held_q == 2'd2) ||
-                 (nrd_req_i && nrd_addr_i == nrd_addr_q && nrd_len_i == nrd_len_q))
+                 (nrd_req_i && nrd_addr_i == addr_held_q && nrd_len_i == len_held_q))
   `MCADSW_ASSUME(PresentedLoadHeld, !(req_held_q && sel_held_q == 2'd3) ||
-                 (ld_req_i && ld_addr_i == ld_addr_q && ld_len_i == ld_len_q))
+                 (ld_req_i && ld_addr_i == addr_held_q && ld_len_i == len_held_q))
   `MCADSW_ASSUME(ReadDataOnlyWhenInFlight, !mem_rvalid_i || outs_q != '0)
   // The port's request, presented and not granted, is the same in the next cycle.
   `MCADSW_ASSERT(RequestHeldUntilGranted, !req_held_q ||
