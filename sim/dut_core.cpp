@@ -290,7 +290,7 @@ class CoreDut : public BenchDut {
 
 std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions& opt,
                                          BenchDut::Cycle cycle) {
-  return std::make_unique<CoreDut>(ctx, mem, std::move(cycle), opt.record_ports);
+  return std::make_unique<CoreDut>(ctx, mem, std::move(cycle), opt.run.record_ports);
 }
 
 }  // namespace mcadsw::sim

@@ -38,10 +38,10 @@ class AxilBus : public driver::RegisterBus {
 class SocDut : public BenchDut {
  public:
   SocDut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions& opt, Cycle cycle)
-      : axi_mem_(mem, opt.latency, opt.axi_fault, opt.axi_write_latency, opt.axi_ar_interval),
+      : axi_mem_(mem, opt.memory.latency, opt.memory.axi_fault, opt.memory.axi_write_latency, opt.memory.axi_ar_interval),
         top_(&ctx),
         // READY and VALID of the register bus held back 30 % of the cycles.
-        axi_(top_, std::move(cycle), opt.latency.seed + 77, 0.3),
+        axi_(top_, std::move(cycle), opt.memory.latency.seed + 77, 0.3),
         bus_(axi_) {
     top_.clk_i = 0;
     top_.rst_ni = 0;
@@ -98,7 +98,7 @@ class SocDut : public BenchDut {
 
 std::unique_ptr<BenchDut> make_bench_dut(VerilatedContext& ctx, MemoryModel& mem, const EngineOptions& opt,
                                          BenchDut::Cycle cycle) {
-  if (!opt.record_ports.empty())
+  if (!opt.run.record_ports.empty())
     throw std::runtime_error("--record-ports: the SoC build has no engine-core ports; use mcadsw_sim_core");
   return std::make_unique<SocDut>(ctx, mem, opt, std::move(cycle));
 }

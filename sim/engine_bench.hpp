@@ -50,22 +50,17 @@ constexpr uint64_t kClockPeriodPs = 10526;
 struct Rectification {
   Mesh left, right;           // the views' meshes: one step, one rectified size (the frame)
   // Bytes a row of the raw planes (raster), or from one 4-pixel column to the next
-  // (EngineOptions::tiled); 0: the raw width rounded up to 4, or 4 x the raw height.
+  // (FrameOptions::tiled); 0: the raw width rounded up to 4, or 4 x the raw height.
   uint32_t raw_stride = 0;
 };
 
-struct EngineOptions {
-  MemoryModel::Latency latency;  // memory latency and back-pressure (sim/axi_memory.hpp)
-  AxiMemory::Fault axi_fault;    // a read or write burst answered SLVERR / DECERR
-  long axi_write_latency = 0;    // further cycles before each write response (and its landing)
-  int axi_ar_interval = 1;       // an AR accepted at most every this many cycles
+// Where the frame lies in memory and the mode it runs in.
+struct FrameOptions {
   uint32_t stride = 0;           // bytes per row of the input planes; 0: width rounded up to 4
   // Input planes column-tiled (docs/memory_map.md): pixel (x, y) at
   // base + (x / 4) tile + 4 y + x % 4, so a strip's rows are read in bursts.
   bool tiled = false;
   uint32_t tile_stride = 0;      // tiled: bytes per 4-pixel column; 0: 4 x height
-  bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
-  bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
   uint32_t out_stride = 0;       // bytes per row of the output plane; 0: its row rounded up to 4
   // The planes in memory in the reverse order: output (LR: and the scratch and
   // mask planes) below the input planes, right view's below the left view's.
@@ -76,8 +71,30 @@ struct EngineOptions {
   // The planes back to back, each at the first multiple of 4 after the previous
   // one's stride x height bytes, instead of on 4 KiB boundaries.
   bool packed = false;
+  bool subpixel = false;         // mode bit 0: 16-bit output pixels, 16 d + offset
+  bool right = false;            // mode bit 2: the right view as base (docs/algorithm.md 12.1)
   bool lr = false;               // mode bit 1: left-right check, fill, median (docs/algorithm.md 12.2-12.5)
   int lr_tolerance = kLrToleranceDefault;  // T
+  // The engine rectifies the raw views first (RECT_CTRL.ENABLE): besides the planes
+  // above, which it then writes (the rectified planes) and reads, memory holds the
+  // raw planes (raster, or column-tiled with `tiled`), both meshes' memory images
+  // and the two validity bitmaps the engine writes. The expected output: each view
+  // through mcadsw::rectify, the usual reference on the rectified pair, then the
+  // invalid code at every invalid base pixel (mcadsw::mark_rect_invalid); the
+  // rectified planes the mode reads and the bitmaps are compared too.
+  std::optional<Rectification> rect;
+};
+
+// The memory system's timing and the faults it answers with.
+struct MemoryTiming {
+  MemoryModel::Latency latency;  // memory latency and back-pressure (sim/axi_memory.hpp)
+  AxiMemory::Fault axi_fault;    // a read or write burst answered SLVERR / DECERR
+  long axi_write_latency = 0;    // further cycles before each write response (and its landing)
+  int axi_ar_interval = 1;       // an AR accepted at most every this many cycles
+};
+
+// How a run is bounded, programmed and observed.
+struct RunControl {
   long max_cycles = 0;           // 0: derived from the frame size
   bool progress = false;         // a line every few million cycles on stderr
   std::string waves;             // FST file, empty: no waves
@@ -88,15 +105,13 @@ struct EngineOptions {
   // Directory for the second simulator (tests/icarus): the memory image and
   // configuration before the run, the disparity plane and counters after it.
   std::string dump_dir;
-  // The engine rectifies the raw views first (RECT_CTRL.ENABLE): besides the planes
-  // above, which it then writes (the rectified planes) and reads, memory holds the
-  // raw planes (raster, or column-tiled with `tiled`), both meshes' memory images
-  // and the two validity bitmaps the engine writes. The expected output: each view
-  // through mcadsw::rectify, the usual reference on the rectified pair, then the
-  // invalid code at every invalid base pixel (mcadsw::mark_rect_invalid); the
-  // rectified planes the mode reads and the bitmaps are compared too.
-  std::optional<Rectification> rect;
   Firmware* firmware = nullptr;  // programs the frames instead of the C++ driver; not owned
+};
+
+struct EngineOptions {
+  FrameOptions frame;
+  MemoryTiming memory;
+  RunControl run;
 };
 
 struct EngineResult {
@@ -128,9 +143,9 @@ struct EngineResult {
 };
 
 // Bytes of memory a frame of w x h pixels takes with these options (its planes,
-// padding and guards, from EngineOptions::origin); throws std::invalid_argument
+// padding and guards, from FrameOptions::origin); throws std::invalid_argument
 // for an illegal stride or a layout that does not fit in the 32-bit space. With
-// EngineOptions::rect, w x h is the raw views' size (the images run_engine takes).
+// FrameOptions::rect, w x h is the raw views' size (the images run_engine takes).
 uint64_t frame_bytes(int w, int h, const EngineOptions& opt);
 
 // Runs one frame. Throws std::runtime_error for harness failures (memory
@@ -148,7 +163,7 @@ EngineResult run_engine(const YuvImage& left, const YuvImage& right, const Confi
 //                    ignored: the frame, its status and counters unchanged);
 //   kAbort           CTRL.ABORT written in frame 0 (at_cycle 0: just before its
 //                    start, while idle, which must be ignored).
-// EngineOptions::axi_fault answers a read or write burst with an error (counted
+// MemoryTiming::axi_fault answers a read or write burst with an error (counted
 // over the whole run, so a small burst number falls in frame 0).
 struct Frame {
   YuvImage left, right;

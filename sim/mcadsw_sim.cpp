@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   int d = kNoD;
   double gamma = mcadsw::kDefaultGamma, scale = 0;
   mcadsw::sim::EngineOptions opt;
-  opt.progress = true;
+  opt.run.progress = true;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -124,11 +124,11 @@ int main(int argc, char** argv) {
       };
       if (a == "-d") d = int(mcadsw::parse_long(val(), "D"));
       else if (a == "--gamma") gamma = mcadsw::parse_double(val(), "gamma");
-      else if (a == "--latency") opt.latency.fixed = int(mcadsw::parse_long(val(), "latency"));
-      else if (a == "--ar-interval") opt.axi_ar_interval = int(mcadsw::parse_long(val(), "AR interval"));
+      else if (a == "--latency") opt.memory.latency.fixed = int(mcadsw::parse_long(val(), "latency"));
+      else if (a == "--ar-interval") opt.memory.axi_ar_interval = int(mcadsw::parse_long(val(), "AR interval"));
       else if (a == "--random-latency") {
-        opt.latency.random = true;
-        opt.latency.seed = uint32_t(mcadsw::parse_long(val(), "seed"));
+        opt.memory.latency.random = true;
+        opt.memory.latency.seed = uint32_t(mcadsw::parse_long(val(), "seed"));
       } else if (a == "--name") name = val();
       else if (a == "--gt") gt = val();
       else if (a == "--scale") scale = mcadsw::parse_double(val(), "scale");
@@ -136,21 +136,21 @@ int main(int argc, char** argv) {
       else if (a == "--out") out = val();
       else if (a == "--json") json = val();
       else if (a == "--waves") waves = val();
-      else if (a == "--dump") opt.dump_dir = val();
-      else if (a == "--record-ports") opt.record_ports = val();
-      else if (a == "--stride") opt.stride = stride(val(), "stride");
-      else if (a == "--tiled") opt.tiled = true;
-      else if (a == "--origin") opt.origin = mcadsw::parse_u32(val(), "origin");
-      else if (a == "--packed") opt.packed = true;
+      else if (a == "--dump") opt.run.dump_dir = val();
+      else if (a == "--record-ports") opt.run.record_ports = val();
+      else if (a == "--stride") opt.frame.stride = stride(val(), "stride");
+      else if (a == "--tiled") opt.frame.tiled = true;
+      else if (a == "--origin") opt.frame.origin = mcadsw::parse_u32(val(), "origin");
+      else if (a == "--packed") opt.frame.packed = true;
       else if (a == "--tile-stride") {
-        opt.tile_stride = stride(val(), "tile stride");
-        opt.tiled = true;
+        opt.frame.tile_stride = stride(val(), "tile stride");
+        opt.frame.tiled = true;
       }
-      else if (a == "--subpixel") opt.subpixel = true;
-      else if (a == "--right") opt.right = true;
-      else if (a == "--lr") opt.lr = true;
-      else if (a == "-T") opt.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
-      else if (a == "--out-stride") opt.out_stride = stride(val(), "output stride");
+      else if (a == "--subpixel") opt.frame.subpixel = true;
+      else if (a == "--right") opt.frame.right = true;
+      else if (a == "--lr") opt.frame.lr = true;
+      else if (a == "-T") opt.frame.lr_tolerance = int(mcadsw::parse_long(val(), "LR tolerance"));
+      else if (a == "--out-stride") opt.frame.out_stride = stride(val(), "output stride");
       else if (a == "--calib") calib = val();
       else if (a == "--mesh") mesh = val();
       else if (a == "--step") {
@@ -174,10 +174,10 @@ int main(int argc, char** argv) {
     if (d < 1 || d > mcadsw::kDmax)
       throw std::invalid_argument("D = " + std::to_string(d) + " out of range 1.." +
                                   std::to_string(mcadsw::kDmax));
-    if (opt.latency.fixed < 0) throw std::invalid_argument("latency must not be negative");
-    if (opt.axi_ar_interval < 1) throw std::invalid_argument("--ar-interval must be at least 1");
-    if (opt.lr && opt.right) throw std::invalid_argument("--lr and --right do not combine");
-    mcadsw::check_lr_tolerance(opt.lr_tolerance);
+    if (opt.memory.latency.fixed < 0) throw std::invalid_argument("latency must not be negative");
+    if (opt.memory.axi_ar_interval < 1) throw std::invalid_argument("--ar-interval must be at least 1");
+    if (opt.frame.lr && opt.frame.right) throw std::invalid_argument("--lr and --right do not combine");
+    mcadsw::check_lr_tolerance(opt.frame.lr_tolerance);
     if (!gt.empty() && (masks.empty() || !(scale > 0)))
       throw std::invalid_argument("--gt needs --scale S > 0 and --masks DIR");
     if (!calib.empty() && !mesh.empty()) throw std::invalid_argument("--calib and --mesh do not combine");
@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
     std::cerr << "mcadsw_sim: " << e.what() << "\n" << kUsage;
     return 2;
   }
-  opt.waves = waves;
+  opt.run.waves = waves;
   if (name.empty()) name = left;
 
   const bool rect = !calib.empty() || !mesh.empty();
@@ -237,25 +237,25 @@ int main(int argc, char** argv) {
       }
       fw = meshes.first.out_width;
       fh = meshes.first.out_height;
-      opt.rect = mcadsw::sim::Rectification{std::move(meshes.first), std::move(meshes.second)};
+      opt.frame.rect = mcadsw::sim::Rectification{std::move(meshes.first), std::move(meshes.second)};
     }
     mcadsw::Config cfg;
     cfg.disparities = d;
     cfg.table = mcadsw::make_weight_table(gamma);
     mcadsw::check_config(cfg, fw, fh);
-    if (opt.lr && fw > mcadsw::kPostMaxWidth)
+    if (opt.frame.lr && fw > mcadsw::kPostMaxWidth)
       throw std::invalid_argument("the LR mode takes widths up to " +
                                   std::to_string(mcadsw::kPostMaxWidth) + ", not " +
                                   std::to_string(fw));
-    if (opt.tile_stride && opt.tile_stride < 4 * uint32_t(fh))
-      throw std::invalid_argument("tile stride " + std::to_string(opt.tile_stride) +
+    if (opt.frame.tile_stride && opt.frame.tile_stride < 4 * uint32_t(fh))
+      throw std::invalid_argument("tile stride " + std::to_string(opt.frame.tile_stride) +
                                   " is below 4 x the height " + std::to_string(fh));
-    if (opt.stride && opt.stride < uint32_t(fw))
-      throw std::invalid_argument("stride " + std::to_string(opt.stride) + " is below the width " +
+    if (opt.frame.stride && opt.frame.stride < uint32_t(fw))
+      throw std::invalid_argument("stride " + std::to_string(opt.frame.stride) + " is below the width " +
                                   std::to_string(fw));
-    const int out_row = fw * (opt.subpixel ? 2 : 1);
-    if (opt.out_stride && opt.out_stride < uint32_t(out_row))
-      throw std::invalid_argument("output stride " + std::to_string(opt.out_stride) +
+    const int out_row = fw * (opt.frame.subpixel ? 2 : 1);
+    if (opt.frame.out_stride && opt.frame.out_stride < uint32_t(out_row))
+      throw std::invalid_argument("output stride " + std::to_string(opt.frame.out_stride) +
                                   " is below the output row of " + std::to_string(out_row) +
                                   " bytes");
     if (!out.empty()) {
@@ -283,14 +283,14 @@ int main(int argc, char** argv) {
         return m;
       };
       mcadsw::EvalOptions eo;
-      if (opt.subpixel) eo.disp_scale = mcadsw::kSubpixelScale;
-      const cv::Mat map = opt.subpixel ? mcadsw::to_mat(res.disparity16) : mcadsw::to_mat(res.disparity);
+      if (opt.frame.subpixel) eo.disp_scale = mcadsw::kSubpixelScale;
+      const cv::Mat map = opt.frame.subpixel ? mcadsw::to_mat(res.disparity16) : mcadsw::to_mat(res.disparity);
       err_all = mcadsw::evaluate(map, rd(gt), scale, rd_mask(masks + "/nonocc.png"), rd_mask(masks + "/all.png"),
                                  rd_mask(masks + "/disc.png"), eo)
                     .all;
     }
     if (!out.empty()) {
-      if (opt.subpixel)
+      if (opt.frame.subpixel)
         mcadsw::write_disparity16(res.disparity16, d, out, mcadsw::colormap_path_for(out));
       else
         mcadsw::write_disparity(res.disparity, d, out, mcadsw::colormap_path_for(out));
@@ -299,8 +299,8 @@ int main(int argc, char** argv) {
     const bool ok = res.clean();
     std::printf("%-16s %4dx%-4d D=%-2d%s%s%s%s %9ld cycles %6.1f fps@95MHz  read %8ld  written %6ld  "
                 "reads/px %5.2f  stalls %7ld  rbursts %7ld  wbursts %6ld  %s",
-                name.c_str(), res.width, res.height, d, opt.subpixel ? " sub" : "",
-                opt.right ? " right" : opt.lr ? " lr" : "", opt.tiled ? " tiled" : "",
+                name.c_str(), res.width, res.height, d, opt.frame.subpixel ? " sub" : "",
+                opt.frame.right ? " right" : opt.frame.lr ? " lr" : "", opt.frame.tiled ? " tiled" : "",
                 rect ? (" rect S=" + std::to_string(step)).c_str() : "", res.cycles, kClockMHz * 1e6 / res.cycles,
                 res.words_read, res.words_written, res.words_read / pixels, res.stall_cycles,
                 res.read_bursts, res.write_bursts, ok ? "BIT-EXACT" : "FAILED");
@@ -314,10 +314,10 @@ int main(int argc, char** argv) {
     if (!json.empty()) {
       std::ofstream j(json);
       j << "{\"case\": \"" << name << "\", \"width\": " << res.width << ", \"height\": " << res.height
-        << ", \"disparities\": " << d << ", \"subpixel\": " << (opt.subpixel ? "true" : "false")
-        << ", \"right\": " << (opt.right ? "true" : "false")
-        << ", \"lr\": " << (opt.lr ? "true" : "false")
-        << ", \"tiled\": " << (opt.tiled ? "true" : "false")
+        << ", \"disparities\": " << d << ", \"subpixel\": " << (opt.frame.subpixel ? "true" : "false")
+        << ", \"right\": " << (opt.frame.right ? "true" : "false")
+        << ", \"lr\": " << (opt.frame.lr ? "true" : "false")
+        << ", \"tiled\": " << (opt.frame.tiled ? "true" : "false")
         << ", \"rect\": " << (rect ? "true" : "false")
         << ", \"rect_step\": " << (rect ? std::to_string(step) : "null")
         << ", \"rect_mismatches\": " << res.rect_mismatches
@@ -326,7 +326,7 @@ int main(int argc, char** argv) {
         << ", \"words_read\": " << res.words_read << ", \"words_written\": " << res.words_written
         << ", \"stall_cycles\": " << res.stall_cycles << ", \"read_bursts\": " << res.read_bursts
         << ", \"write_bursts\": " << res.write_bursts << ", \"mismatches\": " << res.mismatches
-        << ", \"bus_violations\": " << res.bus.total() << ", \"stride\": " << (opt.stride ? opt.stride : (res.width + 3) / 4 * 4)
+        << ", \"bus_violations\": " << res.bus.total() << ", \"stride\": " << (opt.frame.stride ? opt.frame.stride : (res.width + 3) / 4 * 4)
         << ", \"error_all\": " << (err_all >= 0 ? std::to_string(err_all) : "null")
         << ", \"sim_seconds\": " << res.sim_seconds << "}\n";
     }

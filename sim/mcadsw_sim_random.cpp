@@ -55,14 +55,14 @@ enum class Interrupt { kNone, kRead, kWrite, kAbort };
 
 struct Case {
   std::string pattern;
-  YuvImage left, right;  // rectified (opt.rect): the raw views
+  YuvImage left, right;  // rectified (opt.frame.rect): the raw views
   Config cfg;
   sim::EngineOptions opt;
   Interrupt interrupt = Interrupt::kNone;
   long abort_at = 0;  // kAbort: cycles after the start
   // The frame: the images' size, or the meshes' rectified size.
-  int width() const { return opt.rect ? opt.rect->left.out_width : left.width(); }
-  int height() const { return opt.rect ? opt.rect->left.out_height : left.height(); }
+  int width() const { return opt.frame.rect ? opt.frame.rect->left.out_width : left.width(); }
+  int height() const { return opt.frame.rect ? opt.frame.rect->left.out_height : left.height(); }
 };
 
 Plane pattern_plane(const std::string& kind, int w, int h, std::mt19937& rng) {
@@ -113,18 +113,18 @@ void place(Case& c, uint32_t seed, int k) {
   std::mt19937 rng(seq);
   const int w = c.width(), h = c.height();                      // the frame
   const int iw = c.left.width(), ih = c.left.height();          // the images (rectified: raw)
-  const uint32_t raw_row = c.opt.tiled ? 4 * uint32_t(ih) : uint32_t(iw);  // least raw stride
+  const uint32_t raw_row = c.opt.frame.tiled ? 4 * uint32_t(ih) : uint32_t(iw);  // least raw stride
   const uint64_t frames = c.interrupt == Interrupt::kNone ? 1 : 2;
   if (rng() % 3 == 0) {
     const auto pad = [&rng](uint32_t& stride, uint32_t row) {
       const int bits = std::uniform_int_distribution<int>(8, 30)(rng);
       stride = (row + 3) / 4 * 4 + 4 * uint32_t(std::uniform_int_distribution<uint64_t>(0, (1ull << (bits - 2)) - 1)(rng));
     };
-    const uint32_t row = uint32_t(w * (c.opt.subpixel ? 2 : 1));
-    pad(c.opt.stride, uint32_t(w));
-    pad(c.opt.out_stride, row);
-    if (c.opt.tiled) pad(c.opt.tile_stride, 4 * uint32_t(h));
-    if (c.opt.rect) pad(c.opt.rect->raw_stride, raw_row);
+    const uint32_t row = uint32_t(w * (c.opt.frame.subpixel ? 2 : 1));
+    pad(c.opt.frame.stride, uint32_t(w));
+    pad(c.opt.frame.out_stride, row);
+    if (c.opt.frame.tiled) pad(c.opt.frame.tile_stride, 4 * uint32_t(h));
+    if (c.opt.frame.rect) pad(c.opt.frame.rect->raw_stride, raw_row);
     const auto fits = [&] {
       try {
         return frames * sim::frame_bytes(iw, ih, c.opt) <= (uint64_t(1) << 32);
@@ -134,19 +134,19 @@ void place(Case& c, uint32_t seed, int k) {
     };
     // Halve the padding of the largest stride until the frame fits.
     while (!fits()) {
-      uint32_t* s = &c.opt.stride;
+      uint32_t* s = &c.opt.frame.stride;
       uint32_t min = (uint32_t(w) + 3) / 4 * 4;
-      if (c.opt.out_stride > *s) s = &c.opt.out_stride, min = (row + 3) / 4 * 4;
-      if (c.opt.tiled && c.opt.tile_stride > *s) s = &c.opt.tile_stride, min = 4 * uint32_t(h);
-      if (c.opt.rect && c.opt.rect->raw_stride > *s) s = &c.opt.rect->raw_stride, min = (raw_row + 3) / 4 * 4;
+      if (c.opt.frame.out_stride > *s) s = &c.opt.frame.out_stride, min = (row + 3) / 4 * 4;
+      if (c.opt.frame.tiled && c.opt.frame.tile_stride > *s) s = &c.opt.frame.tile_stride, min = 4 * uint32_t(h);
+      if (c.opt.frame.rect && c.opt.frame.rect->raw_stride > *s) s = &c.opt.frame.rect->raw_stride, min = (raw_row + 3) / 4 * 4;
       if (*s - min < 8) throw std::logic_error("place: case " + std::to_string(k) + " does not fit below 2^32");
       *s = min + (*s - min) / 8 * 4;
     }
   }
-  c.opt.packed = rng() % 2;
+  c.opt.frame.packed = rng() % 2;
   const uint64_t room = (uint64_t(1) << 32) - frames * sim::frame_bytes(iw, ih, c.opt);
   const int where = int(rng() % 3);
-  c.opt.origin = where == 0 ? 0u
+  c.opt.frame.origin = where == 0 ? 0u
                  : where == 1 ? uint32_t(room / 4096 * 4096)
                               : uint32_t(std::uniform_int_distribution<uint64_t>(0, room / 4096)(rng) * 4096);
 }
@@ -211,37 +211,37 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
       v = uint8_t(weight_from_code(code));
     }
   }
-  c.opt.latency.random = rng() % 2;
-  c.opt.latency.seed = rng();
-  c.opt.latency.max_random = std::uniform_int_distribution<int>(1, 12)(rng);
-  c.opt.latency.gnt_prob = std::uniform_real_distribution<double>(0.3, 1.0)(rng);
-  if (!c.opt.latency.random) c.opt.latency.fixed = std::uniform_int_distribution<int>(0, 4)(rng);
+  c.opt.memory.latency.random = rng() % 2;
+  c.opt.memory.latency.seed = rng();
+  c.opt.memory.latency.max_random = std::uniform_int_distribution<int>(1, 12)(rng);
+  c.opt.memory.latency.gnt_prob = std::uniform_real_distribution<double>(0.3, 1.0)(rng);
+  if (!c.opt.memory.latency.random) c.opt.memory.latency.fixed = std::uniform_int_distribution<int>(0, 4)(rng);
   // Rows far apart in memory: padding of up to 4 KiB after each row.
   if (rng() % 4 != 0)
-    c.opt.stride = uint32_t((w + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 1024)(rng));
+    c.opt.frame.stride = uint32_t((w + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 1024)(rng));
   // Output mode (drawn last, so the draws above stay those of earlier versions):
   // sub-pixel in one case out of three, half of them with an output stride of
   // their own beyond the 2-byte row.
   if (rng() % 3 == 0) {
-    c.opt.subpixel = true;
+    c.opt.frame.subpixel = true;
     if (rng() % 2)
-      c.opt.out_stride =
+      c.opt.frame.out_stride =
           uint32_t((2 * w + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 512)(rng));
   }
   // The right view as base in one case out of three.
-  c.opt.right = rng() % 3 == 0;
+  c.opt.frame.right = rng() % 3 == 0;
   // The LR mode (left map, right map, post stage) in one of the other cases out
   // of three (up to the post stage's width), the tolerance T mostly small,
   // sometimes up to its maximum.
-  if (!c.opt.right && rng() % 3 == 0 && w <= kPostMaxWidth) {
-    c.opt.lr = true;
-    c.opt.lr_tolerance = rng() % 4 == 0 ? int(rng() % (kLrToleranceMax + 1)) : int(rng() % 4);
+  if (!c.opt.frame.right && rng() % 3 == 0 && w <= kPostMaxWidth) {
+    c.opt.frame.lr = true;
+    c.opt.frame.lr_tolerance = rng() % 4 == 0 ? int(rng() % (kLrToleranceMax + 1)) : int(rng() % 4);
   }
   // Column-tiled input planes in one case out of three (read bursts), half of
   // them with a padded tile stride (4 KiB boundaries at other rows).
   if (rng() % 3 == 0) {
-    c.opt.tiled = true;
-    if (rng() % 2) c.opt.tile_stride = uint32_t(4 * h + 4 * std::uniform_int_distribution<int>(1, 300)(rng));
+    c.opt.frame.tiled = true;
+    if (rng() % 2) c.opt.frame.tile_stride = uint32_t(4 * h + 4 * std::uniform_int_distribution<int>(1, 300)(rng));
   }
   // An interruption in one case out of eight (drawn last). The burst numbers
   // stay inside the first frame: it reads more than a word a pixel (tiled: more
@@ -252,12 +252,12 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
     const int resp = 2 + int(rng() % 2);
     if (kind == 0) {
       c.interrupt = Interrupt::kRead;
-      const long read_bursts = std::max(1L, long(w) * h / (c.opt.tiled ? 8 : 1));
-      c.opt.axi_fault = {std::uniform_int_distribution<long>(1, read_bursts)(rng), 0, resp};
+      const long read_bursts = std::max(1L, long(w) * h / (c.opt.frame.tiled ? 8 : 1));
+      c.opt.memory.axi_fault = {std::uniform_int_distribution<long>(1, read_bursts)(rng), 0, resp};
     } else if (kind == 1) {
       c.interrupt = Interrupt::kWrite;
       const long block_rows = long(h) * ((w + kBlock - 1) / kBlock);
-      c.opt.axi_fault = {0, std::uniform_int_distribution<long>(1, block_rows)(rng), resp};
+      c.opt.memory.axi_fault = {0, std::uniform_int_distribution<long>(1, block_rows)(rng), resp};
     } else {
       c.interrupt = Interrupt::kAbort;
       c.abort_at = std::uniform_int_distribution<long>(1, 20000)(rng);
@@ -273,9 +273,9 @@ Case make_case(uint32_t seed, int k, const std::vector<std::pair<YuvImage, YuvIm
     r.left = sim::random_fitting_mesh(w, h, s, iw, ih, rect_rng);
     r.right = rect_rng() % 3 == 0 ? r.left : sim::random_fitting_mesh(w, h, s, iw, ih, rect_rng);
     if (rect_rng() % 4 != 0)
-      r.raw_stride = c.opt.tiled ? uint32_t(4 * ih + 4 * std::uniform_int_distribution<int>(1, 300)(rect_rng))
+      r.raw_stride = c.opt.frame.tiled ? uint32_t(4 * ih + 4 * std::uniform_int_distribution<int>(1, 300)(rect_rng))
                                  : uint32_t((iw + 3) / 4 * 4 + 4 * std::uniform_int_distribution<int>(1, 1024)(rect_rng));
-    c.opt.rect = std::move(r);
+    c.opt.frame.rect = std::move(r);
   }
   place(c, seed, k);
   return c;
@@ -372,23 +372,23 @@ int main(int argc, char** argv) {
                                        "  after an abort"};
     // Rectified: the step, the raw views' size and the raw planes' stride.
     std::string rect;
-    if (c.opt.rect) {
-      const uint32_t rs = c.opt.rect->raw_stride ? c.opt.rect->raw_stride
-                          : c.opt.tiled ? 4u * unsigned(c.left.height())
+    if (c.opt.frame.rect) {
+      const uint32_t rs = c.opt.frame.rect->raw_stride ? c.opt.frame.rect->raw_stride
+                          : c.opt.frame.tiled ? 4u * unsigned(c.left.height())
                                         : unsigned((c.left.width() + 3) / 4 * 4);
-      rect = " rect S=" + std::to_string(c.opt.rect->left.step()) + " raw " + std::to_string(c.left.width()) + "x" +
+      rect = " rect S=" + std::to_string(c.opt.frame.rect->left.step()) + " raw " + std::to_string(c.left.width()) + "x" +
              std::to_string(c.left.height()) + " (stride " + std::to_string(rs) + ")";
     }
     std::printf("case %4d  %-8s %4dx%-3d D=%-2d %s %s stride %5u%s at 0x%08x%s%s  %s latency  %8ld cycles  %s%s\n", k,
                 c.pattern.c_str(), c.width(), c.height(), c.cfg.disparities,
-                c.opt.subpixel ? "sub" : "raw", c.opt.right ? "R " : c.opt.lr ? "LR" : "L ",
-                c.opt.stride ? c.opt.stride : unsigned((c.width() + 3) / 4 * 4),
-                c.opt.tiled ? (" tile " + std::to_string(c.opt.tile_stride ? c.opt.tile_stride
+                c.opt.frame.subpixel ? "sub" : "raw", c.opt.frame.right ? "R " : c.opt.frame.lr ? "LR" : "L ",
+                c.opt.frame.stride ? c.opt.frame.stride : unsigned((c.width() + 3) / 4 * 4),
+                c.opt.frame.tiled ? (" tile " + std::to_string(c.opt.frame.tile_stride ? c.opt.frame.tile_stride
                                                                          : 4u * unsigned(c.height())))
                                   .c_str()
                             : "",
-                unsigned(c.opt.origin), c.opt.packed ? " packed" : "", rect.c_str(),
-                c.opt.latency.random ? "random" : ("fixed " + std::to_string(c.opt.latency.fixed)).c_str(),
+                unsigned(c.opt.frame.origin), c.opt.frame.packed ? " packed" : "", rect.c_str(),
+                c.opt.memory.latency.random ? "random" : ("fixed " + std::to_string(c.opt.memory.latency.fixed)).c_str(),
                 r.cycles, ok ? "BIT-EXACT" : "FAILED", kInterrupt[int(c.interrupt)]);
     if (!ok) {
       ++failures;
@@ -397,7 +397,7 @@ int main(int argc, char** argv) {
       if (r.timed_out) std::printf("  the engine did not finish\n");
       if (r.error) std::printf("  configuration rejected, code %d\n", r.error_code);
       std::printf("  %ld mismatches%s, %ld memory-port violations\n%s", r.mismatches,
-                  c.opt.rect ? (" (" + std::to_string(r.rect_mismatches) + " in the rectified planes and bitmaps)").c_str()
+                  c.opt.frame.rect ? (" (" + std::to_string(r.rect_mismatches) + " in the rectified planes and bitmaps)").c_str()
                              : "",
                   r.bus.total(), r.report.c_str());
       std::printf("  reproduce: %s --seed %u --case %d\n", argv[0], seed, k);

@@ -4,7 +4,7 @@
 // The C header (driver/include/mcadsw/mcadsw_regs.h) at work: the C99 firmware of
 // firmware.c identifies the SoC (mcadsw_top, Verilated), programs and starts each
 // frame and reads its outcome, on the register bus the C++ driver uses
-// (sim::EngineOptions::firmware); the bench scores every output pixel against the
+// (sim::RunControl::firmware); the bench scores every output pixel against the
 // reference as for the driver's frames. One Teddy crop a mode: raw, sub-pixel,
 // right view as base, LR, and rectified; then starts the engine rejects, whose
 // codes and texts the firmware reads.
@@ -118,12 +118,12 @@ TEST(CFirmware, FramesInEveryOutputModeMatchReference) {
     SCOPED_TRACE(m.name);
     CFirmware fw;
     sim::EngineOptions opt;
-    opt.firmware = &fw;
-    opt.subpixel = m.subpixel;
-    opt.right = m.right;
-    opt.lr = m.lr;
-    opt.latency.random = true;  // random memory timing and back-pressure
-    opt.latency.seed = 11;
+    opt.run.firmware = &fw;
+    opt.frame.subpixel = m.subpixel;
+    opt.frame.right = m.right;
+    opt.frame.lr = m.lr;
+    opt.memory.latency.random = true;  // random memory timing and back-pressure
+    opt.memory.latency.seed = 11;
     Config cfg;
     cfg.disparities = std::min(kDmax, 20);
     const sim::EngineResult res = sim::run_engine(l, r, cfg, opt);
@@ -141,8 +141,8 @@ TEST(CFirmware, RectifiedFrameMatchesReference) {
   const YuvImage r = crop(load_yuv(dir + "right.png"), 150, 100, raw_w, raw_h);
   CFirmware fw;
   sim::EngineOptions opt;
-  opt.firmware = &fw;
-  opt.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 3, raw_w, raw_h, rng),
+  opt.run.firmware = &fw;
+  opt.frame.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 3, raw_w, raw_h, rng),
                                 sim::random_fitting_mesh(w, h, 3, raw_w, raw_h, rng)};
   Config cfg;
   cfg.disparities = std::min(kDmax, 12);
@@ -169,7 +169,7 @@ TEST(CFirmware, RejectedStartsReportTheirCodes) {
     SCOPED_TRACE(b.what);
     CFirmware fw;
     sim::EngineOptions opt;
-    opt.firmware = &fw;
+    opt.run.firmware = &fw;
     const sim::EngineResult res = sim::run_raw(b.cfg, opt, 3000);
     EXPECT_EQ(res.bus.total(), 0) << res.bus.describe();
     EXPECT_TRUE(res.error);

@@ -66,10 +66,10 @@ TEST(Axi, DepthRowsAreWriteBursts) {
         SCOPED_TRACE(std::string(right ? "right view as base, " : "") + (sub ? "sub-pixel" : "raw") +
                      (random ? ", random back-pressure" : ""));
         EngineOptions opt;
-        opt.subpixel = sub;
-        opt.right = right;
-        opt.latency.random = random;
-        opt.latency.seed = 9;
+        opt.frame.subpixel = sub;
+        opt.frame.right = right;
+        opt.memory.latency.random = random;
+        opt.memory.latency.seed = 9;
         const EngineResult res = sim::run_engine(l, r, cfg, opt);
         expect_exact(res);
         EXPECT_EQ(res.write_bursts, block_rows);
@@ -96,7 +96,7 @@ TEST(Axi, ResponseErrorsEndTheFrameThenACleanFrame) {
   const EngineResult clean = sim::run_frames({frames[0]}, clean_opt).at(0);
   expect_exact(clean);
   ASSERT_GT(clean.write_bursts, 8);
-  clean_opt.tiled = true;
+  clean_opt.frame.tiled = true;
   const EngineResult clean_tiled = sim::run_frames({frames[0]}, clean_opt).at(0);
   expect_exact(clean_tiled);
   ASSERT_LT(clean_tiled.read_bursts, clean.read_bursts);
@@ -123,10 +123,10 @@ TEST(Axi, ResponseErrorsEndTheFrameThenACleanFrame) {
         // A late read: 9/10 of the frame's read bursts (in its layout).
         const long read_burst =
             c.read_burst > 1 ? (tiled ? clean_tiled : clean).read_bursts * 9 / 10 : c.read_burst;
-        opt.axi_fault = {read_burst, c.write_burst, resp};
-        opt.latency.random = random;
-        opt.tiled = tiled;
-        opt.latency.seed = 5;
+        opt.memory.axi_fault = {read_burst, c.write_burst, resp};
+        opt.memory.latency.random = random;
+        opt.frame.tiled = tiled;
+        opt.memory.latency.seed = 5;
         const auto res = sim::run_frames(frames, opt);
         expect_ended(res[0], c.code);
         expect_exact(res[1]);
@@ -143,9 +143,9 @@ TEST(Axi, AbortEndsTheFrameThenACleanFrame) {
       SCOPED_TRACE("abort after " + std::to_string(at) + " cycles" +
                    (random ? ", random back-pressure, tiled input" : ""));
       EngineOptions opt;
-      opt.latency.random = random;
-      opt.tiled = random;  // read bursts of several beats in flight
-      opt.latency.seed = 6;
+      opt.memory.latency.random = random;
+      opt.frame.tiled = random;  // read bursts of several beats in flight
+      opt.memory.latency.seed = 6;
       const auto res = sim::run_frames(frames, opt, {sim::Fault::kAbort, at});
       expect_ended(res[0], regs::kErrAborted);
       expect_exact(res[1]);
@@ -167,8 +167,8 @@ TEST(Axi, SlowWriteResponsesAreWaitedFor) {
   for (bool lr : {false, true}) {
     SCOPED_TRACE(lr ? "LR mode" : "raw mode");
     EngineOptions opt;
-    opt.lr = lr;
-    opt.axi_write_latency = 3000;
+    opt.frame.lr = lr;
+    opt.memory.axi_write_latency = 3000;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
 }
@@ -190,13 +190,13 @@ TEST(Axi, TiledInputIsReadInBursts) {
         SCOPED_TRACE(std::string(mode == 1 ? "right view as base" : mode == 2 ? "LR" : "left") +
                      ", tile stride " + std::to_string(tile) + (random ? ", random back-pressure" : ""));
         EngineOptions opt;
-        opt.right = mode == 1;
-        opt.lr = mode == 2;
-        opt.latency.random = random;
-        opt.latency.seed = 10;
+        opt.frame.right = mode == 1;
+        opt.frame.lr = mode == 2;
+        opt.memory.latency.random = random;
+        opt.memory.latency.seed = 10;
         const EngineResult raster = sim::run_engine(l, r, cfg, opt);
-        opt.tiled = true;
-        opt.tile_stride = tile;
+        opt.frame.tiled = true;
+        opt.frame.tile_stride = tile;
         const EngineResult tiled = sim::run_engine(l, r, cfg, opt);
         expect_exact(raster);
         expect_exact(tiled);
@@ -219,10 +219,10 @@ TEST(Axi, LongReadLatency) {
   Config cfg;
   cfg.disparities = 20;
   EngineOptions opt;
-  opt.latency.fixed = 30;
+  opt.memory.latency.fixed = 30;
   expect_exact(sim::run_engine(test::random_yuv(50, 33, rng), test::random_yuv(50, 33, rng), cfg, opt));
-  opt.latency.fixed = 40;
-  opt.lr = true;
+  opt.memory.latency.fixed = 40;
+  opt.frame.lr = true;
   expect_exact(sim::run_engine(test::random_yuv(160, 12, rng), test::random_yuv(160, 12, rng), cfg, opt));
 }
 

@@ -53,8 +53,8 @@ TEST(Engine, TeddyCropAtDmaxWithRandomLatency) {
   Config cfg;
   cfg.disparities = kDmax;
   EngineOptions opt;
-  opt.latency.random = true;
-  opt.latency.seed = 7;
+  opt.memory.latency.random = true;
+  opt.memory.latency.seed = 7;
   expect_exact(sim::run_engine(l, r, cfg, opt));
 }
 
@@ -63,7 +63,7 @@ TEST(Engine, FixedLatencyAndSingleDisparity) {
   Config cfg;
   cfg.disparities = 1;
   EngineOptions opt;
-  opt.latency.fixed = 3;
+  opt.memory.latency.fixed = 3;
   expect_exact(sim::run_engine(test::random_yuv(37, 20, rng), test::random_yuv(37, 20, rng), cfg, opt));
 }
 
@@ -82,8 +82,8 @@ TEST(Engine, BackToBackFramesWithoutReset) {
   add(13, 9, 8, 60.0);
   add(37, 20, 1, 10.0);
   EngineOptions opt;
-  opt.latency.random = true;
-  opt.latency.seed = 11;
+  opt.memory.latency.random = true;
+  opt.memory.latency.seed = 11;
   for (const EngineResult& r : sim::run_frames(frames, opt)) expect_exact(r);
 }
 
@@ -146,9 +146,9 @@ TEST(Engine, LargeStrideWithRandomLatency) {
   Config cfg;
   cfg.disparities = 20;
   EngineOptions opt;
-  opt.stride = 1000;
-  opt.latency.random = true;
-  opt.latency.seed = 3;
+  opt.frame.stride = 1000;
+  opt.memory.latency.random = true;
+  opt.memory.latency.seed = 3;
   expect_exact(sim::run_engine(test::random_yuv(43, 22, rng), test::random_yuv(43, 22, rng), cfg, opt));
 }
 
@@ -179,7 +179,7 @@ TEST(Engine, CostsNearTheAccumulatorsTopBits) {
   for (const bool sub : {false, true}) {
     SCOPED_TRACE(sub ? "sub-pixel" : "raw");
     EngineOptions opt;
-    opt.subpixel = sub;
+    opt.frame.subpixel = sub;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
 }
@@ -237,7 +237,7 @@ TEST(Engine, ColourDistancesAtThresholdsAbove255) {
   for (const bool sub : {false, true}) {
     SCOPED_TRACE(sub ? "sub-pixel" : "raw");
     EngineOptions opt;
-    opt.subpixel = sub;
+    opt.frame.subpixel = sub;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
 }
@@ -256,8 +256,8 @@ TEST(Engine, WidestFrameOfNoise) {
     for (const bool tiled : {false, true}) {
       SCOPED_TRACE(std::string(right ? "right" : "left") + " view as base, " + (tiled ? "tiled" : "raster"));
       EngineOptions opt;
-      opt.right = right;
-      opt.tiled = tiled;
+      opt.frame.right = right;
+      opt.frame.tiled = tiled;
       expect_exact(sim::run_engine(l, r, cfg, opt));
     }
   // The LR mode at the post stage's widest (kPostMaxWidth): its column bits,
@@ -265,8 +265,8 @@ TEST(Engine, WidestFrameOfNoise) {
   for (const bool sub : {false, true}) {
     SCOPED_TRACE(std::string("LR mode") + (sub ? ", sub-pixel" : ""));
     EngineOptions lr;
-    lr.lr = true;
-    lr.subpixel = sub;
+    lr.frame.lr = true;
+    lr.frame.subpixel = sub;
     expect_exact(sim::run_engine(crop(l, 0, 0, kPostMaxWidth, 3), crop(r, 0, 0, kPostMaxWidth, 3), cfg, lr));
   }
 }
@@ -283,9 +283,9 @@ TEST(Engine, PlanesInReverseOrder) {
   for (const int mode : {0, 1, 2}) {
     SCOPED_TRACE(mode == 0 ? "left view as base" : mode == 1 ? "right view as base" : "LR mode");
     EngineOptions opt;
-    opt.reversed_planes = true;
-    opt.right = mode == 1;
-    opt.lr = mode == 2;
+    opt.frame.reversed_planes = true;
+    opt.frame.right = mode == 1;
+    opt.frame.lr = mode == 2;
     expect_exact(sim::run_engine(l, r, cfg, opt));
   }
 }
@@ -301,11 +301,11 @@ TEST(Engine, SubpixelOutputMatchesReference) {
     Config cfg;
     cfg.disparities = d;
     EngineOptions opt;
-    opt.subpixel = true;
-    opt.stride = 48;
-    opt.out_stride = 300;
-    opt.latency.random = true;
-    opt.latency.seed = uint32_t(d);
+    opt.frame.subpixel = true;
+    opt.frame.stride = 48;
+    opt.frame.out_stride = 300;
+    opt.memory.latency.random = true;
+    opt.memory.latency.seed = uint32_t(d);
     const EngineResult r =
         sim::run_engine(test::random_yuv(41, 21, rng), test::random_yuv(41, 21, rng), cfg, opt);
     expect_exact(r);
@@ -331,12 +331,12 @@ TEST(Engine, RightViewAsBaseMatchesReference) {
       Config cfg;
       cfg.disparities = 17;
       EngineOptions opt;
-      opt.right = true;
-      opt.subpixel = sub;
-      opt.stride = 64;
-      opt.out_stride = sub ? 100 : 48;
-      opt.latency.random = true;
-      opt.latency.seed = uint32_t(w);
+      opt.frame.right = true;
+      opt.frame.subpixel = sub;
+      opt.frame.stride = 64;
+      opt.frame.out_stride = sub ? 100 : 48;
+      opt.memory.latency.random = true;
+      opt.memory.latency.seed = uint32_t(w);
       expect_exact(sim::run_engine(test::random_yuv(w, 20, rng), test::random_yuv(w, 20, rng), cfg, opt));
     }
 }
@@ -359,13 +359,13 @@ TEST(Engine, LrModeMatchesReference) {
       Config cfg;
       cfg.disparities = 23;
       EngineOptions opt;
-      opt.lr = true;
-      opt.lr_tolerance = tol;
-      opt.subpixel = sub;
-      opt.stride = 64;
-      opt.out_stride = sub ? 100 : 48;
-      opt.latency.random = k % 2 == 0;
-      opt.latency.seed = uint32_t(w);
+      opt.frame.lr = true;
+      opt.frame.lr_tolerance = tol;
+      opt.frame.subpixel = sub;
+      opt.frame.stride = 64;
+      opt.frame.out_stride = sub ? 100 : 48;
+      opt.memory.latency.random = k % 2 == 0;
+      opt.memory.latency.seed = uint32_t(w);
       const EngineResult r = sim::run_engine(crop(left, 120 + 7 * k, 110, w, 21),
                                              crop(right, 120 + 7 * k, 110, w, 21), cfg, opt);
       expect_exact(r);
@@ -390,9 +390,9 @@ TEST(Engine, LrModeFaultsAndBackToBackFrames) {
   const std::vector<sim::Frame> frames{{crop(left, 150, 90, 37, 19), crop(right, 150, 90, 37, 19), c1},
                                        {crop(left, 60, 140, 22, 25), crop(right, 60, 140, 22, 25), c2}};
   EngineOptions opt;
-  opt.lr = true;
-  opt.subpixel = true;
-  opt.lr_tolerance = 2;
+  opt.frame.lr = true;
+  opt.frame.subpixel = true;
+  opt.frame.lr_tolerance = 2;
   const std::vector<EngineResult> clean = sim::run_frames(frames, opt);
   for (const EngineResult& r : clean) expect_exact(r);
   const long frame0 = clean.at(0).cycles;
@@ -466,21 +466,21 @@ TEST(Engine, RectifiedFramesMatchReference) {
     const int rh = std::max(4, int(h * std::uniform_real_distribution<double>(0.7, 1.4)(rng)));
     const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
     EngineOptions opt;
-    opt.rect = sim::Rectification{sim::random_fitting_mesh(w, h, s, rw, rh, rng),
+    opt.frame.rect = sim::Rectification{sim::random_fitting_mesh(w, h, s, rw, rh, rng),
                                   sim::random_fitting_mesh(w, h, s, rw, rh, rng)};
-    opt.subpixel = k % 2 == 1;
-    opt.lr = k >= 6;  // dR 255 and dL flagged at invalid pixels before the post stage
-    opt.right = !opt.lr && k % 3 == 2;
-    opt.tiled = k >= 3 && k != 6;
-    opt.latency.random = k % 2 == 0;
-    opt.latency.seed = uint32_t(40 + k);
+    opt.frame.subpixel = k % 2 == 1;
+    opt.frame.lr = k >= 6;  // dR 255 and dL flagged at invalid pixels before the post stage
+    opt.frame.right = !opt.frame.lr && k % 3 == 2;
+    opt.frame.tiled = k >= 3 && k != 6;
+    opt.memory.latency.random = k % 2 == 0;
+    opt.memory.latency.seed = uint32_t(40 + k);
     Config cfg;
     cfg.disparities = std::uniform_int_distribution<int>(2, std::min(24, kDmax))(rng);
     SCOPED_TRACE("frame " + std::to_string(k) + ": " + std::to_string(w) + "x" + std::to_string(h) + " from " +
                  std::to_string(rw) + "x" + std::to_string(rh) + ", S = " + std::to_string(1 << s) +
-                 (opt.subpixel ? ", sub-pixel" : "") + (opt.right ? ", right view as base" : "") +
-                 (opt.lr ? ", LR" : "") +
-                 (opt.tiled ? ", tiled" : ""));
+                 (opt.frame.subpixel ? ", sub-pixel" : "") + (opt.frame.right ? ", right view as base" : "") +
+                 (opt.frame.lr ? ", LR" : "") +
+                 (opt.frame.tiled ? ", tiled" : ""));
     const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
     expect_exact(r);
     EXPECT_EQ(r.rect_mismatches, 0);
@@ -497,7 +497,7 @@ TEST(Engine, RectifyPassFaults) {
   const int w = 40, h = 24, rw = 44, rh = 28;
   const auto [l0, r0] = raw_crops(rw, rh, rng);
   const auto [l1, r1] = raw_crops(rw, rh, rng);
-  opt.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 4, rw, rh, rng, 0.3),
+  opt.frame.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 4, rw, rh, rng, 0.3),
                                 sim::random_fitting_mesh(w, h, 4, rw, rh, rng, 0.3)};
   Config cfg;
   cfg.disparities = 9;
@@ -814,7 +814,7 @@ TEST(Engine, TallestFrames) {
     for (const bool lr : {false, true}) {  // the LR mode: its post stage's row bits
       SCOPED_TRACE("H = " + std::to_string(h) + (lr ? ", LR mode" : ""));
       EngineOptions opt;
-      opt.lr = lr;
+      opt.frame.lr = lr;
       expect_exact(sim::run_engine(test::random_yuv(4, h, rng), test::random_yuv(4, h, rng), cfg, opt));
     }
 }
@@ -864,23 +864,23 @@ TEST(Engine, FramesAnywhereInTheAddressSpace) {
     const YuvImage l = test::random_yuv(pl.w, pl.h, rng), r = test::random_yuv(pl.w, pl.h, rng);
     for (const int mode : {0, 1, 2}) {
       EngineOptions opt;
-      opt.stride = pl.stride;
-      opt.out_stride = pl.out_stride;
-      opt.tiled = pl.tiled;
-      opt.tile_stride = pl.tile_stride;
-      opt.packed = pl.packed;
-      opt.right = mode == 1;
-      opt.lr = mode == 2;
-      opt.subpixel = mode == 2;
+      opt.frame.stride = pl.stride;
+      opt.frame.out_stride = pl.out_stride;
+      opt.frame.tiled = pl.tiled;
+      opt.frame.tile_stride = pl.tile_stride;
+      opt.frame.packed = pl.packed;
+      opt.frame.right = mode == 1;
+      opt.frame.lr = mode == 2;
+      opt.frame.subpixel = mode == 2;
       uint64_t bytes = 0;
       try {
         bytes = sim::frame_bytes(pl.w, pl.h, opt);
       } catch (const std::invalid_argument&) {
         continue;  // the LR mode's two more planes of this stride do not fit
       }
-      if (pl.top) opt.origin = uint32_t(((uint64_t(1) << 32) - bytes) / 4096 * 4096);
+      if (pl.top) opt.frame.origin = uint32_t(((uint64_t(1) << 32) - bytes) / 4096 * 4096);
       SCOPED_TRACE(std::string(pl.what) + (mode == 0 ? ", left view as base" : mode == 1 ? ", right view as base" : ", LR sub-pixel") +
-                   ", origin " + std::to_string(opt.origin));
+                   ", origin " + std::to_string(opt.frame.origin));
       expect_exact(sim::run_engine(l, r, cfg, opt));
       ++runs;
     }
