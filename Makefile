@@ -70,7 +70,7 @@ sim-build: bootstrap
 ## sim: the engine regression on the bundled pairs, every pixel against the reference
 ##   (build/sim/summary.json; CASE=<name> one case, WAVES=1 an FST, DMAX= PAR= FPGA=1 RECT=0 a configuration)
 sim: $(CFG_DEP)
-	@scripts/sim_regression.sh $(CFG_DIR) "$(CASE)" "$(WAVES)"
+	@python3 flow/sim_regression.py --build $(CFG_DIR) --case "$(CASE)" --waves "$(WAVES)"
 
 ## sim-random: N=200 SEED=1: random pairs, sizes, D, tables and memory timing against the reference
 N    ?= 200
@@ -81,7 +81,8 @@ sim-random: $(CFG_DEP)
 ## coverage: Verilator line and toggle coverage under the regression stimulus (build/cov;
 ##   N=40 random cases); fails below 90 % toggle or on a point tests/coverage/untoggled.txt lacks
 coverage: bootstrap
-	@N=$(if $(filter command line,$(origin N)),$(N),40) scripts/coverage.sh $(abspath $(BUILD_DIR)/cov)
+	@python3 flow/coverage.py --build $(abspath $(BUILD_DIR)/cov) --n $(if $(filter command line,$(origin N)),$(N),40) \
+	  $(if $(MIN_TOGGLE),--min-toggle $(MIN_TOGGLE))
 
 ## wave: CASE=<name>: open the waves of `make sim CASE=<name> WAVES=1` in gtkwave
 wave:
@@ -152,10 +153,10 @@ gls: gen-rtl-pkg
 ## lint: verilator --lint-only -Wall on every RTL module, with the ASIC and the FPGA target's package,
 ##   on the board shell of make fpga around the SoC, and on the vendor-tool wrapper rtl/mcadsw_axi.v
 lint: configure
-	@scripts/rtl_check.sh lint
-	@scripts/rtl_check.sh lint $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
-	@scripts/rtl_check.sh board $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
-	@scripts/rtl_check.sh wrapper
+	@python3 flow/rtl_check.py lint
+	@python3 flow/rtl_check.py lint $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
+	@python3 flow/rtl_check.py board $(BUILD_DIR)/rtl/fpga/mcadsw_pkg.sv
+	@python3 flow/rtl_check.py wrapper
 
 ## formal: SymbiYosys proofs of formal/*.sby (the blocks' MCADSW_ASSERTs and formal/*_props.sv)
 ##   and their covers (build/formal/summary.json); SELFTEST=1: each against a mutant that must fail
@@ -205,7 +206,7 @@ bench: build
 
 ## report: build/report/report.md: Middlebury errors next to the paper and OpenCV, speed, hardware
 report: build
-	@scripts/report.sh $(abspath $(BUILD_DIR))
+	@python3 flow/report.py --build $(abspath $(BUILD_DIR))
 
 ## sweep: the weight table's gamma swept on the Middlebury pairs (docs/algorithm.md)
 sweep: build

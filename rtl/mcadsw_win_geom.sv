@@ -100,7 +100,7 @@ module mcadsw_win_geom #(
   // The first block of a row band: the census windows skip the strips left of
   // the one holding image column lo - 2, the weight window those left of lo.
   // (Written -x - N'(2): Yosys 0.23 parses a unary minus before a size cast,
-  // -(N)'(2), as a cast to the size -(N), i.e. +2; scripts/rtl_check.sh rejects it.)
+  // -(N)'(2), as a cast to the size -(N), i.e. +2; flow/rtl_check.py rejects it.)
   logic signed [CW:0] xlo_s, lx_skip, rx_skip, wx_skip;
   assign xlo_s   = $signed({{(CW - 1){1'b0}}, xlo_i});
   assign lx_skip = xlo_s - lx_al - (CW + 1)'(2);

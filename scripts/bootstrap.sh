@@ -28,7 +28,7 @@ PACKAGES=(
   liblz4-dev         # FST wave compression of the tool environment's Verilator (fstcpp)
   zlib1g-dev
   perl               # runs Verilator's front script (the tool environment's Verilator)
-  verilator          # 5.006: the coverage model only (scripts/coverage.sh: 5.052 miscounts the
+  verilator          # 5.006: the coverage model only (flow/coverage.py: 5.052 miscounts the
                      # toggles of signals wider than 64 bits); the rest uses .venv's 5.052
   iverilog           # second (4-state) simulator, parse check
   yosys              # ASIC synthesis and mutation flows (0.23 on bookworm)

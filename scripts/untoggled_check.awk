@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 
 # Checks the untoggled toggle points of a merged Verilator coverage file against
-# tests/coverage/untoggled.txt (its header says the format), for scripts/coverage.sh:
+# tests/coverage/untoggled.txt (its header says the format), for flow/coverage.py:
 #   awk -f scripts/untoggled_check.awk tests/coverage/untoggled.txt merged.dat
 # Prints the counts by kind, every untoggled point no line lists, and every line
 # that lists no untoggled point (stale); exit 1 if there is either. With

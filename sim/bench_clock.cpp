@@ -64,7 +64,7 @@ Engine::~Engine() {
 #endif
   dut_->final();
 #if VM_COVERAGE
-  // `make coverage` (scripts/coverage.sh): one coverage file per engine instance.
+  // `make coverage` (flow/coverage.py): one coverage file per engine instance.
   if (const char* dir = std::getenv("MCADSW_COVERAGE_DIR")) {
     static std::atomic<int> serial{0};
     const std::string path = std::string(dir) + "/" + std::to_string(getpid()) + "_" +

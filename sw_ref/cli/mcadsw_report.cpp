@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// mcadsw_report: the quality part of `make report` (scripts/report.sh).
+// mcadsw_report: the quality part of `make report` (flow/report.py).
 //   mcadsw_report DATA_DIR OUT_DIR
 // For each Middlebury pair (Tsukuba D=16, Venus D=20, Teddy D=60, Cones D=60 at
 // native size) it runs the bit-exact model (hence the RTL) and the OpenCV

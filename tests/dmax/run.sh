@@ -17,6 +17,7 @@
 #   - mcadsw_sim_random: random cases with D up to DMAX (none rectified without the rectifier;
 #     its engine tests then check that RECT_CTRL.ENABLE is rejected, code 24).
 #   tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA] [RECT]
+# It builds with as many jobs as the machine has cores, or MCADSW_DMAX_JOBS (ctest: 1).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 parent=${1:?usage: tests/dmax/run.sh BUILD_DIR [DMAX] [RANDOM_CASES] [PAR] [FPGA] [RECT]}
@@ -45,7 +46,7 @@ cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCADSW_DMAX="$d
   -DMCADSW_FPGA="$fpga_opt" -DMCADSW_RECT="$rect_opt" -DMCADSW_BLOCK_BENCHES="${benches:-none}" \
   -DMCADSW_CORE_MODEL=OFF > "$dir.configure.log" 2>&1 ||
   { tail -20 "$dir.configure.log"; echo "dmax: configure failed" >&2; exit 1; }
-cmake --build "$dir" -j "$(nproc)" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random "${blocks[@]}" \
+cmake --build "$dir" -j "${MCADSW_DMAX_JOBS:-$(nproc)}" --target ref_tests rtl_engine_test mcadsw_sim mcadsw_sim_random "${blocks[@]}" \
   > "$dir.build.log" 2>&1 ||
   { grep -E "error|Error" -A5 "$dir.build.log" | head -40; echo "dmax: build failed" >&2; exit 1; }
 echo "dmax: reference tests"

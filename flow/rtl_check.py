@@ -1,0 +1,213 @@
+#!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The mcadsw authors
+# SPDX-License-Identifier: Apache-2.0
+"""Checks that every RTL file is accepted by the three tools the project uses.
+
+  python3 flow/rtl_check.py lint      verilator --lint-only -Wall, each module as top
+  python3 flow/rtl_check.py yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
+  python3 flow/rtl_check.py iverilog  Icarus Verilog 11, -g2012
+  python3 flow/rtl_check.py all       the three, and the wrapper
+  python3 flow/rtl_check.py board     verilator --lint-only -Wall of the board shells
+                                      (rtl/board/*.sv, each with the SoC under it; the ECP5
+                                      primitives they instantiate from tests/fpga/ecp5_cells_stub.sv)
+  python3 flow/rtl_check.py wrapper   the vendor-tool wrapper rtl/mcadsw_axi.v (Verilog-2001, not in
+                                      rtl/mcadsw.f): verilator -Wall with .v files read as IEEE
+                                      1364-2001, Yosys 0.23's plain Verilog parser with mcadsw_top's
+                                      ports as a black box's (hierarchy -check), Icarus elaborating
+                                      the whole IP under it
+
+A second argument, a package file, replaces rtl/mcadsw_pkg.sv: another configuration's (the
+FPGA target's, build/rtl/fpga/mcadsw_pkg.sv, elaborates the branches the default package leaves
+out); a package with RECT = 0 is checked with the file list without the rectifier
+(flowlib.rtl_list no_rect). Exits non-zero on any warning or error. Used by `make lint` and by
+ctest.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from flowlib import ROOT, VENV_BIN, FlowError, rtl_list  # noqa: E402
+
+RTL = ROOT / "rtl"
+# The packages, read in this order before the modules and never linted as a top: the
+# engine's, then the rectifier's (it imports the engine's). rtl/mcadsw.f lists both first.
+PKGS = ["mcadsw_pkg.sv", "rect/mcadsw_rect_pkg.sv"]
+# Yosys 0.23 parses a unary operator before a size cast as part of the size: `-(N)'(x)` as a
+# cast to the size -(N) (it read -(13)'(2) as +2), `~N'(x)` as a cast to the size ~N (it read
+# ~12'(3) as 1); both found by gate-level simulation. Verilator and Icarus apply the operator
+# to the cast value, so the netlist would differ from the simulated RTL. Write ~(N'(x)),
+# 0 - N'(x). (A minus at the start of a line continues the expression above: binary.)
+UNARY_CAST = re.compile(r"((^|[=(,?:+*/&|^~!<>-])\s*[~!]|[=(,?:+*/&|^~!<>-]\s*-)\s*"
+                        r"([A-Za-z_][A-Za-z_0-9]*|[0-9]+|\([^()]*\))'\(")
+
+
+class Check:
+    def __init__(self, alt_pkg):
+        self.alt_pkg = str(Path(alt_pkg).resolve()) if alt_pkg else None
+        if self.alt_pkg and not Path(self.alt_pkg).is_file():
+            raise FlowError(f"package {alt_pkg} not found", 2)
+        self.no_rect = bool(self.alt_pkg and re.search(r"localparam int RECT +=  *0;", Path(self.alt_pkg).read_text()))
+        listed = rtl_list(no_pkg=True, no_rect=self.no_rect)
+        self.mods = [f for f in listed if f not in PKGS]
+        for p in PKGS[1:]:
+            if p not in listed:
+                raise FlowError(f"rtl/{p} is not in rtl/mcadsw.f")
+        # The list is the one every tool reads: a source file it does not name is an error
+        # (rtl/rect/rect.f, the rectifier's own list, which no build or test reads, is not read
+        # here; rect/mcadsw_rect_none.sv replaces the rect/ modules without the rectifier, and
+        # the rect/ modules it replaces are not in that list).
+        for f in sorted(p.relative_to(RTL).as_posix() for p in list(RTL.glob("*.sv")) + list(RTL.glob("rect/*.sv"))):
+            if f == "rect/mcadsw_rect_none.sv" or (self.no_rect and f.startswith("rect/")):
+                continue
+            if f not in PKGS + self.mods:
+                raise FlowError(f"rtl/{f} is not in rtl/mcadsw.f")
+        self.waivers = ["lint_waivers.vlt"] if (RTL / "lint_waivers.vlt").is_file() else []
+        self.files = [self.alt_pkg or PKGS[0]] + PKGS[1:] + self.mods
+        self.what = (f" (package {self.alt_pkg}{', without the rectifier' if self.no_rect else ''})"
+                     if self.alt_pkg else "")
+
+    @staticmethod
+    def run(cmd):
+        r = subprocess.run(cmd, cwd=RTL, capture_output=True, text=True)
+        return r.returncode, r.stdout + r.stderr
+
+    def lint_top(self, top, *more):
+        """verilator -Wall of the RTL (and MORE) with TOP as the top: (ok, messages)."""
+        rc, out = self.run([str(VENV_BIN / "verilator"), "--lint-only", "-Wall", "--assert", "-I.", *self.waivers,
+                            *self.files, *more, "--top-module", top])
+        if rc != 0:
+            return False, out + f"rtl_check: verilator lint FAILED for {top}\n"
+        return "%Warning" not in out, out if "%Warning" in out else ""
+
+    @staticmethod
+    def tops_of(f):
+        """The modules a file declares (one, named as the file, but for rect/mcadsw_rect_none.sv)."""
+        return re.findall(r"^module ([a-z_0-9]*)", (RTL / f).read_text(), re.M)
+
+    def lint(self):
+        # Each top in its own Verilator process, as many at a time as the machine has cores
+        # (make lint stays within the pre-stop hook's time); messages printed once all ran.
+        tops = [t for f in self.mods for t in self.tops_of(f)]
+        with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+            results = list(pool.map(self.lint_top, tops))
+        for _, out in results:
+            if out:
+                print(out, end="")
+        if not all(ok for ok, _ in results):
+            return False
+        print(f"rtl_check: verilator --lint-only -Wall clean on {len(self.mods)} modules{self.what}")
+        return True
+
+    def yosys(self):
+        bad = []
+        for f in self.files:          # code only: comments stripped, line numbers kept
+            for n, line in enumerate((RTL / f).read_text().splitlines(), 1):
+                if UNARY_CAST.search(line.split("//")[0]):
+                    bad.append(f"{f}:{n}:{line}")
+        if bad:
+            print("\n".join(bad))
+            print("rtl_check: unary operator before a size cast, -(N)'(x) or ~N'(x), which Yosys 0.23 misreads; "
+                  "write ~(N'(x)) or 0 - N'(x)", file=sys.stderr)
+            return False
+        # One Yosys process: the files are parsed once, then each module is elaborated as the
+        # top from that parsed design (design -load), each step announced, so a warning or an
+        # error names its module.
+        tops = [t for f in self.mods for t in self.tops_of(f)]
+        script = f"read_verilog -sv {' '.join(self.files)}; design -save parsed" + "".join(
+            f"; design -load parsed; log -stdout rtl_check: elaborating {t}; hierarchy -check -top {t}; proc"
+            for t in tops)
+        rc, out = self.run(["yosys", "-q", "-p", script])
+        done = re.findall(r"^rtl_check: elaborating ([a-z_0-9]*)", out, re.M)
+        if rc != 0:
+            print(out, end="")
+            print(f"rtl_check: yosys FAILED for {done[-1] if done else '?'}", file=sys.stderr)
+            return False
+        if "warning" in out.lower():
+            print(out, end="")
+            print("rtl_check: yosys warned (the module is the last 'elaborating' line above the warning)",
+                  file=sys.stderr)
+            return False
+        if len(done) != len(tops):
+            print(out, end="")
+            print("rtl_check: yosys did not elaborate every module", file=sys.stderr)
+            return False
+        print(f"rtl_check: yosys 0.23 parses and elaborates {len(self.mods)} modules{self.what}")
+        return True
+
+    def icarus(self, *more, top=None):
+        with tempfile.TemporaryDirectory() as tmp:
+            rc, out = self.run(["iverilog", "-g2012", "-Wall", "-Wno-timescale", "-I.", *(["-s", top] if top else []),
+                                "-o", f"{tmp}/a.out", *self.files, *more])
+        what = f" for {top}" if top else ""
+        if rc != 0 or out:
+            print(out, end="")
+            print(f"rtl_check: iverilog {'FAILED' if rc else 'warned'}{what}", file=sys.stderr)
+            return False
+        return True
+
+    def iverilog(self):
+        if not self.icarus():
+            return False
+        print(f"rtl_check: iverilog -g2012 compiles {len(self.files)} files{self.what}")
+        return True
+
+    def board(self):
+        shells = sorted(RTL.glob("board/*.sv"))
+        for f in shells:
+            ok, out = self.lint_top(f.stem, str(f), str(ROOT / "tests" / "fpga" / "ecp5_cells_stub.sv"))
+            print(out, end="")
+            if not ok:
+                return False
+        print(f"rtl_check: verilator --lint-only -Wall clean on {len(shells)} board shells{self.what}")
+        return True
+
+    def wrapper(self):
+        ok, out = self.lint_top("mcadsw_axi", "+1364-2001ext+v", "mcadsw_axi.v")
+        print(out, end="")
+        if not ok:
+            return False
+        rc, out = self.run(["yosys", "-q", "-p", f"read_verilog -sv {self.files[0]} {self.files[1]}; read_verilog -sv "
+                            "-lib mcadsw_top.sv; read_verilog mcadsw_axi.v; hierarchy -check -top mcadsw_axi"])
+        if rc != 0 or "warning" in out.lower():
+            print(out, end="")
+            print(f"rtl_check: yosys (Verilog-2001 parser) {'FAILED' if rc else 'warned'} for mcadsw_axi",
+                  file=sys.stderr)
+            return False
+        if not self.icarus("mcadsw_axi.v", top="mcadsw_axi"):
+            return False
+        print("rtl_check: the wrapper mcadsw_axi.v clean under verilator -Wall (Verilog-2001), yosys 0.23 "
+              f"read_verilog and iverilog{self.what}")
+        return True
+
+
+def main(argv):
+    what = argv[0] if argv else "all"
+    steps = {"lint": ["lint"], "yosys": ["yosys"], "iverilog": ["iverilog"], "board": ["board"],
+             "wrapper": ["wrapper"], "all": ["lint", "yosys", "iverilog", "wrapper"]}
+    if what not in steps or len(argv) > 2:
+        print(f"usage: {sys.argv[0]} lint|yosys|iverilog|board|wrapper|all [PACKAGE]", file=sys.stderr)
+        return 2
+    if not (VENV_BIN / "verilator").is_file():
+        raise FlowError(f"no tool environment at {VENV_BIN.parent} (run scripts/bootstrap.sh)", 2)
+    # The pinned Verilator first on PATH (as scripts/tools.sh puts it for the shell scripts).
+    os.environ["PATH"] = f"{VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}"
+    chk = Check(argv[1] if len(argv) > 1 else None)
+    ok = True
+    for step in steps[what]:
+        ok = getattr(chk, step)() and ok
+        if not ok:
+            break
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except FlowError as e:
+        print(f"rtl_check: {e}", file=sys.stderr)
+        sys.exit(e.code)
