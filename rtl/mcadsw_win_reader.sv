@@ -127,7 +127,7 @@ module mcadsw_win_reader #(
 
   // The window origin and strip count, registered at start_i; the address terms
   // are computed from them in the next two cycles (init_q: the clamps, then the
-  // multiplier), each from flip-flops, not from the block arithmetic in the top
+  // multiplier; on the FPGA target the product's shift and add), each from flip-flops, not from the block arithmetic in the top
   // (those paths were critical, docs/synthesis.md section 1).
   logic signed [CW:0]   x0_q, y0_q;
   logic [SB-1:0]        strips_q;
@@ -135,7 +135,7 @@ module mcadsw_win_reader #(
   logic [RB-1:0]        klast_q;     // K - 1: clamp(y0 + ROWS - 1) - clamp(y0)
 
   logic          busy_q;
-  logic [1:0]    init_q;             // the two cycles after start_i: address terms computed
+  logic [1:0]    init_q;             // the cycles after start_i: address terms computed
   logic [QW-1:0] rq_q, rs_q;         // word being requested / row being delivered
   logic          rq_done, rs_done;
   logic [PB-1:0] rs_plane_unused;
@@ -165,7 +165,8 @@ module mcadsw_win_reader #(
   //           (the product only at start_i, then +- tile when the next strip's
   //           word differs).
   // A reader's one multiplier is shared: clamp(y0) * stride or word(x0) * tile,
-  // computed once a window, two cycles after start_i.
+  // computed once a window, two cycles after start_i (FPGA target: by shift and
+  // add, up to CW cycles more).
   logic          tiled;
   assign tiled = tile_i != '0;
   logic          addr_ok_q;          // addr_q holds the address of rq_q
@@ -210,15 +211,46 @@ module mcadsw_win_reader #(
   endfunction
   // In the cycle after start_i the first column's memory word and the strip
   // plane's rows (xoff_q, ylo_q, klast_q); in the next, from those, the raster
-  // row offset clamp(y0) * stride or the tiled column offset word(x0) * tile.
+  // row offset clamp(y0) * stride or the tiled column offset word(x0) * tile
+  // (prod0, valid when mul_done).
   logic [CW-1:0] col0, ylo0, yhi0;
-  logic [AW-1:0] mul_a, mul_b, prod0;
+  logic [AW-1:0] mul_b, prod0;
+  logic          mul_done;
   assign col0  = mem_col((CW + 2)'(x0_q), lo_i, width_i, mirror_i);
   assign ylo0  = CW'(clampi(32'(y0_q), 0, 32'(height_i)));
   assign yhi0  = CW'(clampi(32'(y0_q) + ROWS - 1, 0, 32'(height_i)));
-  assign mul_a = tiled ? AW'(xoff_q[CW-1:2]) : AW'(ylo_q);
   assign mul_b = tiled ? tile_i : stride_i;
-  assign prod0 = mul_a * mul_b;
+  if (mcadsw_pkg::FPGA != 0) begin : g_fpga_mul
+    // FPGA target: the product by shift and add, one bit of the row or word column
+    // a cycle from its lowest, until the bits left are 0 (at most CW cycles; 0
+    // cycles for a product by 0), so a reader takes no multiplier of the device's
+    // fixed rows and no adders between it and the address logic. The operand is
+    // the one ylo_q or xoff_q takes in the same cycle.
+    logic [CW-1:0] ma_q;
+    logic [AW-1:0] mb_q, acc_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ma_q  <= '0;
+        mb_q  <= '0;
+        acc_q <= '0;
+      end else if (init_q[0]) begin
+        ma_q  <= tiled ? CW'(col0[CW-1:2]) : ylo0;
+        mb_q  <= mul_b;
+        acc_q <= '0;
+      end else if (ma_q != '0) begin
+        if (ma_q[0]) acc_q <= acc_q + mb_q;
+        ma_q <= ma_q >> 1;
+        mb_q <= mb_q << 1;
+      end
+    end
+    assign mul_done = ma_q == '0;
+    assign prod0    = acc_q;
+  end else begin : g_asic_mul
+    logic [AW-1:0] mul_a;
+    assign mul_a    = tiled ? AW'(xoff_q[CW-1:2]) : AW'(ylo_q);
+    assign prod0    = mul_a * mul_b;
+    assign mul_done = 1'b1;
+  end
   // pos_next: adv_pos(pos_q, len_next, ...), its test made without the sum: the
   // burst ends the strip plane's column (next: the next plane or strip) when it
   // takes every word left (tiled: they fit BL and the page; raster: the last).
@@ -315,7 +347,7 @@ module mcadsw_win_reader #(
         xabs_q       <= (CW + 2)'(x0_q);
         xoff_q       <= col0;
       end
-      if (init_q[1]) begin
+      if (init_q[1] && mul_done) begin
         init_q       <= 2'b00;
         yoff_q       <= tiled ? '0 : prod0;
         yoff0_q      <= tiled ? '0 : prod0;
