@@ -108,9 +108,10 @@ def main(argv):
     out = build / "coverage"
     if not (VROOT / "verilator-config.cmake").is_file() or not os.access(VCOV, os.X_OK):
         raise FlowError(f"Debian's Verilator missing at {VROOT} (run scripts/bootstrap.sh)", 2)
-    subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                    "-DMCADSW_COVERAGE=ON", f"-DMCADSW_VERILATOR_ROOT={VROOT}", "-DMCADSW_BLOCK_BENCHES=none",
-                    "-DMCADSW_CORE_MODEL=OFF"], check=True, stdout=subprocess.DEVNULL)
+    if subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+                       "-DMCADSW_COVERAGE=ON", f"-DMCADSW_VERILATOR_ROOT={VROOT}", "-DMCADSW_BLOCK_BENCHES=none",
+                       "-DMCADSW_CORE_MODEL=OFF"], stdout=subprocess.DEVNULL).returncode != 0:
+        raise FlowError(f"cmake could not configure {build}")
     log(f"building the instrumented model ({build})")
     blog = build / "coverage_build.log"
     with open(blog, "w") as f:
