@@ -27,7 +27,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import PREFIX, ROOT, FlowError, log, tail  # noqa: E402
+from flowlib import FlowError, log, PREFIX, ROOT, run_main, tail  # noqa: E402
 
 # The coverage model is built with Debian's Verilator 5.006, not the tool environment's 5.052:
 # 5.052's runtime counts the toggles of a signal wider than 64 bits wrongly (its
@@ -173,8 +173,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main(sys.argv[1:]))
-    except FlowError as e:
-        print(f"coverage: {e}", file=sys.stderr)
-        sys.exit(e.code)
+    sys.exit(run_main(main, sys.argv[1:], "coverage"))

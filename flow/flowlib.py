@@ -10,6 +10,7 @@ import os
 import re
 import signal
 import subprocess
+import sys
 import threading
 import time
 from pathlib import Path
@@ -48,6 +49,16 @@ class FlowError(Exception):
     def __init__(self, message, code=1):
         super().__init__(message)
         self.code = code
+
+
+def run_main(main, argv, name):
+    """A flow program's exit code: MAIN(ARGV)'s, or a FlowError's after its message
+    ("NAME: message") on stderr."""
+    try:
+        return main(argv)
+    except FlowError as e:
+        print(f"{name}: {e}", file=sys.stderr)
+        return e.code
 
 
 VENV_BIN = ROOT / ".venv" / "bin"   # the pinned tool environment (scripts/bootstrap.sh)

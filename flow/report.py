@@ -23,7 +23,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import PREFIX, ROOT, VENV_BIN, FlowError, log  # noqa: E402
+from flowlib import FlowError, log, PREFIX, ROOT, run_main, VENV_BIN  # noqa: E402
 
 CIF_PIXELS = 352 * 288
 PAIRS = [("CIF Teddy", 64, "cif_teddy_D64"), ("Tsukuba", 16, "tsukuba_D16"), ("Venus", 20, "venus_D20"),
@@ -173,8 +173,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main(sys.argv[1:]))
-    except FlowError as e:
-        print(f"report: {e}", file=sys.stderr)
-        sys.exit(e.code)
+    sys.exit(run_main(main, sys.argv[1:], "report"))

@@ -31,7 +31,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import ROOT, VENV_BIN, FlowError, rtl_list  # noqa: E402
+from flowlib import FlowError, ROOT, rtl_list, run_main, VENV_BIN  # noqa: E402
 
 RTL = ROOT / "rtl"
 # The packages, read in this order before the modules and never linted as a top: the
@@ -206,8 +206,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main(sys.argv[1:]))
-    except FlowError as e:
-        print(f"rtl_check: {e}", file=sys.stderr)
-        sys.exit(e.code)
+    sys.exit(run_main(main, sys.argv[1:], "rtl_check"))

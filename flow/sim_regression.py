@@ -24,7 +24,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import PREFIX, ROOT, FlowError, log  # noqa: E402
+from flowlib import FlowError, log, PREFIX, ROOT, run_main  # noqa: E402
 
 # name, set, pair, D ("DMAX": the build's), ground-truth scale, further options
 CASES = [
@@ -220,8 +220,8 @@ def main(argv):
     out = Path(a.out).resolve() if a.out else build / "sim"
     out.mkdir(parents=True, exist_ok=True)
     dmax = cmake_cache(build, "MCADSW_DMAX") or "64"
-    cases = [c[:3] + (dmax if c[3] == "DMAX" else c[3],) + c[4:] for c in CASES]
-    cases = [(c[0].replace("DMAX", dmax),) + c[1:] for c in cases]
+    cases = [(name.replace("DMAX", dmax), cset, pair, dmax if d == "DMAX" else d, scale, extra)
+             for name, cset, pair, d, scale, extra in CASES]
     selected = [c for c in cases if not a.case or c[0] == a.case]
     # A build without the rectifier (CMake MCADSW_RECT=OFF, make sim RECT=0) leaves out the
     # rectified cases, and says so.
@@ -274,8 +274,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main(sys.argv[1:]))
-    except FlowError as e:
-        print(f"sim_regression: {e}", file=sys.stderr)
-        sys.exit(e.code)
+    sys.exit(run_main(main, sys.argv[1:], "sim_regression"))
