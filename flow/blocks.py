@@ -222,14 +222,15 @@ GROUPS = {"mcadsw_weight_gen": "weight_generator", "mcadsw_cost_agg": "cost_aggr
           "mcadsw_post": "post_stage", "mcadsw_post_check": "post_stage",
           "mcadsw_post_fill": "post_stage", "mcadsw_fifo": "post_stage", "mcadsw_engine": "top_registers_counters",
           "mcadsw_cfg_check": "top_registers_counters", "mcadsw_frame_ctrl": "top_registers_counters",
-          "mcadsw_win_geom": "top_registers_counters",
+          "mcadsw_win_geom": "top_registers_counters", "mcadsw_pass_cfg": "top_registers_counters",
+          "mcadsw_port_mux": "top_registers_counters",
           "mcadsw_rect": RECT_GROUP, "mcadsw_rect_mark": RECT_GROUP, "mcadsw_rect_check": RECT_GROUP}
 GROUP_NAMES = {
     "census_left": "census left (transformer + buffer)", "census_right": "census right (transformer + buffer)",
     "census_left_right": "census left + right (one module at this DMAX)",
     "weight_generator": "weight generator (+ weight buffers)", "cost_aggregator_wta": "cost aggregator + WTA",
     "memory_controller": "memory controller + window readers", "block_scheduler": "block scheduler",
-    "depth_fifo": "depth FIFO", "top_registers_counters": "engine core: configuration, check, frame controller, counters, window geometry",
+    "depth_fifo": "depth FIFO", "top_registers_counters": "engine core: configuration, check, frame controller, counters, window geometry, port owners",
     "post_stage": "LR post stage (check, fill, median; beyond the paper)",
     RECT_GROUP: "rectifier (pass, mark step, configuration check; beyond the paper, apart from the engine's budgets)"}
 

@@ -3,7 +3,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """Checks that every RTL file is accepted by the three tools the project uses.
 
-  python3 flow/rtl_check.py lint      verilator --lint-only -Wall, each module as top
+  python3 flow/rtl_check.py lint      verilator --lint-only -Wall, each module as top; and
+                                      no always block in the engine core (wiring only)
   python3 flow/rtl_check.py yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
   python3 flow/rtl_check.py iverilog  Icarus Verilog 11, -g2012
   python3 flow/rtl_check.py all       the three, and the wrapper
@@ -37,6 +38,8 @@ RTL = ROOT / "rtl"
 # The packages, read in this order before the modules and never linted as a top: the
 # engine's, then the rectifier's (it imports the engine's). rtl/mcadsw.f lists both first.
 PKGS = ["mcadsw_pkg.sv", "rect/mcadsw_rect_pkg.sv"]
+# The engine core: instances and wires only (the lint step fails on an always block in it).
+WIRING = "mcadsw_engine.sv"
 # Yosys 0.23 parses a unary operator before a size cast as part of the size: `-(N)'(x)` as a
 # cast to the size -(N) (it read -(13)'(2) as +2), `~N'(x)` as a cast to the size ~N (it read
 # ~12'(3) as 1); both found by gate-level simulation. Verilator and Icarus apply the operator
@@ -101,6 +104,19 @@ class Check:
         if not all(ok for ok, _ in results):
             return False
         print(f"rtl_check: verilator --lint-only -Wall clean on {len(self.mods)} modules{self.what}")
+        return self.wiring()
+
+    @staticmethod
+    def wiring():
+        """The engine is wiring: instances, wires and assigns; a process belongs in the block
+        that owns it (docs/architecture.md)."""
+        text = (RTL / WIRING).read_text()
+        code = re.sub(r"//[^\n]*|/\*.*?\*/", "", text, flags=re.S)
+        found = [i + 1 for i, line in enumerate(code.split("\n")) if re.search(r"\balways(_ff|_comb|_latch)?\b", line)]
+        if found:
+            print(f"rtl_check: rtl/{WIRING} is wiring, but has an always block (line {', '.join(map(str, found))}): "
+                  "move it into the block that owns it")
+            return False
         return True
 
     def yosys(self):

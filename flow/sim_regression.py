@@ -182,7 +182,7 @@ def write_gtkw(out, name):
     1000-pixel wave pane), the signals grouped by block, values in hex."""
     fst = out / f"{name}.fst"
     first = fst_firsts(fst)
-    t0, t1 = first.get(f"TOP.{ENG}.prep_start"), first.get(f"TOP.{ENG}.prep_done")
+    t0, t1 = first.get(f"TOP.{ENG}.prep_start"), first.get(f"TOP.{ENG}.u_scheduler.prep_done")
     names = fst_names(fst)
     lines = [f'[dumpfile] "{fst}"', "[size] 1600 900"]
     if t0 is not None and t1 is not None:

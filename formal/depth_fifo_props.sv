@@ -8,7 +8,7 @@
 // below), columns x .. x + n - 1 inside 0 .. xend - 1 < 4096 with at least one
 // at or right of xlo (the scheduler's blocks); values arrive
 // group by group for the rows in descriptor order, only for rows with a
-// descriptor, and every value of row k equals k's low 8 bits; the frame
+// descriptor, and every value of row k equals k's low DISP_BITS bits; the frame
 // configuration (raw 8-bit output; mirrored or not) is stable.
 // Asserted:
 //   1. no overflow, no underflow: written rows never outrun the filled ones,
@@ -37,7 +37,7 @@ module depth_fifo_props #(
   // the same logic, so that a trace of a few cycles carries several rows.
   localparam int BLOCK = 6;
   localparam int HAGG  = mcadsw_pkg::HAGG;
-  localparam int VB    = mcadsw_pkg::DISP_BITS + 4;
+  localparam int DB    = mcadsw_pkg::DISP_BITS;
   localparam int NG    = BLOCK / HAGG;
   localparam int GB    = $clog2(NG);
   localparam int TB    = AW - 12;      // tag bits
@@ -48,17 +48,18 @@ module depth_fifo_props #(
   logic [31:0]        wr_wdata;
   logic [TB-1:0]      push_n_q, fill_n_q, done_n_q;  // rows pushed, filled, written
   logic [GB-1:0]      grp_q;
-  logic [HAGG*VB-1:0] disp;
+  logic [HAGG*DB-1:0] disp;
   for (genvar m = 0; m < HAGG; m++) begin : g_val
-    assign disp[m*VB +: VB] = VB'(fill_n_q[7:0]);
+    assign disp[m*DB +: DB] = fill_n_q[DB-1:0];
   end
 
   mcadsw_depth_fifo #(.BLOCK(BLOCK), .HAGG(HAGG), .AW(AW), .CW(CW)) dut (
     .clk_i, .rst_ni,
     .desc_push_i, .desc_addr_i ({push_n_q, 12'h000}), .desc_x_i, .desc_n_i,
     .space_o (space), .empty_o (empty),
-    .wide_i (1'b0), .mirror_i, .xlo_i, .xend_i,
+    .wide_i (1'b0), .pack_i (1'b0), .mirror_i, .xlo_i, .xend_i,
     .disp_valid_i, .disp_grp_i (grp_q), .disp_i (disp),
+    .sub_valid_i (1'b0), .sub_grp_i ('0), .sub_i ('0), .sub_d_i ('0),
     .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata),
     .wr_gnt_i
   );
@@ -117,7 +118,7 @@ module depth_fifo_props #(
     // 2. Bytes: enabled only inside the image row, and holding the row's value.
     for (int b = 0; b < 4; b++)
       if (wr_req && wr_be[b]) begin
-        assert (wr_wdata[b*8 +: 8] == tag[7:0]);
+        assert (wr_wdata[b*8 +: 8] == 8'(tag[DB-1:0]));
         assert (32'(wr_addr[11:0]) + b < 32'(xend_i));
       end
     if (wr_req) assert (wr_be != '0);

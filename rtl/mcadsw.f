@@ -21,7 +21,9 @@ mcadsw_fifo.sv
 mcadsw_frame_ctrl.sv
 mcadsw_horz_agg.sv
 mcadsw_mem_ctrl.sv
+mcadsw_pass_cfg.sv
 mcadsw_pingpong.sv
+mcadsw_port_mux.sv
 mcadsw_post.sv
 mcadsw_post_check.sv
 mcadsw_post_fill.sv

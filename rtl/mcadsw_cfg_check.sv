@@ -3,8 +3,9 @@
 
 // Configuration check of a frame (docs/registers.md, error codes 1-12 and 24): the
 // configuration the engine registered at the start, checked in the cycle after it.
-// Combinational: the engine registers err_o and ok_o at the end of that cycle, and the
-// frame controller samples them in its Check state; a non-zero code rejects the start
+// The verdict is combinational from the registered configuration and registered here
+// (err_o, ok_o, done_o) at the end of that cycle, so that the frame controller's branch
+// on it in its Check state starts from flip-flops; a non-zero code rejects the start
 // before anything is read or written. The plane sizes (products of a stride and a
 // height) are the one registered part: computed from the configuration as it is
 // registered (cap_*_i at capture_i, the engine's start), so that no multiplier lies
@@ -67,11 +68,12 @@ module mcadsw_cfg_check #(
   input  logic [CW-1:0]   width_i,
   input  logic [CW-1:0]   height_i,
   input  logic [NB-1:0]   disp_i,
-  // mcadsw_pkg::ErrNone, or the first failing check's code
+  // mcadsw_pkg::ErrNone, or the first failing check's code; registered: the verdict
+  // on the configuration of the cycle before
   output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
   output logic            ok_o,              // err_o == ErrNone
   output logic            done_o,            // err_o and ok_o are the configuration's (SEQ: low
-                                             // from the cycle after capture_i for 42 cycles)
+                                             // from the second cycle after capture_i for 42 cycles)
   // The sizes of the checked planes, for the rectifier's check (mcadsw_rect_check);
   // registered: valid from the cycle after capture_i
   output logic [SB-1:0]   in_size_o,         // an input plane
@@ -152,6 +154,8 @@ module mcadsw_cfg_check #(
   // The plane checks: any enabled plane beyond the address space (past), any written
   // plane overlapping another enabled plane (overlap).
   logic overlap, past;
+  logic [mcadsw_pkg::ERR_BITS-1:0] err;     // the verdict, before its register
+  logic ok, done;
   if (!SEQ) begin : g_par
     always_comb begin
       past    = 1'b0;
@@ -170,7 +174,7 @@ module mcadsw_cfg_check #(
                                          wr_base[p*AW +: AW], wr_outs[p] ? out_size : size));
       end
     end
-    assign done_o = 1'b1;
+    assign done = 1'b1;
   end else begin : g_seq
     // Step (o, x), o the written plane (0..NWR-1), x any plane (0..NWR-1 the written
     // ones, NWR.. the read ones): both planes' ends beyond the address space, and
@@ -254,7 +258,7 @@ module mcadsw_cfg_check #(
     end
     assign overlap = overlap_q;
     assign past    = past_q;
-    assign done_o  = !busy_q && v_q == 2'b00;
+    assign done    = !busy_q && v_q == 2'b00;
   end
 
   always_comb begin
@@ -291,10 +295,22 @@ module mcadsw_cfg_check #(
                         base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
     // A build without the rectifier (mcadsw_pkg::RECT 0) rejects rectification.
     fail[12] = rect_i && mcadsw_pkg::RECT == 0;
-    ok_o  = fail == '0;
-    err_o = mcadsw_pkg::ErrNone;
+    ok  = fail == '0;
+    err = mcadsw_pkg::ErrNone;
     for (int c = NCHECK - 1; c >= 0; c--)
-      if (fail[c]) err_o = CODES[c*mcadsw_pkg::ERR_BITS +: mcadsw_pkg::ERR_BITS];
+      if (fail[c]) err = CODES[c*mcadsw_pkg::ERR_BITS +: mcadsw_pkg::ERR_BITS];
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      err_o  <= mcadsw_pkg::ErrNone;
+      ok_o   <= 1'b1;
+      done_o <= 1'b1;
+    end else begin
+      err_o  <= err;
+      ok_o   <= ok;
+      done_o <= done;
+    end
   end
 
   assign in_size_o  = in_size;

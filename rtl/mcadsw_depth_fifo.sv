@@ -21,7 +21,7 @@
 module mcadsw_depth_fifo #(
   parameter int BLOCK = mcadsw_pkg::BLOCK,
   parameter int HAGG  = mcadsw_pkg::HAGG,
-  parameter int VB    = mcadsw_pkg::DISP_BITS + 4,  // value bits (sub-pixel: 16 d + offset)
+  parameter int DB    = mcadsw_pkg::DISP_BITS,      // disparity bits
   parameter int ROWSQ = 4,                    // rows queued or in flight
   parameter int AW    = 32,
   parameter int CW    = 12,
@@ -38,14 +38,20 @@ module mcadsw_depth_fifo #(
   output logic               space_o,        // another row job may start
   output logic               empty_o,        // nothing queued, nothing to write
   // Frame configuration, stable during a frame
-  input  logic               wide_i,         // halfword pixels
+  input  logic               wide_i,         // halfword pixels: the sub-pixel values
+  input  logic               pack_i,         // with wide_i: the LR scratch format (below)
   input  logic               mirror_i,       // columns mirrored about xend - 1
   input  logic [1:0]         xlo_i,          // first column inside the image
   input  logic [CW-1:0]      xend_i,         // mirrored: a multiple of 4
-  // Values from the cost aggregator (disparities, or sub-pixel values)
+  // Values from the cost aggregator: the disparities, and two cycles later the
+  // sub-pixel values (16 d + offset) with their d
   input  logic               disp_valid_i,
   input  logic [GB-1:0]      disp_grp_i,
-  input  logic [HAGG*VB-1:0] disp_i,
+  input  logic [HAGG*DB-1:0] disp_i,
+  input  logic               sub_valid_i,
+  input  logic [GB-1:0]      sub_grp_i,
+  input  logic [HAGG*(DB+4)-1:0] sub_i,
+  input  logic [HAGG*DB-1:0] sub_d_i,
   // Writes to the memory controller
   output logic               wr_req_o,
   output logic [AW-1:0]      wr_addr_o,
@@ -53,6 +59,25 @@ module mcadsw_depth_fifo #(
   output logic [31:0]        wr_wdata_o,
   input  logic               wr_gnt_i
 );
+
+  // ---- The values queued (VB bits a pixel) --------------------------------------------
+  // d (raw), 16 d + offset (wide), or in the LR mode's first sub-pixel pass the scratch
+  // format {offset + 8, d} (pack; docs/blocks/engine.md section 7).
+  localparam int SVB = DB + 4;                 // sub-pixel value bits
+  localparam int VB  = DB + 5;                 // a queued value
+  logic               val_valid;
+  logic [GB-1:0]      val_grp;
+  logic [HAGG*VB-1:0] val, disp_wide, sub_wide, sub_pack;
+  for (genvar m = 0; m < HAGG; m++) begin : g_val
+    logic [4:0] off8;                          // offset + 8 (0 .. 16)
+    assign off8 = 5'(sub_i[m*SVB +: SVB] - {sub_d_i[m*DB +: DB], 4'b0000} + SVB'(8));
+    assign disp_wide[m*VB +: VB] = VB'(disp_i[m*DB +: DB]);
+    assign sub_wide[m*VB +: VB]  = VB'(sub_i[m*SVB +: SVB]);
+    assign sub_pack[m*VB +: VB]  = {off8, sub_d_i[m*DB +: DB]};
+  end
+  assign val_valid = wide_i ? sub_valid_i : disp_valid_i;
+  assign val_grp   = wide_i ? sub_grp_i : disp_grp_i;
+  assign val       = pack_i ? sub_pack : wide_i ? sub_wide : disp_wide;
 
   localparam int QB = $clog2(ROWSQ + 1);
   localparam int PB = (ROWSQ > 1) ? $clog2(ROWSQ) : 1;
@@ -185,10 +210,10 @@ module mcadsw_depth_fifo #(
         wdata = '0;
         for (int g = 0; g < BLOCK / HAGG; g++)
           for (int j = 0; j < HAGG; j++)
-            if ((g*HAGG + j) % 4 == k && disp_grp_i == GB'(g)) begin
-              we = disp_valid_i;
+            if ((g*HAGG + j) % 4 == k && val_grp == GB'(g)) begin
+              we = val_valid;
               wword = WRB'((g*HAGG + j) / 4);
-              wdata = disp_i[j*VB +: VB];
+              wdata = val[j*VB +: VB];
             end
       end
       always_ff @(posedge clk_i)
@@ -217,13 +242,13 @@ module mcadsw_depth_fifo #(
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         pix_q <= '0;
-      end else if (disp_valid_i) begin
+      end else if (val_valid) begin
         // Decoded slot by slot and group by group (constant part-selects): a
         // part-select at a computed offset would be a bit-granular shifter.
         for (int r = 0; r < ROWSQ; r++)
           for (int g = 0; g < BLOCK / HAGG; g++)
-            if (fill_q == PB'(r) && disp_grp_i == GB'(g))
-              pix_q[(r*BLOCK + g*HAGG)*VB +: HAGG*VB] <= disp_i;
+            if (fill_q == PB'(r) && val_grp == GB'(g))
+              pix_q[(r*BLOCK + g*HAGG)*VB +: HAGG*VB] <= val;
       end
     end
     logic [BLOCK*VB-1:0] h_row;
@@ -260,7 +285,7 @@ module mcadsw_depth_fifo #(
       wofs_q  <= '0;
     end else begin
       if (desc_push_i) tail_q <= PB'((32'(tail_q) + 1) % ROWSQ);
-      if (disp_valid_i && disp_grp_i == GB'(BLOCK / HAGG - 1))
+      if (val_valid && val_grp == GB'(BLOCK / HAGG - 1))
         fill_q <= PB'((32'(fill_q) + 1) % ROWSQ);
       if (wr_req_o && wr_gnt_i) begin
         wofs_q <= wofs_q + (wide_i ? 5'd2 : 5'd4);
@@ -270,7 +295,7 @@ module mcadsw_depth_fifo #(
         end
       end
       count_q <= count_q + QB'(desc_push_i) - QB'(row_written);
-      ready_q <= ready_q + QB'(disp_valid_i && disp_grp_i == GB'(BLOCK / HAGG - 1))
+      ready_q <= ready_q + QB'(val_valid && val_grp == GB'(BLOCK / HAGG - 1))
                          - QB'(row_written);
     end
   end
@@ -278,7 +303,7 @@ module mcadsw_depth_fifo #(
   // Invariants (docs/verification.md section 3): the scheduler pushes a row
   // descriptor only into space, the WTA sends disparities only for a queued row.
   `MCADSW_ASSUME(DescriptorPushedIntoSpace, !(desc_push_i && !space_o))
-  `MCADSW_ASSUME(DisparitiesForQueuedRow, !(disp_valid_i && ready_q == count_q))
+  `MCADSW_ASSUME(DisparitiesForQueuedRow, !(val_valid && ready_q == count_q))
   `MCADSW_ASSERT(WriteOnlyWithRowQueued, !(wr_req_o && count_q == '0))
 
   // Events the block's proof must reach (formal only): a row written out, and the

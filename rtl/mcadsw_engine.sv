@@ -1,10 +1,14 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC):
-// memory controller with a 32-bit external memory port, block scheduler, three window readers, the
-// left and right mini-census transformers, the weight generator, the cost
-// aggregator with WTA, and the depth FIFO. docs/architecture.md and docs/blocks/ describe the
+// MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC), wiring
+// only: the configuration registered and its views (mcadsw_pass_cfg), its check, the
+// frame controller, the block scheduler and the window geometry; the memory
+// controller and three window readers, the left and right mini-census transformers,
+// the weight generator, the cost aggregator with WTA, and the depth FIFO; beyond the
+// paper the LR post stage, the rectifier's check, pass and mark step; and the 32-bit
+// external memory port, owned by the rectify pass, the mark step, the post stage or
+// the passes (mcadsw_port_mux). docs/architecture.md and docs/blocks/ describe the
 // blocks; docs/memory_map.md the configuration, status and memory layout.
 `default_nettype none
 `include "mcadsw_assert.svh"
@@ -103,73 +107,66 @@ module mcadsw_engine #(
   end
 
   // ---- Configuration: registered at the start, checked, then fixed for the frame ----------
+  // mcadsw_pass_cfg: the configuration registered, the pass view, the rectifier's and
+  // the mark step's views (docs/blocks/engine.md 1).
+  logic                accept, to_second, pass_second, pass_post;
+  logic [1:0]          mark_phase;
   logic [AW-1:0]       cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q;
-  logic [AW-1:0]       cfg_out_q, cfg_dl_q, cfg_dr_q, cfg_mask_q;
-  logic [AW-1:0]       stride_q, out_stride_q;
-  logic [AW-1:0]       tile_q;         // input planes column-tiled (0: raster)
-  logic                cfg_sub_q, lr_q, cfg_right_q;
+  logic [AW-1:0]       cfg_out_q, cfg_dl_q, cfg_dr_q, cfg_mask_q, stride_q, out_stride_q, tile_q;
+  logic                cfg_sub_q, lr_q, cfg_right_q, rect_q, tiled, post_wide;
   logic [7:0]          lr_t_q;
-  logic [CW-1:0]       width_q, height_q;
+  logic [CW-1:0]       width_q, height_q, raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q;
   logic [NB-1:0]       disp_q;
   logic [NTHR*DCB-1:0] thr_q;
-  logic                rect_q;
   logic [2:0]          rect_step_q;
-  logic [CW-1:0]       raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q;
-  logic [AW-1:0]       raw_stride_q, raw_ly_q, raw_lu_q, raw_lv_q, raw_ry_q, raw_ru_q, raw_rv_q;
-  logic [AW-1:0]       mesh_l_q, mesh_r_q, valid_l_q, valid_r_q;
-  logic                accept;
+  logic [AW-1:0]       raw_stride_q, rect_stride;
+  logic [6*AW-1:0]     raw_base, in_base;
+  logic [2*AW-1:0]     mesh_base, valid_base;
+  logic [5:0]          rect_planes;
+  logic [4*AW-1:0]     wr_base;
+  logic [3:0]          wr_outs;
+  logic [AW-1:0]       base_by, base_bu, base_bv, base_my, base_out, pass_stride;
+  logic [CW-1:0]       xend;
+  logic [1:0]          xlo;
+  logic                right, wide, pack;      // right view as base; 16-bit output; LR scratch format
+  logic [AW-1:0]       mark_valid, mark_base, mark_stride;
+  logic                mark_half;
+  logic [15:0]         mark_value;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      {cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q} <= '0;
-      {cfg_out_q, cfg_dl_q, cfg_dr_q, cfg_mask_q, stride_q, out_stride_q, tile_q} <= '0;
-      {cfg_right_q, lr_q, cfg_sub_q, lr_t_q, width_q, height_q, disp_q, thr_q} <= '0;
-      {rect_q, rect_step_q, raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q} <= '0;
-      {raw_stride_q, raw_ly_q, raw_lu_q, raw_lv_q, raw_ry_q, raw_ru_q, raw_rv_q} <= '0;
-      {mesh_l_q, mesh_r_q, valid_l_q, valid_r_q} <= '0;
-    end else if (accept) begin
-      cfg_ly_q     <= cfg_base_ly_i;
-      cfg_lu_q     <= cfg_base_lu_i;
-      cfg_lv_q     <= cfg_base_lv_i;
-      cfg_ry_q     <= cfg_base_ry_i;
-      cfg_ru_q     <= cfg_base_ru_i;
-      cfg_rv_q     <= cfg_base_rv_i;
-      cfg_out_q    <= cfg_base_out_i;
-      cfg_dl_q     <= cfg_base_dl_i;
-      cfg_dr_q     <= cfg_base_dr_i;
-      cfg_mask_q   <= cfg_base_mask_i;
-      stride_q     <= cfg_stride_i;
-      out_stride_q <= cfg_out_stride_i;
-      tile_q       <= cfg_tile_stride_i;
-      {cfg_right_q, lr_q, cfg_sub_q} <= cfg_mode_i;
-      lr_t_q       <= cfg_lr_t_i;
-      width_q      <= cfg_width_i;
-      height_q     <= cfg_height_i;
-      disp_q       <= cfg_disp_i;
-      thr_q        <= cfg_thr_i;
-      rect_q       <= cfg_rect_en_i;
-      rect_step_q  <= cfg_rect_step_i;
-      raw_w_q      <= cfg_raw_width_i;
-      raw_h_q      <= cfg_raw_height_i;
-      raw_stride_q <= cfg_raw_stride_i;
-      raw_ly_q     <= cfg_raw_ly_i;
-      raw_lu_q     <= cfg_raw_lu_i;
-      raw_lv_q     <= cfg_raw_lv_i;
-      raw_ry_q     <= cfg_raw_ry_i;
-      raw_ru_q     <= cfg_raw_ru_i;
-      raw_rv_q     <= cfg_raw_rv_i;
-      mesh_l_q     <= cfg_mesh_l_i;
-      mesh_r_q     <= cfg_mesh_r_i;
-      mesh_nx_q    <= cfg_mesh_nx_i;
-      mesh_ny_q    <= cfg_mesh_ny_i;
-      valid_l_q    <= cfg_valid_l_i;
-      valid_r_q    <= cfg_valid_r_i;
-    end
-  end
+  mcadsw_pass_cfg #(.AW(AW), .CW(CW), .NB(NB), .NTHR(NTHR), .DCB(DCB)) u_pass_cfg (
+    .clk_i, .rst_ni,
+    .cfg_base_ly_i, .cfg_base_lu_i, .cfg_base_lv_i, .cfg_base_ry_i, .cfg_base_ru_i, .cfg_base_rv_i,
+    .cfg_base_out_i, .cfg_base_dl_i, .cfg_base_dr_i, .cfg_base_mask_i,
+    .cfg_stride_i, .cfg_out_stride_i, .cfg_tile_stride_i, .cfg_mode_i, .cfg_lr_t_i,
+    .cfg_width_i, .cfg_height_i, .cfg_disp_i, .cfg_thr_i,
+    .cfg_rect_en_i, .cfg_rect_step_i, .cfg_raw_width_i, .cfg_raw_height_i, .cfg_raw_stride_i,
+    .cfg_raw_ly_i, .cfg_raw_lu_i, .cfg_raw_lv_i, .cfg_raw_ry_i, .cfg_raw_ru_i, .cfg_raw_rv_i,
+    .cfg_mesh_l_i, .cfg_mesh_r_i, .cfg_mesh_nx_i, .cfg_mesh_ny_i, .cfg_valid_l_i, .cfg_valid_r_i,
+    .accept_i (accept), .to_second_i (to_second), .pass_second_i (pass_second),
+    .mark_phase_i (mark_phase),
+    .ly_o (cfg_ly_q), .lu_o (cfg_lu_q), .lv_o (cfg_lv_q), .ry_o (cfg_ry_q), .ru_o (cfg_ru_q),
+    .rv_o (cfg_rv_q), .out_o (cfg_out_q), .dl_o (cfg_dl_q), .dr_o (cfg_dr_q), .mask_o (cfg_mask_q),
+    .stride_o (stride_q), .out_stride_o (out_stride_q), .tile_o (tile_q),
+    .sub_o (cfg_sub_q), .lr_o (lr_q), .right_o (cfg_right_q), .lr_t_o (lr_t_q),
+    .width_o (width_q), .height_o (height_q), .disp_o (disp_q), .thr_o (thr_q),
+    .rect_o (rect_q), .rect_step_o (rect_step_q), .raw_w_o (raw_w_q), .raw_h_o (raw_h_q),
+    .mesh_nx_o (mesh_nx_q), .mesh_ny_o (mesh_ny_q), .raw_stride_o (raw_stride_q),
+    .raw_base_o (raw_base), .in_base_o (in_base), .mesh_base_o (mesh_base),
+    .valid_base_o (valid_base), .rect_planes_o (rect_planes), .tiled_o (tiled),
+    .rect_stride_o (rect_stride), .wr_base_o (wr_base), .wr_outs_o (wr_outs),
+    .pass_by_o (base_by), .pass_bu_o (base_bu), .pass_bv_o (base_bv), .pass_my_o (base_my),
+    .pass_out_o (base_out), .pass_stride_o (pass_stride), .pass_xend_o (xend), .pass_xlo_o (xlo),
+    .pass_right_o (right), .pass_wide_o (wide), .pass_pack_o (pack), .post_wide_o (post_wide),
+    .mark_valid_o (mark_valid), .mark_base_o (mark_base), .mark_stride_o (mark_stride),
+    .mark_half_o (mark_half), .mark_value_o (mark_value)
+  );
 
+  // The check's verdict is registered (mcadsw_cfg_check): the configuration settles
+  // through its multipliers and comparators in the frame controller's StSettle, and
+  // the controller's branch on it starts from flip-flops (timing).
   localparam int SB = AW + CW;                      // plane sizes, exact
-  logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err;
-  logic cfg_ok, cfg_done;
+  logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err_q;
+  logic cfg_ok_q, cfg_done_q;
   logic [SB-1:0] in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
     .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_stride_i),
@@ -182,36 +179,17 @@ module mcadsw_engine #(
     .tile_stride_i (tile_q),
     .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .rect_i (rect_q), .lr_t_i (lr_t_q),
     .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
-    .err_o (cfg_err), .ok_o (cfg_ok), .done_o (cfg_done),
+    .err_o (cfg_err_q), .ok_o (cfg_ok_q), .done_o (cfg_done_q),
     .in_size_o (in_size), .size_o (size), .out_size_o (out_size)
   );
 
   // ---- Frame controller: the passes, busy / done, error code, counters --------------------
   logic sched_busy, sched_done, go, post_start, post_done, post_busy;
-  logic pass_second, pass_post;
   logic rchk_start, rchk_done, rect_start, rect_done, rect_sel, mark_start, mark_done, mark_sel;
-  logic [1:0] mark_phase;
   logic [2:0] rchk_err;
   logic [1:0] rect_err;
   logic [mcadsw_pkg::ERR_BITS-1:0] error_code;
   assign error_code_o = 8'(error_code);
-
-  // The check's result, registered: the configuration (registered at the start) settles
-  // through the check's multipliers and comparators in the frame controller's StSettle;
-  // the controller's branch on it starts from flip-flops (timing).
-  logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err_q;
-  logic                            cfg_ok_q, cfg_done_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      cfg_err_q  <= mcadsw_pkg::ErrNone;
-      cfg_ok_q   <= 1'b1;
-      cfg_done_q <= 1'b1;
-    end else begin
-      cfg_err_q  <= cfg_err;
-      cfg_ok_q   <= cfg_ok;
-      cfg_done_q <= cfg_done;
-    end
-  end
 
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
@@ -233,59 +211,10 @@ module mcadsw_engine #(
     .cnt_cycles_o, .cnt_words_read_o, .cnt_words_written_o, .cnt_stall_o
   );
 
-  // ---- The pass's planes and columns ------------------------------------------------------
-  // Base view Y, U, V (census and weights) and match view Y: the left view and
-  // the right, or the other way round with the right view as base (mode bit 2,
-  // or the LR mode's second pass). The first pass writes the disparity plane, or
-  // in the LR mode dL (with sub-pixel output in the scratch format: pack); the
-  // second writes dR, one byte a pixel. The pass's columns: the image lies in
-  // columns xlo .. xend - 1; with the right view as base the pass runs mirrored
-  // (docs/blocks/engine.md section 6): pass column c is image column W4 - 1 - c,
-  // W4 the width rounded up to 4, so the image lies in pass columns W4 - W .. W4 - 1.
-  // Registered when a pass is set up (v_*: at the start from the configuration
-  // ports; when the LR mode's second pass begins, from the registered
-  // configuration), so the readers' address and clamp arithmetic starts from
-  // flip-flops.
-  logic          to_second;              // the LR mode's second pass begins with the next cycle
-  logic [AW-1:0] v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr;
-  logic [CW-1:0] v_width, v_w4;
-  logic          v_right, v_lr, v_sub, v_second;
-  assign v_second = !accept;
-  assign {v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr, v_width} = accept ?
-      {cfg_base_ly_i, cfg_base_lu_i, cfg_base_lv_i, cfg_base_ry_i, cfg_base_ru_i, cfg_base_rv_i,
-       cfg_base_out_i, cfg_base_dl_i, cfg_base_dr_i, cfg_width_i} :
-      {cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q, cfg_out_q, cfg_dl_q, cfg_dr_q,
-       width_q};
-  assign v_right = accept ? cfg_mode_i[2] : 1'b1;
-  assign v_lr    = accept ? cfg_mode_i[1] : lr_q;
-  assign v_sub   = accept && cfg_mode_i[0];
-  assign v_w4    = (v_width + CW'(3)) & ~(CW'(3));
-
-  logic          right, wide, pack;      // right view as base; 16-bit output; LR scratch format
-  logic [AW-1:0] base_by, base_bu, base_bv, base_my, base_out;
-  logic [CW-1:0] xend;
-  logic [1:0]    xlo;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      {base_by, base_bu, base_bv, base_my, base_out, xend, xlo, right, wide, pack} <= '0;
-    end else if (accept || to_second) begin
-      base_by  <= v_right ? v_ry : v_ly;
-      base_bu  <= v_right ? v_ru : v_lu;
-      base_bv  <= v_right ? v_rv : v_lv;
-      base_my  <= v_right ? v_ly : v_ry;
-      base_out <= v_second ? v_dr : v_lr ? v_dl : v_out;
-      xend     <= v_right ? v_w4 : v_width;
-      xlo      <= v_right ? 2'(CW'(0) - v_width) : 2'd0;
-      right    <= v_right;
-      wide     <= v_sub;
-      pack     <= v_lr && v_sub;
-    end
-  end
-
   // ---- Block scheduler -----------------------------------------------------------------
   logic               prep_start, prep_bank, agg_bank;
   logic signed [CW:0] prep_x0, prep_y0;
-  logic               prep_done;
+  logic               cl_done, cr_done, wg_done;   // the preparers' (one cycle each)
   logic [4:0]         prep_rows;
   logic               prep_cont;      // the block continues its left neighbour
   localparam int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS);
@@ -306,7 +235,7 @@ module mcadsw_engine #(
     .width_i        (xend),
     .height_i       (height_q),
     .out_base_i     (base_out),
-    .stride_i       (pass_second ? stride_q : out_stride_q),  // LR: dR has the input stride
+    .stride_i       (pass_stride),                 // LR: dR has the input stride
     .busy_o         (sched_busy),
     .done_o         (sched_done),
     .prep_start_o   (prep_start),
@@ -315,7 +244,7 @@ module mcadsw_engine #(
     .prep_y0_o      (prep_y0),
     .prep_cont_o    (prep_cont),
     .prep_rows_o    (prep_rows),
-    .prep_done_i    (prep_done),
+    .prep_done_i    ({wg_done, cr_done, cl_done}),
     .agg_active_o   (agg_active),
     .agg_bank_o     (agg_bank),
     .job_valid_o    (job_valid),
@@ -384,53 +313,42 @@ module mcadsw_engine #(
     .mem_rvalid_i (eng_rvalid), .mem_rdata_i
   );
 
-  // ---- Post stage (LR mode, pass 2): the external port is its own while it runs ----
-  logic          post_req, post_we, post_sel;
+  // ---- Post stage (LR mode, pass 2), rectify pass and mark step ------------------------------
+  // Each owns the external port in its frame-controller states (mcadsw_port_mux).
+  logic          post_req, post_we, post_gnt, post_rvalid;
   logic [3:0]    post_be;
   logic [AW-1:0] post_addr;
   logic [31:0]   post_wdata;
-  assign post_sel = pass_post && !rect_sel && !mark_sel;
 
   mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
     .clk_i, .rst_ni,
     .start_i (post_start),
     .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q), .base_out_i (cfg_out_q),
     .base_mask_i (cfg_mask_q), .stride_i (stride_q), .out_stride_i (out_stride_q),
-    .width_i (width_q), .height_i (height_q), .tol_i (6'(lr_t_q)), .wide_i (lr_q && cfg_sub_q),
+    .width_i (width_q), .height_i (height_q), .tol_i (6'(lr_t_q)), .wide_i (post_wide),
     .busy_o (post_busy), .done_o (post_done),
-    .mem_req_o (post_req), .mem_gnt_i (mem_gnt_i && post_sel), .mem_we_o (post_we),
+    .mem_req_o (post_req), .mem_gnt_i (post_gnt), .mem_we_o (post_we),
     .mem_be_o (post_be), .mem_addr_o (post_addr), .mem_wdata_o (post_wdata),
-    .mem_rvalid_i (mem_rvalid_i && post_sel), .mem_rdata_i
+    .mem_rvalid_i (post_rvalid), .mem_rdata_i
   );
 
-  // ---- Rectification (docs/blocks/rectifier.md): the check of its registers, the
-  // rectify pass and the mark step; the pass and the mark step own the memory port
-  // in their states, as the post stage in its own.
-  // The planes rectified: those the mode reads (docs/algorithm.md 13.4), bit p for
-  // LY LU LV RY RU RV.
-  logic [5:0] rect_planes;
-  assign rect_planes = lr_q ? 6'b111111 : cfg_right_q ? 6'b111001 : 6'b001111;
-  // in_size, size, out_size (mcadsw_cfg_check's) are registered with the configuration.
+  // Rectification (docs/blocks/rectifier.md): the check of its registers, the rectify
+  // pass and the mark step (docs/algorithm.md 13.4; its plane, bitmap and value by
+  // phase from mcadsw_pass_cfg). in_size, size, out_size are mcadsw_cfg_check's,
+  // registered with the configuration.
   logic rchk_busy_unused;
   mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
     .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
     .err_o (rchk_err),
     .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .raw_stride_i (raw_stride_q), .tiled_i (tile_q != '0),
-    .planes_i (rect_planes),
-    .raw_base_i ({raw_rv_q, raw_ru_q, raw_ry_q, raw_lv_q, raw_lu_q, raw_ly_q}),
-    .rect_base_i ({cfg_rv_q, cfg_ru_q, cfg_ry_q, cfg_lv_q, cfg_lu_q, cfg_ly_q}),
-    .rect_size_i (in_size),
-    .mesh_base_i ({mesh_r_q, mesh_l_q}), .valid_base_i ({valid_r_q, valid_l_q}),
+    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .raw_stride_i (raw_stride_q), .tiled_i (tiled),
+    .planes_i (rect_planes), .raw_base_i (raw_base), .rect_base_i (in_base), .rect_size_i (in_size),
+    .mesh_base_i (mesh_base), .valid_base_i (valid_base),
     .mesh_nx_i (mesh_nx_q), .mesh_ny_i (mesh_ny_q),
-    // The frame's output planes (mcadsw_cfg_check's write list): the first pass's
-    // (the disparity plane, or dL in the LR mode), dR, the disparity plane, the mask.
-    .out_base_i ({cfg_mask_q, cfg_out_q, cfg_dr_q, lr_q ? cfg_dl_q : cfg_out_q}),
-    .out_size_i ({size, out_size, size, out_size}),
-    .outs_i ({lr_q, lr_q, lr_q, 1'b1})
+    .out_base_i (wr_base), .out_size_i ({size, out_size, size, out_size}), .outs_i (wr_outs)
   );
 
-  logic          rect_req, rect_we, rect_busy_unused;
+  logic          rect_req, rect_we, rect_gnt, rect_rvalid, rect_busy_unused;
   logic [3:0]    rect_be;
   logic [AW-1:0] rect_addr;
   logic [2:0]    rect_len;
@@ -438,69 +356,47 @@ module mcadsw_engine #(
   mcadsw_rect #(.CW(CW)) u_rect (
     .clk_i, .rst_ni, .start_i (rect_start),
     .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .tiled_i (tile_q != '0),
-    .raw_stride_i (raw_stride_q), .stride_i (tile_q != '0 ? tile_q : stride_q),
-    .raw_base_i ({raw_rv_q, raw_ru_q, raw_ry_q, raw_lv_q, raw_lu_q, raw_ly_q}),
-    .base_i ({cfg_rv_q, cfg_ru_q, cfg_ry_q, cfg_lv_q, cfg_lu_q, cfg_ly_q}),
-    .planes_i (rect_planes),
-    .mesh_base_i ({mesh_r_q, mesh_l_q}), .valid_base_i ({valid_r_q, valid_l_q}),
+    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .tiled_i (tiled),
+    .raw_stride_i (raw_stride_q), .stride_i (rect_stride),
+    .raw_base_i (raw_base), .base_i (in_base), .planes_i (rect_planes),
+    .mesh_base_i (mesh_base), .valid_base_i (valid_base),
     .busy_o (rect_busy_unused), .done_o (rect_done), .err_o (rect_err),
-    .mem_req_o (rect_req), .mem_gnt_i (mem_gnt_i && rect_sel), .mem_we_o (rect_we),
+    .mem_req_o (rect_req), .mem_gnt_i (rect_gnt), .mem_we_o (rect_we),
     .mem_be_o (rect_be), .mem_addr_o (rect_addr), .mem_len_o (rect_len),
-    .mem_wdata_o (rect_wdata), .mem_rvalid_i (mem_rvalid_i && rect_sel), .mem_rdata_i
+    .mem_wdata_o (rect_wdata), .mem_rvalid_i (rect_rvalid), .mem_rdata_i
   );
 
-  // The mark step (docs/algorithm.md 13.4), by phase: 0 (LR, before the post stage)
-  // 255 into dR at the right view's invalid pixels, so that the check fails there
-  // (|dL - 255| > T); 1 (idem) a flag into dL at the left view's, which the check
-  // fails (mcadsw_post_check); 2 (after the pass, or the post stage) the invalid code
-  // into the output at the base view's invalid pixels.
-  logic          mark_req, mark_we, mark_busy_unused;
+  logic          mark_req, mark_we, mark_gnt, mark_rvalid, mark_busy_unused;
   logic [3:0]    mark_be;
   logic [AW-1:0] mark_addr;
   logic [2:0]    mark_len;
   logic [31:0]   mark_wdata;
-  logic [AW-1:0] mark_valid, mark_base, mark_stride;
-  logic          mark_half;
-  logic [15:0]   mark_value;
-  always_comb begin
-    case (mark_phase)
-      2'd0: begin
-        mark_valid = valid_r_q; mark_base = cfg_dr_q; mark_stride = stride_q; mark_half = 1'b0;
-        mark_value = 16'(mcadsw_rect_pkg::RECT_INVALID_D8);
-      end
-      2'd1: begin
-        mark_valid = valid_l_q; mark_base = cfg_dl_q; mark_stride = out_stride_q; mark_half = cfg_sub_q;
-        mark_value = cfg_sub_q ? 16'(mcadsw_rect_pkg::RECT_FLAG_D16) : 16'(mcadsw_rect_pkg::RECT_FLAG_D8);
-      end
-      default: begin
-        mark_valid = cfg_right_q ? valid_r_q : valid_l_q; mark_base = cfg_out_q;
-        mark_stride = out_stride_q; mark_half = cfg_sub_q;
-        mark_value = cfg_sub_q ? 16'(mcadsw_rect_pkg::RECT_INVALID_D16) : 16'(mcadsw_rect_pkg::RECT_INVALID_D8);
-      end
-    endcase
-  end
   mcadsw_rect_mark #(.CW(CW)) u_rect_mark (
     .clk_i, .rst_ni, .start_i (mark_start), .width_i (width_q), .height_i (height_q),
     .valid_base_i (mark_valid), .base_i (mark_base), .stride_i (mark_stride), .half_i (mark_half),
     .value_i (mark_value),
     .busy_o (mark_busy_unused), .done_o (mark_done),
-    .mem_req_o (mark_req), .mem_gnt_i (mem_gnt_i && mark_sel), .mem_we_o (mark_we),
+    .mem_req_o (mark_req), .mem_gnt_i (mark_gnt), .mem_we_o (mark_we),
     .mem_be_o (mark_be), .mem_addr_o (mark_addr), .mem_len_o (mark_len),
-    .mem_wdata_o (mark_wdata), .mem_rvalid_i (mem_rvalid_i && mark_sel), .mem_rdata_i
+    .mem_wdata_o (mark_wdata), .mem_rvalid_i (mark_rvalid), .mem_rdata_i
   );
 
   // The port's owner: the rectify pass, the mark step, the post stage, or the passes.
-  logic eng_sel;
-  assign eng_sel = !rect_sel && !mark_sel && !post_sel;
-  assign mem_req_o   = rect_sel ? rect_req : mark_sel ? mark_req : post_sel ? post_req : eng_req;
-  assign mem_we_o    = rect_sel ? rect_we : mark_sel ? mark_we : post_sel ? post_we : eng_we;
-  assign mem_be_o    = rect_sel ? rect_be : mark_sel ? mark_be : post_sel ? post_be : eng_be;
-  assign mem_addr_o  = rect_sel ? rect_addr : mark_sel ? mark_addr : post_sel ? post_addr : eng_addr;
-  assign mem_len_o   = rect_sel ? {1'b0, rect_len} : mark_sel ? {1'b0, mark_len} : post_sel ? 4'd0 : eng_len;
-  assign mem_wdata_o = rect_sel ? rect_wdata : mark_sel ? mark_wdata : post_sel ? post_wdata : eng_wdata;
-  assign eng_gnt     = mem_gnt_i && eng_sel;
-  assign eng_rvalid  = mem_rvalid_i && eng_sel;
+  mcadsw_port_mux #(.AW(AW)) u_port_mux (
+    .clk_i, .rst_ni, .rect_sel_i (rect_sel), .mark_sel_i (mark_sel), .pass_post_i (pass_post),
+    .rect_req_i (rect_req), .rect_we_i (rect_we), .rect_be_i (rect_be), .rect_addr_i (rect_addr),
+    .rect_len_i (rect_len), .rect_wdata_i (rect_wdata), .rect_gnt_o (rect_gnt),
+    .rect_rvalid_o (rect_rvalid),
+    .mark_req_i (mark_req), .mark_we_i (mark_we), .mark_be_i (mark_be), .mark_addr_i (mark_addr),
+    .mark_len_i (mark_len), .mark_wdata_i (mark_wdata), .mark_gnt_o (mark_gnt),
+    .mark_rvalid_o (mark_rvalid),
+    .post_req_i (post_req), .post_we_i (post_we), .post_be_i (post_be), .post_addr_i (post_addr),
+    .post_wdata_i (post_wdata), .post_gnt_o (post_gnt), .post_rvalid_o (post_rvalid),
+    .eng_req_i (eng_req), .eng_we_i (eng_we), .eng_be_i (eng_be), .eng_addr_i (eng_addr),
+    .eng_len_i (eng_len), .eng_wdata_i (eng_wdata), .eng_gnt_o (eng_gnt), .eng_rvalid_o (eng_rvalid),
+    .mem_req_o, .mem_gnt_i, .mem_we_o, .mem_be_o, .mem_addr_o, .mem_len_o, .mem_wdata_o,
+    .mem_rvalid_i
+  );
 
   logic        lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
   logic [31:0] lpix, rpix, wpix;
@@ -546,20 +442,8 @@ module mcadsw_engine #(
   );
 
   // ---- Census transformers and weight generator ---------------------------------------------
-  logic cl_done, cr_done, wg_done;
-  logic cl_done_q, cr_done_q, wg_done_q;
   logic cl_busy_unused, cr_busy_unused, wg_busy_unused;
   logic cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) {cl_done_q, cr_done_q, wg_done_q} <= '0;
-    else if (prep_start) {cl_done_q, cr_done_q, wg_done_q} <= '0;
-    else begin
-      if (cl_done) cl_done_q <= 1'b1;
-      if (cr_done) cr_done_q <= 1'b1;
-      if (wg_done) wg_done_q <= 1'b1;
-    end
-  end
-  assign prep_done = cl_done_q && cr_done_q && wg_done_q;
 
   logic                       vrd_en, hrd_en;
   logic [4:0]                 vrd_row, hrd_row_unused;
@@ -639,12 +523,6 @@ module mcadsw_engine #(
   logic [2:0]           sub_grp;
   logic [HAGG*VB-1:0]   sub;
   logic [HAGG*DB-1:0]   sub_d;
-  // Depth FIFO values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
-  // the scratch format {offset + 8, d} (docs/blocks/engine.md section 7).
-  localparam int FVB = DB + 5;
-  logic                 val_valid;
-  logic [2:0]           val_grp;
-  logic [HAGG*FVB-1:0]  val, disp_wide, sub_wide, sub_pack;
 
   mcadsw_cost_agg #(.P(PAR)) u_cost_agg (
     .clk_i, .rst_ni,
@@ -668,36 +546,22 @@ module mcadsw_engine #(
                         cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy,
                         rchk_busy_unused, rect_busy_unused, mark_busy_unused};
 
-  for (genvar m = 0; m < HAGG; m++) begin : g_disp_wide
-    logic [4:0] off8;                  // offset + 8 (0 .. 16)
-    assign off8 = 5'(sub[m*VB +: VB] - {sub_d[m*DB +: DB], 4'b0000} + VB'(8));
-    assign disp_wide[m*FVB +: FVB] = FVB'(disp[m*DB +: DB]);
-    assign sub_wide[m*FVB +: FVB]  = FVB'(sub[m*VB +: VB]);
-    assign sub_pack[m*FVB +: FVB]  = {off8[4:0], sub_d[m*DB +: DB]};
-  end
-  assign val_valid = wide ? sub_valid : disp_valid;
-  assign val_grp   = wide ? sub_grp : disp_grp;
-  assign val       = pack ? sub_pack : wide ? sub_wide : disp_wide;
-
-  mcadsw_depth_fifo #(.AW(AW), .CW(CW), .VB(FVB)) u_depth_fifo (
+  // The depth FIFO's values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
+  // the scratch format {offset + 8, d} (docs/blocks/engine.md section 7).
+  mcadsw_depth_fifo #(.AW(AW), .CW(CW), .DB(DB)) u_depth_fifo (
     .clk_i, .rst_ni,
     .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x), .desc_n_i (desc_n),
     .space_o (fifo_space), .empty_o (fifo_empty),
-    .wide_i (wide), .mirror_i (right), .xlo_i (xlo), .xend_i (xend),
-    .disp_valid_i (val_valid), .disp_grp_i (val_grp), .disp_i (val),
+    .wide_i (wide), .pack_i (pack), .mirror_i (right), .xlo_i (xlo), .xend_i (xend),
+    .disp_valid_i (disp_valid), .disp_grp_i (disp_grp), .disp_i (disp),
+    .sub_valid_i (sub_valid), .sub_grp_i (sub_grp), .sub_i (sub), .sub_d_i (sub_d),
     .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata),
     .wr_gnt_i (wr_gnt)
   );
 
   // ---- Invariants -------------------------------------------------------------------------
-  // The memory port has one owner: the post stage from the end of the LR mode's
-  // second pass until the next start, the memory controller otherwise.
-  `MCADSW_ASSERT(PortOwnedByPostStage, !post_req || post_sel)
-  `MCADSW_ASSERT(PortOwnedByPasses, !eng_req || eng_sel)
-  `MCADSW_ASSERT(PortOwnedByRectifier, !rect_req || rect_sel)
-  `MCADSW_ASSERT(PortOwnedByMarkStep, !mark_req || mark_sel)
-  `MCADSW_ASSERT(OnePortOwner, !(rect_sel && mark_sel))
-  // Blocks are prepared and rows aggregated only while the frame runs.
+  // Blocks are prepared and rows aggregated only while the frame runs (the memory
+  // port's owners: mcadsw_port_mux).
   `MCADSW_ASSERT(WorkOnlyWhenBusy, !(prep_start || job_valid) || busy_o)
 
 endmodule

@@ -34,7 +34,8 @@ module mcadsw_scheduler #(
   output logic signed [CW:0] prep_y0_o,      // by - 15
   output logic               prep_cont_o,    // the block continues the previous one (bx > 0)
   output logic [4:0]         prep_rows_o,    // its rows inside the image (1 .. BLOCK)
-  input  logic               prep_done_i,    // all three preparers finished (level)
+  input  logic [2:0]         prep_done_i,    // a preparer finished (one cycle each: the
+                                             // census left and right, the weights)
   output logic               agg_active_o,   // a block is in the aggregator (the one before
                                              // the block being prepared, while preparing)
   // Cost aggregator
@@ -85,6 +86,16 @@ module mcadsw_scheduler #(
   logic prep_go;
   assign prep_go = run_q && prep_more_q && !prep_busy_q && !prep_valid_q;
   assign prep_start_o = prep_go;
+
+  // The block is prepared when all three preparers have finished since its start.
+  logic [2:0] pdone_q;
+  logic       prep_done;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni)      pdone_q <= '0;
+    else if (prep_go) pdone_q <= '0;
+    else              pdone_q <= pdone_q | prep_done_i;
+  end
+  assign prep_done = &pdone_q;
   assign prep_bank_o  = pbank_q;
   assign prep_x0_o    = $signed({1'b0, pbx_q}) - (CW + 1)'(RADIUS);
   assign prep_y0_o    = $signed({1'b0, pby_q}) - (CW + 1)'(RADIUS);
@@ -139,7 +150,7 @@ module mcadsw_scheduler #(
         prep_more_q <= 1'b1;
       end
       if (prep_go) prep_busy_q <= 1'b1;
-      if (prep_busy_q && prep_done_i && !prep_go) begin
+      if (prep_busy_q && prep_done && !prep_go) begin
         prep_busy_q  <= 1'b0;
         prep_valid_q <= 1'b1;
       end
