@@ -106,16 +106,30 @@ class Check:
         print(f"rtl_check: verilator --lint-only -Wall clean on {len(self.mods)} modules{self.what}")
         return self.wiring()
 
-    @staticmethod
-    def wiring():
+    def wiring(self):
         """The engine is wiring: instances, wires and assigns; a process belongs in the block
-        that owns it (docs/architecture.md)."""
-        text = (RTL / WIRING).read_text()
-        code = re.sub(r"//[^\n]*|/\*.*?\*/", "", text, flags=re.S)
+        that owns it (docs/architecture.md). And the configuration travels as the one bundle
+        the package declares (CFG_*, generated from regs.hpp): no module has a port of its own
+        for a field of it (cfg_<field>_i / _o)."""
+        code = re.sub(r"//[^\n]*|/\*.*?\*/", "", (RTL / WIRING).read_text(), flags=re.S)
         found = [i + 1 for i, line in enumerate(code.split("\n")) if re.search(r"\balways(_ff|_comb|_latch)?\b", line)]
         if found:
             print(f"rtl_check: rtl/{WIRING} is wiring, but has an always block (line {', '.join(map(str, found))}): "
                   "move it into the block that owns it")
+            return False
+        pkg = Path(self.alt_pkg).read_text() if self.alt_pkg else (RTL / PKGS[0]).read_text()
+        fields = [f.lower() for f in re.findall(r"localparam int CFG_([A-Z0-9_]+?)\s*=", pkg)
+                  if not f.endswith("_W") and f != "BITS"]
+        if not fields:
+            raise FlowError("the package declares no configuration bundle (CFG_*): regenerate it (make rtl-pkg)", 2)
+        port = re.compile(r"\b(input|output)\b[^;,()]*\bcfg_(" + "|".join(fields) + r")_[io]\b")
+        bad = []
+        for f in self.mods:
+            code = re.sub(r"//[^\n]*|/\*.*?\*/", "", (RTL / f).read_text(), flags=re.S)
+            bad += [f"rtl/{f}: cfg_{m.group(2)}" for m in port.finditer(code)]
+        if bad:
+            print("rtl_check: configuration fields retyped as ports (they travel in the bundle cfg_i / cfg_o, "
+                  f"mcadsw_pkg::CFG_*): {'; '.join(bad)}")
             return False
         return True
 

@@ -45,6 +45,8 @@ module regs_props #(
   logic        awready, wready, bvalid, arready, rvalid;
   logic [1:0]  bresp, rresp;
   logic [31:0] rdata, base_ly;
+  logic [mcadsw_pkg::CFG_BITS-1:0] cfg;
+  assign base_ly = cfg[mcadsw_pkg::CFG_BASE_LY +: 32];
 
   mcadsw_regs dut (
     .clk_i, .rst_ni,
@@ -54,13 +56,7 @@ module regs_props #(
     .s_arvalid_i, .s_arready_o (arready), .s_araddr_i,
     .s_rvalid_o (rvalid), .s_rready_i, .s_rdata_o (rdata), .s_rresp_o (rresp),
     .irq_o (),
-    .cfg_base_ly_o (base_ly), .cfg_base_lu_o (), .cfg_base_lv_o (), .cfg_base_ry_o (),
-    .cfg_base_ru_o (), .cfg_base_rv_o (), .cfg_base_out_o (), .cfg_base_dl_o (),
-    .cfg_base_dr_o (), .cfg_base_mask_o (), .cfg_stride_o (), .cfg_out_stride_o (),
-    .cfg_tile_stride_o (), .cfg_mode_o (), .cfg_lr_t_o (), .cfg_width_o (), .cfg_height_o (),
-    .cfg_disp_o (), .cfg_thr_o (), .cfg_rect_en_o (), .cfg_rect_step_o (),
-    .cfg_raw_width_o (), .cfg_raw_height_o (), .cfg_raw_stride_o (), .cfg_raw_base_o (),
-    .cfg_mesh_o (), .cfg_mesh_nx_o (), .cfg_mesh_ny_o (), .cfg_valid_o (),
+    .cfg_o (cfg),
     .start_o (), .abort_o (),
     .busy_i, .done_i, .error_i, .error_code_i,
     .cnt_cycles_i, .cnt_words_read_i, .cnt_words_written_i, .cnt_stall_i

@@ -24,45 +24,9 @@ module mcadsw_engine #(
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
-  // Configuration, sampled when start_i is accepted
-  input  logic [AW-1:0]       cfg_base_ly_i,   // left Y plane
-  input  logic [AW-1:0]       cfg_base_lu_i,   // left U plane
-  input  logic [AW-1:0]       cfg_base_lv_i,   // left V plane
-  input  logic [AW-1:0]       cfg_base_ry_i,   // right Y plane
-  input  logic [AW-1:0]       cfg_base_ru_i,   // right U plane (read with the right view as base, or LR)
-  input  logic [AW-1:0]       cfg_base_rv_i,   // right V plane (idem)
-  input  logic [AW-1:0]       cfg_base_out_i,  // disparity plane
-  input  logic [AW-1:0]       cfg_base_dl_i,   // LR: scratch plane of the left map (out stride)
-  input  logic [AW-1:0]       cfg_base_dr_i,   // LR: scratch plane of the right map (input stride)
-  input  logic [AW-1:0]       cfg_base_mask_i, // LR: validity mask plane (input stride)
-  input  logic [AW-1:0]       cfg_stride_i,    // bytes per row of the input planes
-  input  logic [AW-1:0]       cfg_out_stride_i,// bytes per row of the disparity plane
-  input  logic [AW-1:0]       cfg_tile_stride_i,// input planes column-tiled: bytes per 4-pixel column; 0: raster
-  input  logic [2:0]          cfg_mode_i,      // bit 0 sub-pixel, bit 1 LR, bit 2 right base
-  input  logic [7:0]          cfg_lr_t_i,      // LR: check tolerance T, 0 .. LR_T_MAX
-  input  logic [CW-1:0]       cfg_width_i,
-  input  logic [CW-1:0]       cfg_height_i,
-  input  logic [NB-1:0]       cfg_disp_i,      // D
-  input  logic [NTHR*DCB-1:0] cfg_thr_i,       // weight table thresholds
-  // Rectification (register map 1.2, docs/blocks/rectifier.md): raw planes and meshes in,
-  // the planes above written from them before the matching passes
-  input  logic                cfg_rect_en_i,   // RECT_CTRL.ENABLE
-  input  logic [2:0]          cfg_rect_step_i, // RECT_CTRL.STEP_LOG2: S = 8, 16, 32
-  input  logic [CW-1:0]       cfg_raw_width_i,
-  input  logic [CW-1:0]       cfg_raw_height_i,
-  input  logic [AW-1:0]       cfg_raw_stride_i,// raster: bytes a row; tiled: bytes a 4-pixel column
-  input  logic [AW-1:0]       cfg_raw_ly_i,
-  input  logic [AW-1:0]       cfg_raw_lu_i,
-  input  logic [AW-1:0]       cfg_raw_lv_i,
-  input  logic [AW-1:0]       cfg_raw_ry_i,
-  input  logic [AW-1:0]       cfg_raw_ru_i,
-  input  logic [AW-1:0]       cfg_raw_rv_i,
-  input  logic [AW-1:0]       cfg_mesh_l_i,
-  input  logic [AW-1:0]       cfg_mesh_r_i,
-  input  logic [CW-1:0]       cfg_mesh_nx_i,
-  input  logic [CW-1:0]       cfg_mesh_ny_i,
-  input  logic [AW-1:0]       cfg_valid_l_i,   // validity bitmaps (written)
-  input  logic [AW-1:0]       cfg_valid_r_i,
+  // Configuration: one bundle, its fields at mcadsw_pkg::CFG_* (generated from the register
+  // map, sw_ref/include/mcadsw/regs.hpp; docs/memory_map.md), sampled when start_i is accepted
+  input  logic [mcadsw_pkg::CFG_BITS-1:0] cfg_i,
   input  logic                start_i,         // ignored while busy_o
   // Status
   output logic                busy_o,
@@ -107,52 +71,39 @@ module mcadsw_engine #(
   end
 
   // ---- Configuration: registered at the start, checked, then fixed for the frame ----------
-  // mcadsw_pass_cfg: the configuration registered, the pass view, the rectifier's and
-  // the mark step's views (docs/blocks/engine.md 1).
-  logic                accept, to_second, pass_second, pass_post;
-  logic [1:0]          mark_phase;
-  logic [AW-1:0]       cfg_ly_q, cfg_lu_q, cfg_lv_q, cfg_ry_q, cfg_ru_q, cfg_rv_q;
-  logic [AW-1:0]       cfg_out_q, cfg_dl_q, cfg_dr_q, cfg_mask_q, stride_q, out_stride_q, tile_q;
-  logic                cfg_sub_q, lr_q, cfg_right_q, rect_q, tiled, post_wide;
-  logic [7:0]          lr_t_q;
-  logic [CW-1:0]       width_q, height_q, raw_w_q, raw_h_q, mesh_nx_q, mesh_ny_q;
-  logic [NB-1:0]       disp_q;
-  logic [NTHR*DCB-1:0] thr_q;
-  logic [2:0]          rect_step_q;
-  logic [AW-1:0]       raw_stride_q, rect_stride;
-  logic [6*AW-1:0]     raw_base, in_base;
-  logic [2*AW-1:0]     mesh_base, valid_base;
-  logic [5:0]          rect_planes;
-  logic [4*AW-1:0]     wr_base;
-  logic [3:0]          wr_outs;
-  logic [AW-1:0]       base_by, base_bu, base_bv, base_my, base_out, pass_stride;
-  logic [CW-1:0]       xend;
-  logic [1:0]          xlo;
-  logic                right, wide, pack;      // right view as base; 16-bit output; LR scratch format
-  logic [AW-1:0]       mark_valid, mark_base, mark_stride;
-  logic                mark_half;
-  logic [15:0]         mark_value;
+  // mcadsw_pass_cfg: the configuration registered (cfg_q, fields at mcadsw_pkg::CFG_*), the
+  // pass view, the rectifier's and the mark step's views (docs/blocks/engine.md 1).
+  logic                            accept, to_second, pass_second, pass_post;
+  logic [1:0]                      mark_phase;
+  logic [mcadsw_pkg::CFG_BITS-1:0] cfg_q;
+  logic [CW-1:0]                   width_q, height_q;
+  logic [AW-1:0]                   stride_q, out_stride_q, tile_q, rect_stride;
+  logic                            sub_q, lr_q, right_q, tiled, post_wide;
+  logic [6*AW-1:0]                 in_base;
+  logic [5:0]                      rect_planes;
+  logic [4*AW-1:0]                 wr_base;
+  logic [3:0]                      wr_outs;
+  logic [AW-1:0]                   base_by, base_bu, base_bv, base_my, base_out, pass_stride;
+  logic [CW-1:0]                   xend;
+  logic [1:0]                      xlo;
+  logic                            right, wide, pack;  // right view as base; 16-bit output; LR scratch
+  logic [AW-1:0]                   mark_valid, mark_base, mark_stride;
+  logic                            mark_half;
+  logic [15:0]                     mark_value;
+  // The fields most blocks read
+  assign width_q       = cfg_q[mcadsw_pkg::CFG_WIDTH +: CW];
+  assign height_q      = cfg_q[mcadsw_pkg::CFG_HEIGHT +: CW];
+  assign stride_q      = cfg_q[mcadsw_pkg::CFG_STRIDE +: AW];
+  assign out_stride_q  = cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW];
+  assign tile_q        = cfg_q[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
+  assign {right_q, lr_q, sub_q} = cfg_q[mcadsw_pkg::CFG_MODE +: 3];
+  assign in_base       = cfg_q[mcadsw_pkg::CFG_BASE_LY +: 6*AW];  // LY LU LV RY RU RV, plane p at AW p
 
-  mcadsw_pass_cfg #(.AW(AW), .CW(CW), .NB(NB), .NTHR(NTHR), .DCB(DCB)) u_pass_cfg (
-    .clk_i, .rst_ni,
-    .cfg_base_ly_i, .cfg_base_lu_i, .cfg_base_lv_i, .cfg_base_ry_i, .cfg_base_ru_i, .cfg_base_rv_i,
-    .cfg_base_out_i, .cfg_base_dl_i, .cfg_base_dr_i, .cfg_base_mask_i,
-    .cfg_stride_i, .cfg_out_stride_i, .cfg_tile_stride_i, .cfg_mode_i, .cfg_lr_t_i,
-    .cfg_width_i, .cfg_height_i, .cfg_disp_i, .cfg_thr_i,
-    .cfg_rect_en_i, .cfg_rect_step_i, .cfg_raw_width_i, .cfg_raw_height_i, .cfg_raw_stride_i,
-    .cfg_raw_ly_i, .cfg_raw_lu_i, .cfg_raw_lv_i, .cfg_raw_ry_i, .cfg_raw_ru_i, .cfg_raw_rv_i,
-    .cfg_mesh_l_i, .cfg_mesh_r_i, .cfg_mesh_nx_i, .cfg_mesh_ny_i, .cfg_valid_l_i, .cfg_valid_r_i,
+  mcadsw_pass_cfg #(.AW(AW), .CW(CW)) u_pass_cfg (
+    .clk_i, .rst_ni, .cfg_i,
     .accept_i (accept), .to_second_i (to_second), .pass_second_i (pass_second),
-    .mark_phase_i (mark_phase),
-    .ly_o (cfg_ly_q), .lu_o (cfg_lu_q), .lv_o (cfg_lv_q), .ry_o (cfg_ry_q), .ru_o (cfg_ru_q),
-    .rv_o (cfg_rv_q), .out_o (cfg_out_q), .dl_o (cfg_dl_q), .dr_o (cfg_dr_q), .mask_o (cfg_mask_q),
-    .stride_o (stride_q), .out_stride_o (out_stride_q), .tile_o (tile_q),
-    .sub_o (cfg_sub_q), .lr_o (lr_q), .right_o (cfg_right_q), .lr_t_o (lr_t_q),
-    .width_o (width_q), .height_o (height_q), .disp_o (disp_q), .thr_o (thr_q),
-    .rect_o (rect_q), .rect_step_o (rect_step_q), .raw_w_o (raw_w_q), .raw_h_o (raw_h_q),
-    .mesh_nx_o (mesh_nx_q), .mesh_ny_o (mesh_ny_q), .raw_stride_o (raw_stride_q),
-    .raw_base_o (raw_base), .in_base_o (in_base), .mesh_base_o (mesh_base),
-    .valid_base_o (valid_base), .rect_planes_o (rect_planes), .tiled_o (tiled),
+    .mark_phase_i (mark_phase), .cfg_q_o (cfg_q),
+    .rect_planes_o (rect_planes), .tiled_o (tiled),
     .rect_stride_o (rect_stride), .wr_base_o (wr_base), .wr_outs_o (wr_outs),
     .pass_by_o (base_by), .pass_bu_o (base_bu), .pass_bv_o (base_bv), .pass_my_o (base_my),
     .pass_out_o (base_out), .pass_stride_o (pass_stride), .pass_xend_o (xend), .pass_xlo_o (xlo),
@@ -169,16 +120,18 @@ module mcadsw_engine #(
   logic cfg_ok_q, cfg_done_q;
   logic [SB-1:0] in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
-    .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_stride_i),
-    .cap_out_stride_i (cfg_out_stride_i), .cap_tile_stride_i (cfg_tile_stride_i),
-    .cap_width_i (cfg_width_i), .cap_height_i (cfg_height_i),
-    .base_ly_i (cfg_ly_q), .base_lu_i (cfg_lu_q), .base_lv_i (cfg_lv_q),
-    .base_ry_i (cfg_ry_q), .base_ru_i (cfg_ru_q), .base_rv_i (cfg_rv_q),
-    .base_out_i (cfg_out_q), .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q),
-    .base_mask_i (cfg_mask_q), .stride_i (stride_q), .out_stride_i (out_stride_q),
-    .tile_stride_i (tile_q),
-    .sub_i (cfg_sub_q), .lr_i (lr_q), .right_i (cfg_right_q), .rect_i (rect_q), .lr_t_i (lr_t_q),
-    .width_i (width_q), .height_i (height_q), .disp_i (disp_q),
+    .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_i[mcadsw_pkg::CFG_STRIDE +: AW]),
+    .cap_out_stride_i (cfg_i[mcadsw_pkg::CFG_OUT_STRIDE +: AW]),
+    .cap_tile_stride_i (cfg_i[mcadsw_pkg::CFG_TILE_STRIDE +: AW]),
+    .cap_width_i (cfg_i[mcadsw_pkg::CFG_WIDTH +: CW]), .cap_height_i (cfg_i[mcadsw_pkg::CFG_HEIGHT +: CW]),
+    .base_ly_i (in_base[0*AW +: AW]), .base_lu_i (in_base[1*AW +: AW]), .base_lv_i (in_base[2*AW +: AW]),
+    .base_ry_i (in_base[3*AW +: AW]), .base_ru_i (in_base[4*AW +: AW]), .base_rv_i (in_base[5*AW +: AW]),
+    .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_dl_i (cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW]),
+    .base_dr_i (cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
+    .stride_i (stride_q), .out_stride_i (out_stride_q), .tile_stride_i (tile_q),
+    .sub_i (sub_q), .lr_i (lr_q), .right_i (right_q), .rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]),
+    .lr_t_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 8]), .width_i (width_q), .height_i (height_q),
+    .disp_i (cfg_q[mcadsw_pkg::CFG_DISP +: NB]),
     .err_o (cfg_err_q), .ok_o (cfg_ok_q), .done_o (cfg_done_q),
     .in_size_o (in_size), .size_o (size), .out_size_o (out_size)
   );
@@ -194,7 +147,7 @@ module mcadsw_engine #(
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
     .start_i,
-    .cfg_lr_i (lr_q), .cfg_right_i (cfg_right_q), .cfg_rect_i (rect_q), .err_i (cfg_err_q),
+    .cfg_lr_i (lr_q), .cfg_right_i (right_q), .cfg_rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]), .err_i (cfg_err_q),
     .ok_i (cfg_ok_q), .chk_done_i (cfg_done_q),
     .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
@@ -230,35 +183,15 @@ module mcadsw_engine #(
   logic [4:0]         desc_n;
 
   mcadsw_scheduler #(.CW(CW), .AW(AW)) u_scheduler (
-    .clk_i, .rst_ni,
-    .start_i        (go),
-    .width_i        (xend),
-    .height_i       (height_q),
-    .out_base_i     (base_out),
-    .stride_i       (pass_stride),                 // LR: dR has the input stride
-    .busy_o         (sched_busy),
-    .done_o         (sched_done),
-    .prep_start_o   (prep_start),
-    .prep_bank_o    (prep_bank),
-    .prep_x0_o      (prep_x0),
-    .prep_y0_o      (prep_y0),
-    .prep_cont_o    (prep_cont),
-    .prep_rows_o    (prep_rows),
-    .prep_done_i    ({wg_done, cr_done, cl_done}),
-    .agg_active_o   (agg_active),
-    .agg_bank_o     (agg_bank),
-    .job_valid_o    (job_valid),
-    .job_ready_i    (job_ready),
-    .wrow_ready_i   (wrow_ready),
-    .job_row_o      (job_row),
-    .job_last_col_o (job_last_col),
-    .agg_busy_i     (agg_busy),
-    .desc_push_o    (desc_push),
-    .desc_addr_o    (desc_addr),
-    .desc_x_o       (desc_x),
-    .desc_n_o       (desc_n),
-    .fifo_space_i   (fifo_space),
-    .fifo_empty_i   (fifo_empty)
+    .clk_i, .rst_ni, .start_i (go), .width_i (xend), .height_i (height_q), .out_base_i (base_out),
+    .stride_i (pass_stride), .busy_o (sched_busy), .done_o (sched_done),
+    .prep_start_o (prep_start), .prep_bank_o (prep_bank), .prep_x0_o (prep_x0), .prep_y0_o (prep_y0),
+    .prep_cont_o (prep_cont), .prep_rows_o (prep_rows), .prep_done_i ({wg_done, cr_done, cl_done}),
+    .agg_active_o (agg_active), .agg_bank_o (agg_bank), .job_valid_o (job_valid),
+    .job_ready_i (job_ready), .wrow_ready_i (wrow_ready), .job_row_o (job_row),
+    .job_last_col_o (job_last_col), .agg_busy_i (agg_busy),
+    .desc_push_o (desc_push), .desc_addr_o (desc_addr), .desc_x_o (desc_x), .desc_n_o (desc_n),
+    .fifo_space_i (fifo_space), .fifo_empty_i (fifo_empty)
   );
 
   // ---- Window geometry of the block being prepared -----------------------------------------
@@ -323,9 +256,10 @@ module mcadsw_engine #(
   mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
     .clk_i, .rst_ni,
     .start_i (post_start),
-    .base_dl_i (cfg_dl_q), .base_dr_i (cfg_dr_q), .base_out_i (cfg_out_q),
-    .base_mask_i (cfg_mask_q), .stride_i (stride_q), .out_stride_i (out_stride_q),
-    .width_i (width_q), .height_i (height_q), .tol_i (6'(lr_t_q)), .wide_i (post_wide),
+    .base_dl_i (cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW]), .base_dr_i (cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW]),
+    .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
+    .stride_i (stride_q), .out_stride_i (out_stride_q), .width_i (width_q), .height_i (height_q),
+    .tol_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 6]), .wide_i (post_wide),
     .busy_o (post_busy), .done_o (post_done),
     .mem_req_o (post_req), .mem_gnt_i (post_gnt), .mem_we_o (post_we),
     .mem_be_o (post_be), .mem_addr_o (post_addr), .mem_wdata_o (post_wdata),
@@ -340,11 +274,12 @@ module mcadsw_engine #(
   mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
     .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
     .err_o (rchk_err),
-    .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .raw_stride_i (raw_stride_q), .tiled_i (tiled),
-    .planes_i (rect_planes), .raw_base_i (raw_base), .rect_base_i (in_base), .rect_size_i (in_size),
-    .mesh_base_i (mesh_base), .valid_base_i (valid_base),
-    .mesh_nx_i (mesh_nx_q), .mesh_ny_i (mesh_ny_q),
+    .step_log2_i (cfg_q[mcadsw_pkg::CFG_RECT_STEP +: 3]), .width_i (width_q), .height_i (height_q),
+    .raw_w_i (cfg_q[mcadsw_pkg::CFG_RAW_WIDTH +: CW]), .raw_h_i (cfg_q[mcadsw_pkg::CFG_RAW_HEIGHT +: CW]),
+    .raw_stride_i (cfg_q[mcadsw_pkg::CFG_RAW_STRIDE +: AW]), .tiled_i (tiled), .planes_i (rect_planes),
+    .raw_base_i (cfg_q[mcadsw_pkg::CFG_RAW +: 6*AW]), .rect_base_i (in_base), .rect_size_i (in_size),
+    .mesh_base_i (cfg_q[mcadsw_pkg::CFG_MESH +: 2*AW]), .valid_base_i (cfg_q[mcadsw_pkg::CFG_VALID_MAP +: 2*AW]),
+    .mesh_nx_i (cfg_q[mcadsw_pkg::CFG_MESH_NX +: CW]), .mesh_ny_i (cfg_q[mcadsw_pkg::CFG_MESH_NY +: CW]),
     .out_base_i (wr_base), .out_size_i ({size, out_size, size, out_size}), .outs_i (wr_outs)
   );
 
@@ -355,11 +290,11 @@ module mcadsw_engine #(
   logic [31:0]   rect_wdata;
   mcadsw_rect #(.CW(CW)) u_rect (
     .clk_i, .rst_ni, .start_i (rect_start),
-    .step_log2_i (rect_step_q), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (raw_w_q), .raw_h_i (raw_h_q), .tiled_i (tiled),
-    .raw_stride_i (raw_stride_q), .stride_i (rect_stride),
-    .raw_base_i (raw_base), .base_i (in_base), .planes_i (rect_planes),
-    .mesh_base_i (mesh_base), .valid_base_i (valid_base),
+    .step_log2_i (cfg_q[mcadsw_pkg::CFG_RECT_STEP +: 3]), .width_i (width_q), .height_i (height_q),
+    .raw_w_i (cfg_q[mcadsw_pkg::CFG_RAW_WIDTH +: CW]), .raw_h_i (cfg_q[mcadsw_pkg::CFG_RAW_HEIGHT +: CW]),
+    .tiled_i (tiled), .raw_stride_i (cfg_q[mcadsw_pkg::CFG_RAW_STRIDE +: AW]), .stride_i (rect_stride),
+    .raw_base_i (cfg_q[mcadsw_pkg::CFG_RAW +: 6*AW]), .base_i (in_base), .planes_i (rect_planes),
+    .mesh_base_i (cfg_q[mcadsw_pkg::CFG_MESH +: 2*AW]), .valid_base_i (cfg_q[mcadsw_pkg::CFG_VALID_MAP +: 2*AW]),
     .busy_o (rect_busy_unused), .done_o (rect_done), .err_o (rect_err),
     .mem_req_o (rect_req), .mem_gnt_i (rect_gnt), .mem_we_o (rect_we),
     .mem_be_o (rect_be), .mem_addr_o (rect_addr), .mem_len_o (rect_len),
@@ -494,7 +429,7 @@ module mcadsw_engine #(
 
   mcadsw_weight_gen u_weight_gen (
     .clk_i, .rst_ni,
-    .thr_i (thr_q),
+    .thr_i (cfg_q[mcadsw_pkg::CFG_THR +: NTHR*DCB]),
     .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused),
     .cfg_ofs_i (w_ofs), .cfg_first_i (w_first), .cfg_lo_i (w_lo), .cfg_rows_i (prep_rows),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
@@ -527,7 +462,7 @@ module mcadsw_engine #(
   mcadsw_cost_agg #(.P(PAR)) u_cost_agg (
     .clk_i, .rst_ni,
     .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
-    .job_disp_i (disp_q), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),
+    .job_disp_i (cfg_q[mcadsw_pkg::CFG_DISP +: NB]), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),
     .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d_unused),
     .vrd_slot_o (vrd_slot), .wv_i (wv),
     .lrd_en_o (lrd_en), .lrd_col_o (lrd_col), .rrd_en_o (rrd_en), .rrd_col_o (rrd_col),

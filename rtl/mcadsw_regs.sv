@@ -29,7 +29,6 @@ module mcadsw_regs #(
   parameter int CW   = 12,                          // width / height bits
   parameter int DMAX = mcadsw_pkg::DMAX,
   parameter int PAR  = mcadsw_pkg::PAR,
-  parameter int NB   = $clog2(DMAX + 1),            // width of D at the engine
   parameter int NTHR = mcadsw_pkg::WTHRESHOLDS,
   parameter int DCB  = mcadsw_pkg::COLOR_DIST_BITS,
   parameter int RAB  = $clog2(mcadsw_pkg::REG_SPAN) // register address bits
@@ -55,37 +54,9 @@ module mcadsw_regs #(
   output logic [31:0]         s_rdata_o,
   output logic [1:0]          s_rresp_o,
   output logic                irq_o,
-  // Engine configuration (mcadsw_engine's cfg_* ports) and start
-  output logic [AW-1:0]       cfg_base_ly_o,
-  output logic [AW-1:0]       cfg_base_lu_o,
-  output logic [AW-1:0]       cfg_base_lv_o,
-  output logic [AW-1:0]       cfg_base_ry_o,
-  output logic [AW-1:0]       cfg_base_ru_o,
-  output logic [AW-1:0]       cfg_base_rv_o,
-  output logic [AW-1:0]       cfg_base_out_o,
-  output logic [AW-1:0]       cfg_base_dl_o,
-  output logic [AW-1:0]       cfg_base_dr_o,
-  output logic [AW-1:0]       cfg_base_mask_o,
-  output logic [AW-1:0]       cfg_stride_o,
-  output logic [AW-1:0]       cfg_out_stride_o,
-  output logic [AW-1:0]       cfg_tile_stride_o, // 0: raster input planes
-  output logic [2:0]          cfg_mode_o,
-  output logic [7:0]          cfg_lr_t_o,
-  output logic [CW-1:0]       cfg_width_o,
-  output logic [CW-1:0]       cfg_height_o,
-  output logic [NB-1:0]       cfg_disp_o,      // 0 (error code 3) when DISP.D > DMAX
-  output logic [NTHR*DCB-1:0] cfg_thr_o,
-  // Rectification (register map 1.2)
-  output logic                cfg_rect_en_o,
-  output logic [2:0]          cfg_rect_step_o,
-  output logic [CW-1:0]       cfg_raw_width_o,
-  output logic [CW-1:0]       cfg_raw_height_o,
-  output logic [AW-1:0]       cfg_raw_stride_o,
-  output logic [6*AW-1:0]     cfg_raw_base_o,  // RAW_LY .. RAW_RV, plane p at AW p
-  output logic [2*AW-1:0]     cfg_mesh_o,      // MESH_L, MESH_R
-  output logic [CW-1:0]       cfg_mesh_nx_o,
-  output logic [CW-1:0]       cfg_mesh_ny_o,
-  output logic [2*AW-1:0]     cfg_valid_o,     // VALID_L, VALID_R
+  // The engine's configuration: one bundle, its fields at mcadsw_pkg::CFG_* (generated from
+  // sw_ref/include/mcadsw/regs.hpp kCfgFields; docs/memory_map.md); and start
+  output logic [mcadsw_pkg::CFG_BITS-1:0] cfg_o,
   output logic                start_o,
   output logic                abort_o,         // CTRL.ABORT written 1 (a pulse)
   // Engine status
@@ -157,7 +128,9 @@ module mcadsw_regs #(
       S_RAW0 + NRAW - 1 != mcadsw_pkg::REG_MESH_R / 4 || S_VAL0 + 1 != mcadsw_pkg::REG_VALID_R / 4 ||
       mcadsw_pkg::RECT_CTRL_STEP_LOG2_W != 3 || mcadsw_pkg::RAW_SIZE_WIDTH_W != CW ||
       mcadsw_pkg::RAW_SIZE_HEIGHT_W != CW || mcadsw_pkg::MESH_NODES_NX_W != CW ||
-      mcadsw_pkg::MESH_NODES_NY_W != CW || mcadsw_pkg::STATUS_ERROR_CODE_W != 8) begin : g_bad_param
+      mcadsw_pkg::MESH_NODES_NY_W != CW || mcadsw_pkg::STATUS_ERROR_CODE_W != 8 ||
+      mcadsw_pkg::CFG_WIDTH_W != CW || mcadsw_pkg::CFG_DISP_W != DW ||
+      mcadsw_pkg::CFG_THR_W != NTHR * DCB) begin : g_bad_param
     mcadsw_error_regs_geometry u_error ();
   end
 
@@ -417,35 +390,37 @@ module mcadsw_regs #(
   end
 
   // ---- Engine side ---------------------------------------------------------------------------
-  assign cfg_base_ly_o    = base_q[0*32 +: 32];
-  assign cfg_base_lu_o    = base_q[1*32 +: 32];
-  assign cfg_base_lv_o    = base_q[2*32 +: 32];
-  assign cfg_base_ry_o    = base_q[3*32 +: 32];
-  assign cfg_base_ru_o    = base_q[4*32 +: 32];
-  assign cfg_base_rv_o    = base_q[5*32 +: 32];
-  assign cfg_base_out_o   = base_q[6*32 +: 32];
-  assign cfg_base_dl_o    = base_q[7*32 +: 32];
-  assign cfg_base_dr_o    = base_q[8*32 +: 32];
-  assign cfg_base_mask_o  = base_q[9*32 +: 32];
-  assign cfg_stride_o     = stride_q;
-  assign cfg_out_stride_o = out_stride_q;
-  assign cfg_tile_stride_o = tile_q;
-  assign cfg_mode_o       = mode_q;
-  assign cfg_lr_t_o       = lr_t_q;
-  assign cfg_width_o      = width_q;
-  assign cfg_height_o     = height_q;
-  assign cfg_disp_o       = (32'(disp_q) > DMAX) ? '0 : NB'(disp_q);
-  assign cfg_thr_o        = thr_q;
-  assign cfg_rect_en_o    = rect_en_q;
-  assign cfg_rect_step_o  = rect_step_q;
-  assign cfg_raw_width_o  = raw_w_q;
-  assign cfg_raw_height_o = raw_h_q;
-  assign cfg_raw_stride_o = raw_q[0 +: 32];
-  assign cfg_raw_base_o   = raw_q[32 +: 6*32];
-  assign cfg_mesh_o       = raw_q[7*32 +: 2*32];
-  assign cfg_mesh_nx_o    = nx_q;
-  assign cfg_mesh_ny_o    = ny_q;
-  assign cfg_valid_o      = valid_q;
+  // The bundle, field by field (DISP.D: 0 when above DMAX, so that the engine rejects the
+  // start with code 3).
+  assign cfg_o[mcadsw_pkg::CFG_BASE_LY +: 32]     = base_q[0*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_LU +: 32]     = base_q[1*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_LV +: 32]     = base_q[2*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_RY +: 32]     = base_q[3*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_RU +: 32]     = base_q[4*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_RV +: 32]     = base_q[5*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_OUT +: 32]    = base_q[6*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_DL +: 32]     = base_q[7*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_DR +: 32]     = base_q[8*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_BASE_MASK +: 32]   = base_q[9*32 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_STRIDE +: 32]      = stride_q;
+  assign cfg_o[mcadsw_pkg::CFG_OUT_STRIDE +: 32]  = out_stride_q;
+  assign cfg_o[mcadsw_pkg::CFG_TILE_STRIDE +: 32] = tile_q;
+  assign cfg_o[mcadsw_pkg::CFG_MODE +: 3]         = mode_q;
+  assign cfg_o[mcadsw_pkg::CFG_LR_T +: 8]         = lr_t_q;
+  assign cfg_o[mcadsw_pkg::CFG_WIDTH +: CW]       = width_q;
+  assign cfg_o[mcadsw_pkg::CFG_HEIGHT +: CW]      = height_q;
+  assign cfg_o[mcadsw_pkg::CFG_DISP +: DW]        = (32'(disp_q) > DMAX) ? '0 : disp_q;
+  assign cfg_o[mcadsw_pkg::CFG_THR +: NTHR*DCB]   = thr_q;
+  assign cfg_o[mcadsw_pkg::CFG_RECT_EN]           = rect_en_q;
+  assign cfg_o[mcadsw_pkg::CFG_RECT_STEP +: 3]    = rect_step_q;
+  assign cfg_o[mcadsw_pkg::CFG_RAW_WIDTH +: CW]   = raw_w_q;
+  assign cfg_o[mcadsw_pkg::CFG_RAW_HEIGHT +: CW]  = raw_h_q;
+  assign cfg_o[mcadsw_pkg::CFG_RAW_STRIDE +: 32]  = raw_q[0 +: 32];
+  assign cfg_o[mcadsw_pkg::CFG_RAW +: 6*32]       = raw_q[32 +: 6*32];
+  assign cfg_o[mcadsw_pkg::CFG_MESH +: 2*32]      = raw_q[7*32 +: 2*32];
+  assign cfg_o[mcadsw_pkg::CFG_MESH_NX +: CW]     = nx_q;
+  assign cfg_o[mcadsw_pkg::CFG_MESH_NY +: CW]     = ny_q;
+  assign cfg_o[mcadsw_pkg::CFG_VALID_MAP +: 2*32] = valid_q;
   assign start_o          = start_q;
   assign abort_o          = abort_q;
 

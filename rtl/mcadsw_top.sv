@@ -74,41 +74,20 @@ module mcadsw_top #(
   localparam int NTHR = mcadsw_pkg::WTHRESHOLDS;
   localparam int DCB  = mcadsw_pkg::COLOR_DIST_BITS;
 
-  logic [AW-1:0]       base_ly, base_lu, base_lv, base_ry, base_ru, base_rv, base_out, base_dl,
-                       base_dr, base_mask, stride, out_stride, tile_stride;
-  logic [2:0]          mode;
-  logic [7:0]          lr_t;
-  logic [CW-1:0]       width, height;
-  logic [NB-1:0]       disp;
-  logic [NTHR*DCB-1:0] thr;
+  logic [mcadsw_pkg::CFG_BITS-1:0] cfg;   // the configuration bundle (mcadsw_pkg::CFG_*)
   logic                start, abort, busy, done, error;
   logic [7:0]          error_code;
   logic                eng_busy, eng_done, eng_error;
   logic [7:0]          eng_code;
-  logic                rect_en;
-  logic [2:0]          rect_step;
-  logic [CW-1:0]       raw_w, raw_h, mesh_nx, mesh_ny;
-  logic [AW-1:0]       raw_stride;
-  logic [6*AW-1:0]     raw_base;
-  logic [2*AW-1:0]     mesh, valid;
   logic [31:0]         cnt_cycles, cnt_words_read, cnt_words_written, cnt_stall;
 
-  mcadsw_regs #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NB(NB), .NTHR(NTHR), .DCB(DCB),
+  mcadsw_regs #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NTHR(NTHR), .DCB(DCB),
                 .RAB(RAB)) u_regs (
     .clk_i, .rst_ni,
     .s_awvalid_i, .s_awready_o, .s_awaddr_i, .s_wvalid_i, .s_wready_o, .s_wdata_i, .s_wstrb_i,
     .s_bvalid_o, .s_bready_i, .s_bresp_o, .s_arvalid_i, .s_arready_o, .s_araddr_i,
     .s_rvalid_o, .s_rready_i, .s_rdata_o, .s_rresp_o, .irq_o,
-    .cfg_base_ly_o (base_ly), .cfg_base_lu_o (base_lu), .cfg_base_lv_o (base_lv),
-    .cfg_base_ry_o (base_ry), .cfg_base_ru_o (base_ru), .cfg_base_rv_o (base_rv),
-    .cfg_base_out_o (base_out), .cfg_base_dl_o (base_dl), .cfg_base_dr_o (base_dr),
-    .cfg_base_mask_o (base_mask), .cfg_stride_o (stride), .cfg_out_stride_o (out_stride),
-    .cfg_tile_stride_o (tile_stride),
-    .cfg_mode_o (mode), .cfg_lr_t_o (lr_t), .cfg_width_o (width), .cfg_height_o (height),
-    .cfg_disp_o (disp), .cfg_thr_o (thr),
-    .cfg_rect_en_o (rect_en), .cfg_rect_step_o (rect_step), .cfg_raw_width_o (raw_w),
-    .cfg_raw_height_o (raw_h), .cfg_raw_stride_o (raw_stride), .cfg_raw_base_o (raw_base),
-    .cfg_mesh_o (mesh), .cfg_mesh_nx_o (mesh_nx), .cfg_mesh_ny_o (mesh_ny), .cfg_valid_o (valid),
+    .cfg_o (cfg),
     .start_o (start), .abort_o (abort),
     .busy_i (busy), .done_i (done), .error_i (error), .error_code_i (error_code),
     .cnt_cycles_i (cnt_cycles), .cnt_words_read_i (cnt_words_read),
@@ -149,21 +128,7 @@ module mcadsw_top #(
 
   mcadsw_engine #(.AW(AW), .CW(CW), .DMAX(DMAX), .PAR(PAR), .NB(NB), .NTHR(NTHR), .DCB(DCB)) u_engine (
     .clk_i, .rst_ni (eng_rst_n),
-    .cfg_base_ly_i (base_ly), .cfg_base_lu_i (base_lu), .cfg_base_lv_i (base_lv),
-    .cfg_base_ry_i (base_ry), .cfg_base_ru_i (base_ru), .cfg_base_rv_i (base_rv),
-    .cfg_base_out_i (base_out), .cfg_base_dl_i (base_dl), .cfg_base_dr_i (base_dr),
-    .cfg_base_mask_i (base_mask), .cfg_stride_i (stride), .cfg_out_stride_i (out_stride),
-    .cfg_tile_stride_i (tile_stride),
-    .cfg_mode_i (mode), .cfg_lr_t_i (lr_t), .cfg_width_i (width), .cfg_height_i (height),
-    .cfg_disp_i (disp), .cfg_thr_i (thr),
-    .cfg_rect_en_i (rect_en), .cfg_rect_step_i (rect_step), .cfg_raw_width_i (raw_w),
-    .cfg_raw_height_i (raw_h), .cfg_raw_stride_i (raw_stride),
-    .cfg_raw_ly_i (raw_base[0*AW +: AW]), .cfg_raw_lu_i (raw_base[1*AW +: AW]),
-    .cfg_raw_lv_i (raw_base[2*AW +: AW]), .cfg_raw_ry_i (raw_base[3*AW +: AW]),
-    .cfg_raw_ru_i (raw_base[4*AW +: AW]), .cfg_raw_rv_i (raw_base[5*AW +: AW]),
-    .cfg_mesh_l_i (mesh[0 +: AW]), .cfg_mesh_r_i (mesh[AW +: AW]),
-    .cfg_mesh_nx_i (mesh_nx), .cfg_mesh_ny_i (mesh_ny),
-    .cfg_valid_l_i (valid[0 +: AW]), .cfg_valid_r_i (valid[AW +: AW]),
+    .cfg_i (cfg),
     .start_i (start),
     .busy_o (eng_busy), .done_o (eng_done), .error_o (eng_error), .error_code_o (eng_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_words_read),

@@ -16,6 +16,7 @@
 
 #include "Vmcadsw_engine.h"
 #include "bench_dut.hpp"
+#include "cfg_bundle.hpp"
 #include "mcadsw/regs.hpp"
 #include "vbits.hpp"
 
@@ -40,7 +41,7 @@ class PortBus : public driver::RegisterBus {
       case regs::kWordsRead: return t_.cnt_words_read_o;
       case regs::kWordsWritten: return t_.cnt_words_written_o;
       case regs::kStalls: return t_.cnt_stall_o;
-      case regs::kCtrl: return uint32_t(t_.cfg_mode_i) << regs::kCtrlModeLsb;  // the pulse bits read 0
+      case regs::kCtrl: return uint32_t(get_cfg(t_.cfg_i, regs::Cfg::kMode)) << regs::kCtrlModeLsb;  // the pulse bits read 0
       default: {
         const auto it = written_.find(offset);
         return it == written_.end() ? 0 : it->second;
@@ -49,58 +50,57 @@ class PortBus : public driver::RegisterBus {
   }
 
   void write(uint32_t offset, uint32_t v) override {
+    using regs::Cfg;
     written_[offset] = v;
     auto& t = t_;
     if (offset >= regs::kThr0 && offset < regs::kThr0 + 4 * kWeightThresholds && offset % 4 == 0) {
-      set_bits(t.cfg_thr_i, int(offset - regs::kThr0) / 4 * kColorDistBits, kColorDistBits, v);
+      set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kThr) + int(offset - regs::kThr0) / 4 * regs::kThrBits,
+               regs::kThrBits, v);
+      return;
+    }
+    if (offset >= regs::kBaseLy && offset <= regs::kBaseMask && offset % 4 == 0) {  // BASE_LY .. BASE_MASK
+      set_cfg(t.cfg_i, Cfg(int(Cfg::kBaseLy) + int(offset - regs::kBaseLy) / 4), v);
+      return;
+    }
+    if (offset >= regs::kRawLy && offset < regs::kRawLy + 24 && offset % 4 == 0) {  // RAW_LY .. RAW_RV
+      set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kRaw) + int(offset - regs::kRawLy) / 4 * 32, 32, v);
       return;
     }
     switch (offset) {
-      case regs::kBaseLy: t.cfg_base_ly_i = v; break;
-      case regs::kBaseLu: t.cfg_base_lu_i = v; break;
-      case regs::kBaseLv: t.cfg_base_lv_i = v; break;
-      case regs::kBaseRy: t.cfg_base_ry_i = v; break;
-      case regs::kBaseRu: t.cfg_base_ru_i = v; break;
-      case regs::kBaseRv: t.cfg_base_rv_i = v; break;
-      case regs::kBaseOut: t.cfg_base_out_i = v; break;
-      case regs::kBaseDl: t.cfg_base_dl_i = v; break;
-      case regs::kBaseDr: t.cfg_base_dr_i = v; break;
-      case regs::kBaseMask: t.cfg_base_mask_i = v; break;
-      case regs::kStride: t.cfg_stride_i = v; break;
-      case regs::kOutStride: t.cfg_out_stride_i = v; break;
-      case regs::kTileStride: t.cfg_tile_stride_i = v; break;
+      case regs::kStride: set_cfg(t.cfg_i, Cfg::kStride, v); break;
+      case regs::kOutStride: set_cfg(t.cfg_i, Cfg::kOutStride, v); break;
+      case regs::kTileStride: set_cfg(t.cfg_i, Cfg::kTileStride, v); break;
       case regs::kSize:
-        t.cfg_width_i = field(v, regs::kSizeWidthLsb, regs::kSizeBits);
-        t.cfg_height_i = field(v, regs::kSizeHeightLsb, regs::kSizeBits);
+        set_cfg(t.cfg_i, Cfg::kWidth, field(v, regs::kSizeWidthLsb, regs::kSizeBits));
+        set_cfg(t.cfg_i, Cfg::kHeight, field(v, regs::kSizeHeightLsb, regs::kSizeBits));
         break;
-      case regs::kDisp: t.cfg_disp_i = v & ((2u << kDispBits) - 1); break;  // NB = DISP_BITS + 1 bits
-      case regs::kLrT: t.cfg_lr_t_i = field(v, 0, regs::kLrTBits); break;
+      // DISP.D as the register block hands it on: 0 above DMAX (the engine rejects it, code 3)
+      case regs::kDisp: {
+        const uint32_t d = field(v, 0, regs::kDispBitsReg);
+        set_cfg(t.cfg_i, Cfg::kDisp, d > uint32_t(kDmax) ? 0 : d);
+        break;
+      }
+      case regs::kLrT: set_cfg(t.cfg_i, Cfg::kLrT, field(v, 0, regs::kLrTBits)); break;
       // Rectification (register map 1.2)
       case regs::kRectCtrl:
-        t.cfg_rect_en_i = field(v, regs::kRectEnableLsb, 1);
-        t.cfg_rect_step_i = field(v, regs::kRectStepLsb, regs::kRectStepWidth);
+        set_cfg(t.cfg_i, Cfg::kRectEn, field(v, regs::kRectEnableLsb, 1));
+        set_cfg(t.cfg_i, Cfg::kRectStep, field(v, regs::kRectStepLsb, regs::kRectStepWidth));
         break;
       case regs::kRawSize:
-        t.cfg_raw_width_i = field(v, regs::kSizeWidthLsb, regs::kSizeBits);
-        t.cfg_raw_height_i = field(v, regs::kSizeHeightLsb, regs::kSizeBits);
+        set_cfg(t.cfg_i, Cfg::kRawWidth, field(v, regs::kSizeWidthLsb, regs::kSizeBits));
+        set_cfg(t.cfg_i, Cfg::kRawHeight, field(v, regs::kSizeHeightLsb, regs::kSizeBits));
         break;
-      case regs::kRawStride: t.cfg_raw_stride_i = v; break;
-      case regs::kRawLy + 0: t.cfg_raw_ly_i = v; break;
-      case regs::kRawLy + 4: t.cfg_raw_lu_i = v; break;
-      case regs::kRawLy + 8: t.cfg_raw_lv_i = v; break;
-      case regs::kRawLy + 12: t.cfg_raw_ry_i = v; break;
-      case regs::kRawLy + 16: t.cfg_raw_ru_i = v; break;
-      case regs::kRawLy + 20: t.cfg_raw_rv_i = v; break;
-      case regs::kMeshL: t.cfg_mesh_l_i = v; break;
-      case regs::kMeshR: t.cfg_mesh_r_i = v; break;
+      case regs::kRawStride: set_cfg(t.cfg_i, Cfg::kRawStride, v); break;
+      case regs::kMeshL: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kMesh), 32, v); break;
+      case regs::kMeshR: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kMesh) + 32, 32, v); break;
       case regs::kMeshNodes:
-        t.cfg_mesh_nx_i = field(v, regs::kMeshNxLsb, regs::kSizeBits);
-        t.cfg_mesh_ny_i = field(v, regs::kMeshNyLsb, regs::kSizeBits);
+        set_cfg(t.cfg_i, Cfg::kMeshNx, field(v, regs::kMeshNxLsb, regs::kSizeBits));
+        set_cfg(t.cfg_i, Cfg::kMeshNy, field(v, regs::kMeshNyLsb, regs::kSizeBits));
         break;
-      case regs::kValidL: t.cfg_valid_l_i = v; break;
-      case regs::kValidR: t.cfg_valid_r_i = v; break;
+      case regs::kValidL: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kValid), 32, v); break;
+      case regs::kValidR: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kValid) + 32, 32, v); break;
       case regs::kCtrl:
-        t.cfg_mode_i = field(v, regs::kCtrlModeLsb, regs::kCtrlModeWidth);
+        set_cfg(t.cfg_i, Cfg::kMode, field(v, regs::kCtrlModeLsb, regs::kCtrlModeWidth));
         if (v >> regs::kCtrlAbortLsb & 1)
           throw std::runtime_error("abort: the engine core has no register block (no CTRL.ABORT)");
         if (v >> regs::kCtrlStartLsb & 1) {  // a start pulse of one cycle
@@ -154,42 +154,7 @@ class PortRecorder {
   void record(const Model& t) {
     scalar("rst_ni", 1, true, t.rst_ni);
     scalar("start_i", 1, true, t.start_i);
-    scalar("cfg_base_ly_i", 32, true, t.cfg_base_ly_i);
-    scalar("cfg_base_lu_i", 32, true, t.cfg_base_lu_i);
-    scalar("cfg_base_lv_i", 32, true, t.cfg_base_lv_i);
-    scalar("cfg_base_ry_i", 32, true, t.cfg_base_ry_i);
-    scalar("cfg_base_ru_i", 32, true, t.cfg_base_ru_i);
-    scalar("cfg_base_rv_i", 32, true, t.cfg_base_rv_i);
-    scalar("cfg_base_out_i", 32, true, t.cfg_base_out_i);
-    scalar("cfg_base_dl_i", 32, true, t.cfg_base_dl_i);
-    scalar("cfg_base_dr_i", 32, true, t.cfg_base_dr_i);
-    scalar("cfg_base_mask_i", 32, true, t.cfg_base_mask_i);
-    scalar("cfg_stride_i", 32, true, t.cfg_stride_i);
-    scalar("cfg_out_stride_i", 32, true, t.cfg_out_stride_i);
-    scalar("cfg_tile_stride_i", 32, true, t.cfg_tile_stride_i);
-    scalar("cfg_mode_i", 3, true, t.cfg_mode_i);
-    scalar("cfg_lr_t_i", regs::kLrTBits, true, t.cfg_lr_t_i);
-    scalar("cfg_width_i", regs::kSizeBits, true, t.cfg_width_i);
-    scalar("cfg_height_i", regs::kSizeBits, true, t.cfg_height_i);
-    scalar("cfg_disp_i", kDispBits + 1, true, t.cfg_disp_i);
-    wide("cfg_thr_i", kWeightThresholds * kColorDistBits, true, t.cfg_thr_i);
-    scalar("cfg_rect_en_i", 1, true, t.cfg_rect_en_i);
-    scalar("cfg_rect_step_i", regs::kRectStepWidth, true, t.cfg_rect_step_i);
-    scalar("cfg_raw_width_i", regs::kSizeBits, true, t.cfg_raw_width_i);
-    scalar("cfg_raw_height_i", regs::kSizeBits, true, t.cfg_raw_height_i);
-    scalar("cfg_raw_stride_i", 32, true, t.cfg_raw_stride_i);
-    scalar("cfg_raw_ly_i", 32, true, t.cfg_raw_ly_i);
-    scalar("cfg_raw_lu_i", 32, true, t.cfg_raw_lu_i);
-    scalar("cfg_raw_lv_i", 32, true, t.cfg_raw_lv_i);
-    scalar("cfg_raw_ry_i", 32, true, t.cfg_raw_ry_i);
-    scalar("cfg_raw_ru_i", 32, true, t.cfg_raw_ru_i);
-    scalar("cfg_raw_rv_i", 32, true, t.cfg_raw_rv_i);
-    scalar("cfg_mesh_l_i", 32, true, t.cfg_mesh_l_i);
-    scalar("cfg_mesh_r_i", 32, true, t.cfg_mesh_r_i);
-    scalar("cfg_mesh_nx_i", regs::kSizeBits, true, t.cfg_mesh_nx_i);
-    scalar("cfg_mesh_ny_i", regs::kSizeBits, true, t.cfg_mesh_ny_i);
-    scalar("cfg_valid_l_i", 32, true, t.cfg_valid_l_i);
-    scalar("cfg_valid_r_i", 32, true, t.cfg_valid_r_i);
+    wide("cfg_i", regs::kCfgBits, true, t.cfg_i);
     scalar("mem_gnt_i", 1, true, t.mem_gnt_i);
     scalar("mem_rvalid_i", 1, true, t.mem_rvalid_i);
     scalar("mem_rdata_i", 32, true, t.mem_rdata_i);

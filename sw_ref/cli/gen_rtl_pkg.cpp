@@ -72,6 +72,14 @@ void print_regs_pkg() {
     std::printf("  localparam int %-22s = %d;\n", (n + "_LSB").c_str(), f.lsb);
     std::printf("  localparam int %-22s = %d;\n", (n + "_W").c_str(), f.width);
   }
+  std::printf("  // The engine's configuration bundle (regs.hpp kCfgFields): mcadsw_regs's cfg_o,\n");
+  std::printf("  // mcadsw_engine's cfg_i; field F at bits CFG_F +: CFG_F_W\n");
+  for (const CfgField& f : kCfgFields) {
+    const std::string n = std::string("CFG_") + f.name;
+    std::printf("  localparam int %-22s = %d;  // %s\n", n.c_str(), cfg_lsb(f.id), f.doc);
+    std::printf("  localparam int %-22s = %d;\n", (n + "_W").c_str(), f.width);
+  }
+  std::printf("  localparam int CFG_BITS = %d;\n", kCfgBits);
 }
 
 // The licence header of every generated file, in the file's comment syntax (REUSE:

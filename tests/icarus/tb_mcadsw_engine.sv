@@ -57,24 +57,41 @@ module tb_mcadsw_engine;
   logic [1:0]  arburst, awburst;
   logic [3:0]  wstrb;
 
+  // The configuration bundle (mcadsw_pkg::CFG_*), as mcadsw_regs hands it on.
+  logic [mcadsw_pkg::CFG_BITS-1:0] cfg;
+  assign cfg[mcadsw_pkg::CFG_BASE_LY +: 32]     = cfg_base_ly;
+  assign cfg[mcadsw_pkg::CFG_BASE_LU +: 32]     = cfg_base_lu;
+  assign cfg[mcadsw_pkg::CFG_BASE_LV +: 32]     = cfg_base_lv;
+  assign cfg[mcadsw_pkg::CFG_BASE_RY +: 32]     = cfg_base_ry;
+  assign cfg[mcadsw_pkg::CFG_BASE_RU +: 32]     = cfg_base_ru;
+  assign cfg[mcadsw_pkg::CFG_BASE_RV +: 32]     = cfg_base_rv;
+  assign cfg[mcadsw_pkg::CFG_BASE_OUT +: 32]    = cfg_base_out;
+  assign cfg[mcadsw_pkg::CFG_BASE_DL +: 32]     = cfg_base_dl;
+  assign cfg[mcadsw_pkg::CFG_BASE_DR +: 32]     = cfg_base_dr;
+  assign cfg[mcadsw_pkg::CFG_BASE_MASK +: 32]   = cfg_base_mask;
+  assign cfg[mcadsw_pkg::CFG_STRIDE +: 32]      = cfg_stride;
+  assign cfg[mcadsw_pkg::CFG_OUT_STRIDE +: 32]  = cfg_out_stride;
+  assign cfg[mcadsw_pkg::CFG_TILE_STRIDE +: 32] = cfg_tile_stride;
+  assign cfg[mcadsw_pkg::CFG_MODE +: 3]         = cfg_mode;
+  assign cfg[mcadsw_pkg::CFG_LR_T +: 8]         = cfg_lr_t;
+  assign cfg[mcadsw_pkg::CFG_WIDTH +: 12]       = cfg_width;
+  assign cfg[mcadsw_pkg::CFG_HEIGHT +: 12]      = cfg_height;
+  assign cfg[mcadsw_pkg::CFG_DISP +: 8]         = 8'(cfg_disp);
+  assign cfg[mcadsw_pkg::CFG_THR +: NTHR*DCB]   = cfg_thr;
+  assign cfg[mcadsw_pkg::CFG_RECT_EN]           = cfg_rect_en;
+  assign cfg[mcadsw_pkg::CFG_RECT_STEP +: 3]    = cfg_rect_step;
+  assign cfg[mcadsw_pkg::CFG_RAW_WIDTH +: 12]   = cfg_raw_width;
+  assign cfg[mcadsw_pkg::CFG_RAW_HEIGHT +: 12]  = cfg_raw_height;
+  assign cfg[mcadsw_pkg::CFG_RAW_STRIDE +: 32]  = cfg_raw_stride;
+  assign cfg[mcadsw_pkg::CFG_RAW +: 6*32]       = {cfg_raw_rv, cfg_raw_ru, cfg_raw_ry, cfg_raw_lv, cfg_raw_lu, cfg_raw_ly};
+  assign cfg[mcadsw_pkg::CFG_MESH +: 2*32]      = {cfg_mesh_r, cfg_mesh_l};
+  assign cfg[mcadsw_pkg::CFG_MESH_NX +: 12]     = cfg_mesh_nx;
+  assign cfg[mcadsw_pkg::CFG_MESH_NY +: 12]     = cfg_mesh_ny;
+  assign cfg[mcadsw_pkg::CFG_VALID_MAP +: 2*32] = {cfg_valid_r, cfg_valid_l};
+
   mcadsw_engine dut (
     .clk_i (clk), .rst_ni (rst_n),
-    .cfg_base_ly_i (cfg_base_ly), .cfg_base_lu_i (cfg_base_lu), .cfg_base_lv_i (cfg_base_lv),
-    .cfg_base_ry_i (cfg_base_ry), .cfg_base_out_i (cfg_base_out), .cfg_stride_i (cfg_stride),
-    .cfg_out_stride_i (cfg_out_stride), .cfg_tile_stride_i (cfg_tile_stride), .cfg_mode_i (cfg_mode),
-    .cfg_base_ru_i (cfg_base_ru), .cfg_base_rv_i (cfg_base_rv),
-    .cfg_base_dl_i (cfg_base_dl), .cfg_base_dr_i (cfg_base_dr), .cfg_base_mask_i (cfg_base_mask),
-    .cfg_lr_t_i (cfg_lr_t),
-    .cfg_width_i (cfg_width), .cfg_height_i (cfg_height), .cfg_disp_i (cfg_disp),
-    .cfg_thr_i (cfg_thr),
-    // The rectifier (RECT_CTRL and the registers after it).
-    .cfg_rect_en_i (cfg_rect_en), .cfg_rect_step_i (cfg_rect_step),
-    .cfg_raw_width_i (cfg_raw_width), .cfg_raw_height_i (cfg_raw_height),
-    .cfg_raw_stride_i (cfg_raw_stride), .cfg_raw_ly_i (cfg_raw_ly), .cfg_raw_lu_i (cfg_raw_lu),
-    .cfg_raw_lv_i (cfg_raw_lv), .cfg_raw_ry_i (cfg_raw_ry), .cfg_raw_ru_i (cfg_raw_ru),
-    .cfg_raw_rv_i (cfg_raw_rv), .cfg_mesh_l_i (cfg_mesh_l), .cfg_mesh_r_i (cfg_mesh_r),
-    .cfg_mesh_nx_i (cfg_mesh_nx), .cfg_mesh_ny_i (cfg_mesh_ny),
-    .cfg_valid_l_i (cfg_valid_l), .cfg_valid_r_i (cfg_valid_r),
+    .cfg_i (cfg),
     .start_i (start),
     .busy_o (busy), .done_o (done), .error_o (error), .error_code_o (error_code),
     .cnt_cycles_o (cnt_cycles), .cnt_words_read_o (cnt_rd), .cnt_words_written_o (cnt_wr),

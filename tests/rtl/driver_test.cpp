@@ -16,6 +16,7 @@
 
 #include "Vmcadsw_regs.h"
 #include "axil_driver.hpp"
+#include "cfg_bundle.hpp"
 #include "mcadsw/driver.hpp"
 #include "mcadsw/params.hpp"
 #include "mcadsw/regs.hpp"
@@ -91,26 +92,28 @@ TEST(Driver, ConfigureReachesEveryEnginePort) {
     const driver::FrameConfig c = random_config(rng);
     e.configure(c);
     auto& t = b.t;
-    EXPECT_EQ(t.cfg_base_ly_o, c.base_ly);
-    EXPECT_EQ(t.cfg_base_lu_o, c.base_lu);
-    EXPECT_EQ(t.cfg_base_lv_o, c.base_lv);
-    EXPECT_EQ(t.cfg_base_ry_o, c.base_ry);
-    EXPECT_EQ(t.cfg_base_ru_o, c.base_ru);
-    EXPECT_EQ(t.cfg_base_rv_o, c.base_rv);
-    EXPECT_EQ(t.cfg_base_out_o, c.base_out);
-    EXPECT_EQ(t.cfg_base_dl_o, c.base_dl);
-    EXPECT_EQ(t.cfg_base_dr_o, c.base_dr);
-    EXPECT_EQ(t.cfg_base_mask_o, c.base_mask);
-    EXPECT_EQ(t.cfg_stride_o, c.stride);
-    EXPECT_EQ(t.cfg_out_stride_o, c.out_stride);
-    EXPECT_EQ(t.cfg_tile_stride_o, c.tile_stride);
-    EXPECT_EQ(int(t.cfg_width_o), c.width % 4096);
-    EXPECT_EQ(int(t.cfg_height_o), c.height % 4096);
-    EXPECT_EQ(int(t.cfg_disp_o), c.disparities);
-    EXPECT_EQ(int(t.cfg_lr_t_o), c.lr_tolerance);
-    EXPECT_EQ(int(t.cfg_mode_o), int(c.subpixel) | int(c.lr) << 1 | int(c.right) << 2);
+    using regs::Cfg;
+    const auto cfg = [&t](Cfg f) { return sim::get_cfg(t.cfg_o, f); };
+    EXPECT_EQ(cfg(Cfg::kBaseLy), c.base_ly);
+    EXPECT_EQ(cfg(Cfg::kBaseLu), c.base_lu);
+    EXPECT_EQ(cfg(Cfg::kBaseLv), c.base_lv);
+    EXPECT_EQ(cfg(Cfg::kBaseRy), c.base_ry);
+    EXPECT_EQ(cfg(Cfg::kBaseRu), c.base_ru);
+    EXPECT_EQ(cfg(Cfg::kBaseRv), c.base_rv);
+    EXPECT_EQ(cfg(Cfg::kBaseOut), c.base_out);
+    EXPECT_EQ(cfg(Cfg::kBaseDl), c.base_dl);
+    EXPECT_EQ(cfg(Cfg::kBaseDr), c.base_dr);
+    EXPECT_EQ(cfg(Cfg::kBaseMask), c.base_mask);
+    EXPECT_EQ(cfg(Cfg::kStride), c.stride);
+    EXPECT_EQ(cfg(Cfg::kOutStride), c.out_stride);
+    EXPECT_EQ(cfg(Cfg::kTileStride), c.tile_stride);
+    EXPECT_EQ(int(cfg(Cfg::kWidth)), c.width % 4096);
+    EXPECT_EQ(int(cfg(Cfg::kHeight)), c.height % 4096);
+    EXPECT_EQ(int(cfg(Cfg::kDisp)), c.disparities);
+    EXPECT_EQ(int(cfg(Cfg::kLrT)), c.lr_tolerance);
+    EXPECT_EQ(int(cfg(Cfg::kMode)), int(c.subpixel) | int(c.lr) << 1 | int(c.right) << 2);
     for (int i = 0; i < kWeightThresholds; ++i)
-      EXPECT_EQ(uint32_t(sim::get_bits(t.cfg_thr_o, i * regs::kThrBits, regs::kThrBits)),
+      EXPECT_EQ(uint32_t(sim::get_bits(t.cfg_o, regs::cfg_lsb(Cfg::kThr) + i * regs::kThrBits, regs::kThrBits)),
                 c.thresholds[size_t(i)]) << "threshold " << i;
     EXPECT_EQ(b.starts, 0) << "configure() must not start a frame";
   }
@@ -128,12 +131,12 @@ TEST(Driver, StartAbortStatusCountersIdentity) {
   e.start();
   b.axi.idle(2);
   EXPECT_EQ(b.starts, 1);
-  EXPECT_EQ(int(b.t.cfg_mode_o), 3) << "start() keeps the mode";
+  EXPECT_EQ(int(sim::get_cfg(b.t.cfg_o, regs::Cfg::kMode)), 3) << "start() keeps the mode";
   e.abort();
   b.axi.idle(2);
   EXPECT_EQ(b.aborts, 1);
   EXPECT_EQ(b.starts, 1);
-  EXPECT_EQ(int(b.t.cfg_mode_o), 3) << "abort() keeps the mode";
+  EXPECT_EQ(int(sim::get_cfg(b.t.cfg_o, regs::Cfg::kMode)), 3) << "abort() keeps the mode";
 
   // The engine's status and counters as the driver decodes them.
   b.t.busy_i = 1;

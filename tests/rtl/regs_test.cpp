@@ -18,6 +18,7 @@
 
 #include "Vmcadsw_regs.h"
 #include "axil_driver.hpp"
+#include "cfg_bundle.hpp"
 #include "mcadsw/regs.hpp"
 #include "regs_expect.hpp"
 #include "vbits.hpp"
@@ -51,30 +52,26 @@ class Bench {
     axi.idle(2);
   }
 
-  // The engine-side value of a read-write register, rebuilt from the cfg_* ports.
+  // A field of the configuration bundle (cfg_o).
+  uint32_t cfg(regs::Cfg f) const { return uint32_t(sim::get_cfg(t.cfg_o, f)); }
+
+  // The engine-side value of a read-write register, rebuilt from the configuration bundle.
   uint32_t port_value(uint32_t off) {
     switch (off) {
-      case kBaseLy: return t.cfg_base_ly_o;
-      case kBaseLu: return t.cfg_base_lu_o;
-      case kBaseLv: return t.cfg_base_lv_o;
-      case kBaseRy: return t.cfg_base_ry_o;
-      case kBaseRu: return t.cfg_base_ru_o;
-      case kBaseRv: return t.cfg_base_rv_o;
-      case kBaseOut: return t.cfg_base_out_o;
-      case kBaseDl: return t.cfg_base_dl_o;
-      case kBaseDr: return t.cfg_base_dr_o;
-      case kBaseMask: return t.cfg_base_mask_o;
-      case kStride: return t.cfg_stride_o;
-      case kOutStride: return t.cfg_out_stride_o;
-      case kTileStride: return t.cfg_tile_stride_o;
-      case kSize: return (uint32_t(t.cfg_width_o) << kSizeWidthLsb) | (uint32_t(t.cfg_height_o) << kSizeHeightLsb);
-      case kDisp: return t.cfg_disp_o;  // D <= DMAX here
-      case kLrT: return t.cfg_lr_t_o;
-      case kCtrl: return uint32_t(t.cfg_mode_o) << kCtrlModeLsb;
+      case kStride: return cfg(regs::Cfg::kStride);
+      case kOutStride: return cfg(regs::Cfg::kOutStride);
+      case kTileStride: return cfg(regs::Cfg::kTileStride);
+      case kSize: return (cfg(regs::Cfg::kWidth) << kSizeWidthLsb) | (cfg(regs::Cfg::kHeight) << kSizeHeightLsb);
+      case kDisp: return cfg(regs::Cfg::kDisp);  // D <= DMAX here
+      case kLrT: return cfg(regs::Cfg::kLrT);
+      case kCtrl: return cfg(regs::Cfg::kMode) << kCtrlModeLsb;
       case kIrqEnable: return ~0u;      // no port: not compared
       default:
+        if (off >= kBaseLy && off <= kBaseMask)  // BASE_LY .. BASE_MASK: Cfg kBaseLy .. kBaseMask
+          return cfg(regs::Cfg(int(regs::Cfg::kBaseLy) + int(off - kBaseLy) / 4));
         if (off >= kThr0 && off < kThr0 + 4 * kWeightThresholds)
-          return uint32_t(sim::get_bits(t.cfg_thr_o, int(off - kThr0) / 4 * kThrBits, kThrBits));
+          return uint32_t(sim::get_bits(t.cfg_o, regs::cfg_lsb(regs::Cfg::kThr) + int(off - kThr0) / 4 * kThrBits,
+                                        kThrBits));
         return ~0u;
     }
   }
@@ -84,7 +81,7 @@ class Bench {
   std::function<void()> on_sample;  // a test's hook, at the sample point of every cycle
   int starts = 0;             // cycles with start_o
   int aborts = 0;             // cycles with abort_o
-  int mode_at_start = -1;     // cfg_mode_o in the last of them
+  int mode_at_start = -1;     // the bundle's MODE in the last of them
 
  private:
   void cycle(const std::function<void()>& at_sample) {
@@ -95,7 +92,7 @@ class Bench {
     aborts += t.abort_o;
     if (t.start_o) {
       ++starts;
-      mode_at_start = t.cfg_mode_o;
+      mode_at_start = int(cfg(regs::Cfg::kMode));
     }
     t.clk_i = 1;
     t.eval();
@@ -295,12 +292,12 @@ TEST(RegsRace, DoneRisingInTheCycleOfItsClearWins) {
 TEST_P(Regs, DisparitiesAboveDmaxReachTheEngineAsZero) {
   Bench b(6, GetParam());
   ASSERT_EQ(b.axi.write(kDisp, uint32_t(kDmax)), kOkay);
-  EXPECT_EQ(int(b.t.cfg_disp_o), kDmax);
+  EXPECT_EQ(int(b.cfg(regs::Cfg::kDisp)), kDmax);
   ASSERT_EQ(b.axi.write(kDisp, uint32_t(kDmax) + 1), kOkay);
-  EXPECT_EQ(int(b.t.cfg_disp_o), 0) << "the engine then rejects the start with code 3";
+  EXPECT_EQ(int(b.cfg(regs::Cfg::kDisp)), 0) << "the engine then rejects the start with code 3";
   EXPECT_EQ(b.axi.read(kDisp), uint32_t(kDmax) + 1) << "the register keeps what was written";
   ASSERT_EQ(b.axi.write(kDisp, 255), kOkay);
-  EXPECT_EQ(int(b.t.cfg_disp_o), 0);
+  EXPECT_EQ(int(b.cfg(regs::Cfg::kDisp)), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BackPressure, Regs, ::testing::Values(0.0, 0.5, 0.85),

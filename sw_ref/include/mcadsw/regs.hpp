@@ -281,6 +281,76 @@ inline constexpr Field kFields[] = {
     {"MESH_NODES", "NY", kMeshNyLsb, kSizeBits, Access::kRW, "nodes a column: ((H - 1) >> STEP_LOG2) + 2"},
 };
 
+// ---- The engine's configuration bundle ------------------------------------------------------
+// What the register block hands the engine core (mcadsw_regs's cfg_o, mcadsw_engine's cfg_i)
+// as one vector: the fields below in this order from bit 0, each width bits wide. gen_rtl_pkg
+// makes them the package's CFG_<NAME> (the field's lowest bit) and CFG_<NAME>_W, and
+// CFG_BITS (Icarus 11 takes no packed struct of a package at a port: docs/tool_notes.md 1); a
+// harness driving the engine core sets them with cfg_lsb(). A new configuration register is
+// a row here, its storage in mcadsw_regs, and its use in the block that reads it.
+enum class Cfg {
+  kBaseLy, kBaseLu, kBaseLv, kBaseRy, kBaseRu, kBaseRv, kBaseOut, kBaseDl, kBaseDr, kBaseMask,
+  kStride, kOutStride, kTileStride, kMode, kLrT, kWidth, kHeight, kDisp, kThr,
+  kRectEn, kRectStep, kRawWidth, kRawHeight, kRawStride, kRaw, kMesh, kMeshNx, kMeshNy, kValid,
+  kCount
+};
+struct CfgField {
+  Cfg id;
+  const char* name;  // the package's CFG_<name>
+  int width;
+  const char* doc;   // the register field it holds
+};
+inline constexpr CfgField kCfgFields[] = {
+    {Cfg::kBaseLy, "BASE_LY", 32, "BASE_LY"},
+    {Cfg::kBaseLu, "BASE_LU", 32, "BASE_LU"},
+    {Cfg::kBaseLv, "BASE_LV", 32, "BASE_LV"},
+    {Cfg::kBaseRy, "BASE_RY", 32, "BASE_RY"},
+    {Cfg::kBaseRu, "BASE_RU", 32, "BASE_RU"},
+    {Cfg::kBaseRv, "BASE_RV", 32, "BASE_RV"},
+    {Cfg::kBaseOut, "BASE_OUT", 32, "BASE_OUT"},
+    {Cfg::kBaseDl, "BASE_DL", 32, "BASE_DL"},
+    {Cfg::kBaseDr, "BASE_DR", 32, "BASE_DR"},
+    {Cfg::kBaseMask, "BASE_MASK", 32, "BASE_MASK"},
+    {Cfg::kStride, "STRIDE", 32, "STRIDE"},
+    {Cfg::kOutStride, "OUT_STRIDE", 32, "OUT_STRIDE"},
+    {Cfg::kTileStride, "TILE_STRIDE", 32, "TILE_STRIDE (0: raster input planes)"},
+    {Cfg::kMode, "MODE", kCtrlModeWidth, "CTRL.MODE: bit 0 sub-pixel, bit 1 LR, bit 2 right view as base"},
+    {Cfg::kLrT, "LR_T", kLrTBits, "LR_T.T"},
+    {Cfg::kWidth, "WIDTH", kSizeBits, "SIZE.WIDTH"},
+    {Cfg::kHeight, "HEIGHT", kSizeBits, "SIZE.HEIGHT"},
+    {Cfg::kDisp, "DISP", kDispBitsReg, "DISP.D; 0 (error code 3) when above DMAX"},
+    {Cfg::kThr, "THR", kWeightThresholds * kThrBits, "THR0 .. THR6, THR i at bit kThrBits x i"},
+    {Cfg::kRectEn, "RECT_EN", 1, "RECT_CTRL.ENABLE"},
+    {Cfg::kRectStep, "RECT_STEP", kRectStepWidth, "RECT_CTRL.STEP_LOG2"},
+    {Cfg::kRawWidth, "RAW_WIDTH", kSizeBits, "RAW_SIZE.WIDTH"},
+    {Cfg::kRawHeight, "RAW_HEIGHT", kSizeBits, "RAW_SIZE.HEIGHT"},
+    {Cfg::kRawStride, "RAW_STRIDE", 32, "RAW_STRIDE"},
+    {Cfg::kRaw, "RAW", 6 * 32, "RAW_LY .. RAW_RV, plane p at bit 32 p"},
+    {Cfg::kMesh, "MESH", 2 * 32, "MESH_L (bit 0), MESH_R (bit 32)"},
+    {Cfg::kMeshNx, "MESH_NX", kSizeBits, "MESH_NODES.NX"},
+    {Cfg::kMeshNy, "MESH_NY", kSizeBits, "MESH_NODES.NY"},
+    {Cfg::kValid, "VALID_MAP", 2 * 32, "VALID_L (bit 0), VALID_R (bit 32)"},
+};
+inline constexpr int kCfgCount = int(sizeof(kCfgFields) / sizeof(kCfgFields[0]));
+static_assert(kCfgCount == int(Cfg::kCount), "one kCfgFields row for each Cfg");
+
+// The lowest bit of field F in the bundle; kCfgBits its width.
+constexpr int cfg_lsb(Cfg f) {
+  int lsb = 0;
+  for (int i = 0; i < int(f); ++i) lsb += kCfgFields[i].width;
+  return lsb;
+}
+constexpr int cfg_width(Cfg f) { return kCfgFields[int(f)].width; }
+inline constexpr int kCfgBits = cfg_lsb(Cfg::kCount);
+
+// The rows in Cfg's order.
+constexpr bool cfg_valid() {
+  for (int i = 0; i < kCfgCount; ++i)
+    if (int(kCfgFields[i].id) != i || kCfgFields[i].width <= 0) return false;
+  return true;
+}
+static_assert(cfg_valid(), "kCfgFields rows in Cfg's order, each at least a bit wide");
+
 // Every offset word-aligned, inside the decoded span, and unique.
 constexpr bool offsets_valid() {
   const int n = int(sizeof(kRegs) / sizeof(kRegs[0]));
