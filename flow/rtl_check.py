@@ -49,6 +49,11 @@ UNARY_CAST = re.compile(r"((^|[=(,?:+*/&|^~!<>-])\s*[~!]|[=(,?:+*/&|^~!<>-]\s*-)
                         r"([A-Za-z_][A-Za-z_0-9]*|[0-9]+|\([^()]*\))'\(")
 
 
+def uncommented(path):
+    """The text of a source file without its comments (the line breaks kept)."""
+    return re.sub(r"//[^\n]*|/\*.*?\*/", lambda m: "\n" * m.group(0).count("\n"), path.read_text(), flags=re.S)
+
+
 class Check:
     def __init__(self, alt_pkg):
         self.alt_pkg = str(Path(alt_pkg).resolve()) if alt_pkg else None
@@ -111,7 +116,7 @@ class Check:
         that owns it (docs/architecture.md). And the configuration travels as the one bundle
         the package declares (CFG_*, generated from regs.hpp): no module has a port of its own
         for a field of it (cfg_<field>_i / _o)."""
-        code = re.sub(r"//[^\n]*|/\*.*?\*/", "", (RTL / WIRING).read_text(), flags=re.S)
+        code = uncommented(RTL / WIRING)
         found = [i + 1 for i, line in enumerate(code.split("\n")) if re.search(r"\balways(_ff|_comb|_latch)?\b", line)]
         if found:
             print(f"rtl_check: rtl/{WIRING} is wiring, but has an always block (line {', '.join(map(str, found))}): "
@@ -125,8 +130,7 @@ class Check:
         port = re.compile(r"\b(input|output)\b[^;,()]*\bcfg_(" + "|".join(fields) + r")_[io]\b")
         bad = []
         for f in self.mods:
-            code = re.sub(r"//[^\n]*|/\*.*?\*/", "", (RTL / f).read_text(), flags=re.S)
-            bad += [f"rtl/{f}: cfg_{m.group(2)}" for m in port.finditer(code)]
+            bad += [f"rtl/{f}: cfg_{m.group(2)}" for m in port.finditer(uncommented(RTL / f))]
         if bad:
             print("rtl_check: configuration fields retyped as ports (they travel in the bundle cfg_i / cfg_o, "
                   f"mcadsw_pkg::CFG_*): {'; '.join(bad)}")

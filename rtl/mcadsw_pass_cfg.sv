@@ -18,8 +18,8 @@
 // lies in columns xlo .. xend - 1; with the right view as base the pass runs
 // mirrored (docs/blocks/engine.md section 6): pass column c is image column
 // W4 - 1 - c, W4 the width rounded up to 4, so the image lies in pass columns
-// W4 - W .. W4 - 1. Registered at the start from the configuration ports and, when
-// the LR mode's second pass begins (to_second_i), from the registered configuration,
+// W4 - W .. W4 - 1. Registered at the start from the bundle at the port and, when the
+// LR mode's second pass begins (to_second_i), from the registered bundle,
 // so that the readers' address and clamp arithmetic starts from flip-flops.
 `default_nettype none
 
@@ -78,28 +78,17 @@ module mcadsw_pass_cfg #(
   end
   assign cfg_q_o = cfg_q;
 
-  // The fields the views read, registered (q) and at the ports (i)
-  logic [AW-1:0] ly_q, lu_q, lv_q, ry_q, ru_q, rv_q, out_q, dl_q, dr_q, stride_q, out_stride_q, tile_q;
-  logic [AW-1:0] valid_l_q, valid_r_q, ly_i, lu_i, lv_i, ry_i, ru_i, rv_i, out_i, dl_i, dr_i;
-  logic [CW-1:0] width_q, width_i;
-  logic [2:0]    mode_i;
+  // The fields the views read, registered
+  logic [AW-1:0] out_q, dl_q, dr_q, stride_q, out_stride_q, tile_q, valid_l_q, valid_r_q;
   logic          sub_q, lr_q, right_q;
-  assign {rv_q, ru_q, ry_q, lv_q, lu_q, ly_q} = cfg_q[mcadsw_pkg::CFG_BASE_LY +: 6*AW];
-  assign {rv_i, ru_i, ry_i, lv_i, lu_i, ly_i} = cfg_i[mcadsw_pkg::CFG_BASE_LY +: 6*AW];
   assign out_q        = cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW];
   assign dl_q         = cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW];
   assign dr_q         = cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW];
-  assign out_i        = cfg_i[mcadsw_pkg::CFG_BASE_OUT +: AW];
-  assign dl_i         = cfg_i[mcadsw_pkg::CFG_BASE_DL +: AW];
-  assign dr_i         = cfg_i[mcadsw_pkg::CFG_BASE_DR +: AW];
   assign stride_q     = cfg_q[mcadsw_pkg::CFG_STRIDE +: AW];
   assign out_stride_q = cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW];
   assign tile_q       = cfg_q[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
   assign {valid_r_q, valid_l_q} = cfg_q[mcadsw_pkg::CFG_VALID_MAP +: 2*AW];
-  assign width_q      = cfg_q[mcadsw_pkg::CFG_WIDTH +: CW];
-  assign width_i      = cfg_i[mcadsw_pkg::CFG_WIDTH +: CW];
   assign {right_q, lr_q, sub_q} = cfg_q[mcadsw_pkg::CFG_MODE +: 3];
-  assign mode_i       = cfg_i[mcadsw_pkg::CFG_MODE +: 3];
 
   // ---- The rectifier's and the check's views -------------------------------------------
   assign rect_planes_o   = lr_q ? 6'b111111 : right_q ? 6'b111001 : 6'b001111;
@@ -110,19 +99,24 @@ module mcadsw_pass_cfg #(
   assign post_wide_o     = lr_q && sub_q;
 
   // ---- The pass view ---------------------------------------------------------------
-  // v_*: at the start from the configuration ports; when the second pass begins, from
-  // the registered configuration.
+  // v_*: at the start from the bundle at the port; when the second pass begins, from the
+  // registered bundle.
+  // BASE_LY .. BASE_DR are nine neighbouring fields of the bundle, in register order.
+  localparam int PL = mcadsw_pkg::CFG_BASE_LY;
+  logic [9*AW-1:0] v_planes;
   logic [AW-1:0] v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr;
   logic [CW-1:0] v_width, v_w4;
+  logic [2:0]    v_mode;
   logic          v_right, v_lr, v_sub, v_second;
   assign v_second = !accept_i;
-  assign {v_ly, v_lu, v_lv, v_ry, v_ru, v_rv, v_out, v_dl, v_dr, v_width} = accept_i ?
-      {ly_i, lu_i, lv_i, ry_i, ru_i, rv_i, out_i, dl_i, dr_i, width_i} :
-      {ly_q, lu_q, lv_q, ry_q, ru_q, rv_q, out_q, dl_q, dr_q, width_q};
-  assign v_right = accept_i ? mode_i[2] : 1'b1;
-  assign v_lr    = accept_i ? mode_i[1] : lr_q;
-  assign v_sub   = accept_i && mode_i[0];
-  assign v_w4    = (v_width + CW'(3)) & ~(CW'(3));
+  assign v_planes = accept_i ? cfg_i[PL +: 9*AW] : cfg_q[PL +: 9*AW];
+  assign v_width  = accept_i ? cfg_i[mcadsw_pkg::CFG_WIDTH +: CW] : cfg_q[mcadsw_pkg::CFG_WIDTH +: CW];
+  assign v_mode   = accept_i ? cfg_i[mcadsw_pkg::CFG_MODE +: 3] : cfg_q[mcadsw_pkg::CFG_MODE +: 3];
+  assign {v_dr, v_dl, v_out, v_rv, v_ru, v_ry, v_lv, v_lu, v_ly} = v_planes;
+  assign v_right  = v_second || v_mode[2];
+  assign v_lr     = v_mode[1];
+  assign v_sub    = !v_second && v_mode[0];
+  assign v_w4     = (v_width + CW'(3)) & ~(CW'(3));
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -160,6 +154,10 @@ module mcadsw_pass_cfg #(
         mark_value_o = sub_q ? 16'(mcadsw_rect_pkg::RECT_INVALID_D16) : 16'(mcadsw_rect_pkg::RECT_INVALID_D8);
       end
     endcase
+  end
+
+  if (mcadsw_pkg::CFG_BASE_DR != PL + 8*AW || mcadsw_pkg::CFG_BASE_OUT != PL + 6*AW) begin : g_bad_layout
+    mcadsw_error_pass_cfg_planes_not_neighbours u_error ();
   end
 
 endmodule

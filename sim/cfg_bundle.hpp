@@ -22,4 +22,16 @@ inline void set_cfg(Port& cfg, regs::Cfg f, uint64_t value) {
   set_bits(cfg, regs::cfg_lsb(f), regs::cfg_width(f), value);
 }
 
+// Element I, WIDTH bits wide, of an array field: THR i (kThrBits), RAW plane p, MESH and
+// VALID_MAP L (0) and R (1) (32 bits each).
+template <typename Port>
+inline uint64_t get_cfg(const Port& cfg, regs::Cfg f, int i, int width) {
+  return get_bits(cfg, regs::cfg_lsb(f) + i * width, width);
+}
+
+template <typename Port>
+inline void set_cfg(Port& cfg, regs::Cfg f, int i, int width, uint64_t value) {
+  set_bits(cfg, regs::cfg_lsb(f) + i * width, width, value);
+}
+
 }  // namespace mcadsw::sim

@@ -54,8 +54,7 @@ class PortBus : public driver::RegisterBus {
     written_[offset] = v;
     auto& t = t_;
     if (offset >= regs::kThr0 && offset < regs::kThr0 + 4 * kWeightThresholds && offset % 4 == 0) {
-      set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kThr) + int(offset - regs::kThr0) / 4 * regs::kThrBits,
-               regs::kThrBits, v);
+      set_cfg(t.cfg_i, Cfg::kThr, int(offset - regs::kThr0) / 4, regs::kThrBits, v);
       return;
     }
     if (offset >= regs::kBaseLy && offset <= regs::kBaseMask && offset % 4 == 0) {  // BASE_LY .. BASE_MASK
@@ -63,7 +62,7 @@ class PortBus : public driver::RegisterBus {
       return;
     }
     if (offset >= regs::kRawLy && offset < regs::kRawLy + 24 && offset % 4 == 0) {  // RAW_LY .. RAW_RV
-      set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kRaw) + int(offset - regs::kRawLy) / 4 * 32, 32, v);
+      set_cfg(t.cfg_i, Cfg::kRaw, int(offset - regs::kRawLy) / 4, 32, v);
       return;
     }
     switch (offset) {
@@ -91,14 +90,14 @@ class PortBus : public driver::RegisterBus {
         set_cfg(t.cfg_i, Cfg::kRawHeight, field(v, regs::kSizeHeightLsb, regs::kSizeBits));
         break;
       case regs::kRawStride: set_cfg(t.cfg_i, Cfg::kRawStride, v); break;
-      case regs::kMeshL: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kMesh), 32, v); break;
-      case regs::kMeshR: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kMesh) + 32, 32, v); break;
+      case regs::kMeshL: set_cfg(t.cfg_i, Cfg::kMesh, 0, 32, v); break;
+      case regs::kMeshR: set_cfg(t.cfg_i, Cfg::kMesh, 1, 32, v); break;
       case regs::kMeshNodes:
         set_cfg(t.cfg_i, Cfg::kMeshNx, field(v, regs::kMeshNxLsb, regs::kSizeBits));
         set_cfg(t.cfg_i, Cfg::kMeshNy, field(v, regs::kMeshNyLsb, regs::kSizeBits));
         break;
-      case regs::kValidL: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kValid), 32, v); break;
-      case regs::kValidR: set_bits(t.cfg_i, regs::cfg_lsb(Cfg::kValid) + 32, 32, v); break;
+      case regs::kValidL: set_cfg(t.cfg_i, Cfg::kValid, 0, 32, v); break;
+      case regs::kValidR: set_cfg(t.cfg_i, Cfg::kValid, 1, 32, v); break;
       case regs::kCtrl:
         set_cfg(t.cfg_i, Cfg::kMode, field(v, regs::kCtrlModeLsb, regs::kCtrlModeWidth));
         if (v >> regs::kCtrlAbortLsb & 1)

@@ -27,21 +27,20 @@ module tb_mcadsw_engine;
   logic [31:0] mem [MAXW];
   string dir;
 
-  logic [31:0] cfg_base_ly, cfg_base_lu, cfg_base_lv, cfg_base_ry, cfg_base_out, cfg_stride;
-  logic [31:0] cfg_tile_stride;
-  logic [31:0] cfg_out_stride, cfg_base_ru, cfg_base_rv, cfg_base_dl, cfg_base_dr, cfg_base_mask;
-  logic [7:0]  cfg_lr_t;
-  logic [2:0]  cfg_mode;
-  logic [11:0] cfg_width, cfg_height;
-  logic [6:0]  cfg_disp;
-  logic [NTHR*DCB-1:0] cfg_thr;
-  // Rectification (RECT_CTRL .. VALID_R): 0 until the driver writes them, as after reset.
-  logic        cfg_rect_en = 1'b0;
-  logic [2:0]  cfg_rect_step = '0;
-  logic [11:0] cfg_raw_width = '0, cfg_raw_height = '0, cfg_mesh_nx = '0, cfg_mesh_ny = '0;
-  logic [31:0] cfg_raw_stride = '0, cfg_raw_ly = '0, cfg_raw_lu = '0, cfg_raw_lv = '0;
-  logic [31:0] cfg_raw_ry = '0, cfg_raw_ru = '0, cfg_raw_rv = '0;
-  logic [31:0] cfg_mesh_l = '0, cfg_mesh_r = '0, cfg_valid_l = '0, cfg_valid_r = '0;
+  // The configuration bundle (mcadsw_pkg::CFG_*), as mcadsw_regs hands it on: each field as
+  // the driver writes its register; the rectifier's 0 until then, as after reset.
+  logic [mcadsw_pkg::CFG_BITS-1:0] cfg;
+  initial cfg[mcadsw_pkg::CFG_RECT_EN +: mcadsw_pkg::CFG_BITS - mcadsw_pkg::CFG_RECT_EN] = '0;  // RECT_EN .. VALID_MAP
+  // The fields the bench reads back: the planes it dumps.
+  logic [31:0] base_out, base_mask, stride, out_stride;
+  logic [11:0] height;
+  logic        lr;
+  assign base_out   = cfg[mcadsw_pkg::CFG_BASE_OUT +: 32];
+  assign base_mask  = cfg[mcadsw_pkg::CFG_BASE_MASK +: 32];
+  assign stride     = cfg[mcadsw_pkg::CFG_STRIDE +: 32];
+  assign out_stride = cfg[mcadsw_pkg::CFG_OUT_STRIDE +: 32];
+  assign height     = cfg[mcadsw_pkg::CFG_HEIGHT +: 12];
+  assign lr         = cfg[mcadsw_pkg::CFG_MODE + 1];
   logic start = 1'b0;
   logic busy, done, error;
   logic [7:0] error_code;                  // STATUS.ERROR_CODE: 0 .. 24
@@ -56,38 +55,6 @@ module tb_mcadsw_engine;
   logic [2:0]  arsize, awsize;
   logic [1:0]  arburst, awburst;
   logic [3:0]  wstrb;
-
-  // The configuration bundle (mcadsw_pkg::CFG_*), as mcadsw_regs hands it on.
-  logic [mcadsw_pkg::CFG_BITS-1:0] cfg;
-  assign cfg[mcadsw_pkg::CFG_BASE_LY +: 32]     = cfg_base_ly;
-  assign cfg[mcadsw_pkg::CFG_BASE_LU +: 32]     = cfg_base_lu;
-  assign cfg[mcadsw_pkg::CFG_BASE_LV +: 32]     = cfg_base_lv;
-  assign cfg[mcadsw_pkg::CFG_BASE_RY +: 32]     = cfg_base_ry;
-  assign cfg[mcadsw_pkg::CFG_BASE_RU +: 32]     = cfg_base_ru;
-  assign cfg[mcadsw_pkg::CFG_BASE_RV +: 32]     = cfg_base_rv;
-  assign cfg[mcadsw_pkg::CFG_BASE_OUT +: 32]    = cfg_base_out;
-  assign cfg[mcadsw_pkg::CFG_BASE_DL +: 32]     = cfg_base_dl;
-  assign cfg[mcadsw_pkg::CFG_BASE_DR +: 32]     = cfg_base_dr;
-  assign cfg[mcadsw_pkg::CFG_BASE_MASK +: 32]   = cfg_base_mask;
-  assign cfg[mcadsw_pkg::CFG_STRIDE +: 32]      = cfg_stride;
-  assign cfg[mcadsw_pkg::CFG_OUT_STRIDE +: 32]  = cfg_out_stride;
-  assign cfg[mcadsw_pkg::CFG_TILE_STRIDE +: 32] = cfg_tile_stride;
-  assign cfg[mcadsw_pkg::CFG_MODE +: 3]         = cfg_mode;
-  assign cfg[mcadsw_pkg::CFG_LR_T +: 8]         = cfg_lr_t;
-  assign cfg[mcadsw_pkg::CFG_WIDTH +: 12]       = cfg_width;
-  assign cfg[mcadsw_pkg::CFG_HEIGHT +: 12]      = cfg_height;
-  assign cfg[mcadsw_pkg::CFG_DISP +: 8]         = 8'(cfg_disp);
-  assign cfg[mcadsw_pkg::CFG_THR +: NTHR*DCB]   = cfg_thr;
-  assign cfg[mcadsw_pkg::CFG_RECT_EN]           = cfg_rect_en;
-  assign cfg[mcadsw_pkg::CFG_RECT_STEP +: 3]    = cfg_rect_step;
-  assign cfg[mcadsw_pkg::CFG_RAW_WIDTH +: 12]   = cfg_raw_width;
-  assign cfg[mcadsw_pkg::CFG_RAW_HEIGHT +: 12]  = cfg_raw_height;
-  assign cfg[mcadsw_pkg::CFG_RAW_STRIDE +: 32]  = cfg_raw_stride;
-  assign cfg[mcadsw_pkg::CFG_RAW +: 6*32]       = {cfg_raw_rv, cfg_raw_ru, cfg_raw_ry, cfg_raw_lv, cfg_raw_lu, cfg_raw_ly};
-  assign cfg[mcadsw_pkg::CFG_MESH +: 2*32]      = {cfg_mesh_r, cfg_mesh_l};
-  assign cfg[mcadsw_pkg::CFG_MESH_NX +: 12]     = cfg_mesh_nx;
-  assign cfg[mcadsw_pkg::CFG_MESH_NY +: 12]     = cfg_mesh_ny;
-  assign cfg[mcadsw_pkg::CFG_VALID_MAP +: 2*32] = {cfg_valid_r, cfg_valid_l};
 
   mcadsw_engine dut (
     .clk_i (clk), .rst_ni (rst_n),
@@ -216,27 +183,27 @@ module tb_mcadsw_engine;
   logic started = 1'b0;
   task automatic reg_write(input int off, input logic [31:0] v);
     case (off)
-      mcadsw_pkg::REG_BASE_LY: cfg_base_ly = v;
-      mcadsw_pkg::REG_BASE_LU: cfg_base_lu = v;
-      mcadsw_pkg::REG_BASE_LV: cfg_base_lv = v;
-      mcadsw_pkg::REG_BASE_RY: cfg_base_ry = v;
-      mcadsw_pkg::REG_BASE_RU: cfg_base_ru = v;
-      mcadsw_pkg::REG_BASE_RV: cfg_base_rv = v;
-      mcadsw_pkg::REG_BASE_OUT: cfg_base_out = v;
-      mcadsw_pkg::REG_BASE_DL: cfg_base_dl = v;
-      mcadsw_pkg::REG_BASE_DR: cfg_base_dr = v;
-      mcadsw_pkg::REG_BASE_MASK: cfg_base_mask = v;
-      mcadsw_pkg::REG_STRIDE: cfg_stride = v;
-      mcadsw_pkg::REG_OUT_STRIDE: cfg_out_stride = v;
-      mcadsw_pkg::REG_TILE_STRIDE: cfg_tile_stride = v;
+      mcadsw_pkg::REG_BASE_LY: cfg[mcadsw_pkg::CFG_BASE_LY +: 32] = v;
+      mcadsw_pkg::REG_BASE_LU: cfg[mcadsw_pkg::CFG_BASE_LU +: 32] = v;
+      mcadsw_pkg::REG_BASE_LV: cfg[mcadsw_pkg::CFG_BASE_LV +: 32] = v;
+      mcadsw_pkg::REG_BASE_RY: cfg[mcadsw_pkg::CFG_BASE_RY +: 32] = v;
+      mcadsw_pkg::REG_BASE_RU: cfg[mcadsw_pkg::CFG_BASE_RU +: 32] = v;
+      mcadsw_pkg::REG_BASE_RV: cfg[mcadsw_pkg::CFG_BASE_RV +: 32] = v;
+      mcadsw_pkg::REG_BASE_OUT: cfg[mcadsw_pkg::CFG_BASE_OUT +: 32] = v;
+      mcadsw_pkg::REG_BASE_DL: cfg[mcadsw_pkg::CFG_BASE_DL +: 32] = v;
+      mcadsw_pkg::REG_BASE_DR: cfg[mcadsw_pkg::CFG_BASE_DR +: 32] = v;
+      mcadsw_pkg::REG_BASE_MASK: cfg[mcadsw_pkg::CFG_BASE_MASK +: 32] = v;
+      mcadsw_pkg::REG_STRIDE: cfg[mcadsw_pkg::CFG_STRIDE +: 32] = v;
+      mcadsw_pkg::REG_OUT_STRIDE: cfg[mcadsw_pkg::CFG_OUT_STRIDE +: 32] = v;
+      mcadsw_pkg::REG_TILE_STRIDE: cfg[mcadsw_pkg::CFG_TILE_STRIDE +: 32] = v;
       mcadsw_pkg::REG_SIZE: begin
-        cfg_width  = v[mcadsw_pkg::SIZE_WIDTH_LSB +: mcadsw_pkg::SIZE_WIDTH_W];
-        cfg_height = v[mcadsw_pkg::SIZE_HEIGHT_LSB +: mcadsw_pkg::SIZE_HEIGHT_W];
+        cfg[mcadsw_pkg::CFG_WIDTH +: 12]  = v[mcadsw_pkg::SIZE_WIDTH_LSB +: mcadsw_pkg::SIZE_WIDTH_W];
+        cfg[mcadsw_pkg::CFG_HEIGHT +: 12] = v[mcadsw_pkg::SIZE_HEIGHT_LSB +: mcadsw_pkg::SIZE_HEIGHT_W];
       end
-      mcadsw_pkg::REG_DISP: cfg_disp = v[mcadsw_pkg::DISP_D_LSB +: $bits(cfg_disp)];
-      mcadsw_pkg::REG_LR_T: cfg_lr_t = v[mcadsw_pkg::LR_T_T_LSB +: mcadsw_pkg::LR_T_T_W];
+      mcadsw_pkg::REG_DISP: cfg[mcadsw_pkg::CFG_DISP +: 8] = 8'(v[mcadsw_pkg::DISP_D_LSB +: $clog2(mcadsw_pkg::DMAX + 1)]);
+      mcadsw_pkg::REG_LR_T: cfg[mcadsw_pkg::CFG_LR_T +: 8] = v[mcadsw_pkg::LR_T_T_LSB +: mcadsw_pkg::LR_T_T_W];
       mcadsw_pkg::REG_CTRL: begin
-        cfg_mode = v[mcadsw_pkg::CTRL_MODE_LSB +: mcadsw_pkg::CTRL_MODE_W];
+        cfg[mcadsw_pkg::CFG_MODE +: 3] = v[mcadsw_pkg::CTRL_MODE_LSB +: mcadsw_pkg::CTRL_MODE_W];
         if (v[mcadsw_pkg::CTRL_START_LSB]) begin
           @(posedge clk); #1 start = 1'b1;
           @(posedge clk); #1 start = 1'b0;
@@ -247,31 +214,31 @@ module tb_mcadsw_engine;
       // Rectification (register map 1.2; the driver writes them for every frame,
       // ENABLE 0 without it), as mcadsw_regs: the fields, the addresses whole.
       mcadsw_pkg::REG_RECT_CTRL: begin
-        cfg_rect_en   = v[mcadsw_pkg::RECT_CTRL_ENABLE_LSB];
-        cfg_rect_step = v[mcadsw_pkg::RECT_CTRL_STEP_LOG2_LSB +: mcadsw_pkg::RECT_CTRL_STEP_LOG2_W];
+        cfg[mcadsw_pkg::CFG_RECT_EN]   = v[mcadsw_pkg::RECT_CTRL_ENABLE_LSB];
+        cfg[mcadsw_pkg::CFG_RECT_STEP +: 3] = v[mcadsw_pkg::RECT_CTRL_STEP_LOG2_LSB +: mcadsw_pkg::RECT_CTRL_STEP_LOG2_W];
       end
       mcadsw_pkg::REG_RAW_SIZE: begin
-        cfg_raw_width  = v[mcadsw_pkg::RAW_SIZE_WIDTH_LSB +: mcadsw_pkg::RAW_SIZE_WIDTH_W];
-        cfg_raw_height = v[mcadsw_pkg::RAW_SIZE_HEIGHT_LSB +: mcadsw_pkg::RAW_SIZE_HEIGHT_W];
+        cfg[mcadsw_pkg::CFG_RAW_WIDTH +: 12]  = v[mcadsw_pkg::RAW_SIZE_WIDTH_LSB +: mcadsw_pkg::RAW_SIZE_WIDTH_W];
+        cfg[mcadsw_pkg::CFG_RAW_HEIGHT +: 12] = v[mcadsw_pkg::RAW_SIZE_HEIGHT_LSB +: mcadsw_pkg::RAW_SIZE_HEIGHT_W];
       end
-      mcadsw_pkg::REG_RAW_STRIDE: cfg_raw_stride = v;
-      mcadsw_pkg::REG_RAW_LY: cfg_raw_ly = v;
-      mcadsw_pkg::REG_RAW_LU: cfg_raw_lu = v;
-      mcadsw_pkg::REG_RAW_LV: cfg_raw_lv = v;
-      mcadsw_pkg::REG_RAW_RY: cfg_raw_ry = v;
-      mcadsw_pkg::REG_RAW_RU: cfg_raw_ru = v;
-      mcadsw_pkg::REG_RAW_RV: cfg_raw_rv = v;
-      mcadsw_pkg::REG_MESH_L: cfg_mesh_l = v;
-      mcadsw_pkg::REG_MESH_R: cfg_mesh_r = v;
+      mcadsw_pkg::REG_RAW_STRIDE: cfg[mcadsw_pkg::CFG_RAW_STRIDE +: 32] = v;
+      mcadsw_pkg::REG_RAW_LY: cfg[mcadsw_pkg::CFG_RAW + 0*32 +: 32] = v;
+      mcadsw_pkg::REG_RAW_LU: cfg[mcadsw_pkg::CFG_RAW + 1*32 +: 32] = v;
+      mcadsw_pkg::REG_RAW_LV: cfg[mcadsw_pkg::CFG_RAW + 2*32 +: 32] = v;
+      mcadsw_pkg::REG_RAW_RY: cfg[mcadsw_pkg::CFG_RAW + 3*32 +: 32] = v;
+      mcadsw_pkg::REG_RAW_RU: cfg[mcadsw_pkg::CFG_RAW + 4*32 +: 32] = v;
+      mcadsw_pkg::REG_RAW_RV: cfg[mcadsw_pkg::CFG_RAW + 5*32 +: 32] = v;
+      mcadsw_pkg::REG_MESH_L: cfg[mcadsw_pkg::CFG_MESH +: 32] = v;
+      mcadsw_pkg::REG_MESH_R: cfg[mcadsw_pkg::CFG_MESH + 32 +: 32] = v;
       mcadsw_pkg::REG_MESH_NODES: begin
-        cfg_mesh_nx = v[mcadsw_pkg::MESH_NODES_NX_LSB +: mcadsw_pkg::MESH_NODES_NX_W];
-        cfg_mesh_ny = v[mcadsw_pkg::MESH_NODES_NY_LSB +: mcadsw_pkg::MESH_NODES_NY_W];
+        cfg[mcadsw_pkg::CFG_MESH_NX +: 12] = v[mcadsw_pkg::MESH_NODES_NX_LSB +: mcadsw_pkg::MESH_NODES_NX_W];
+        cfg[mcadsw_pkg::CFG_MESH_NY +: 12] = v[mcadsw_pkg::MESH_NODES_NY_LSB +: mcadsw_pkg::MESH_NODES_NY_W];
       end
-      mcadsw_pkg::REG_VALID_L: cfg_valid_l = v;
-      mcadsw_pkg::REG_VALID_R: cfg_valid_r = v;
+      mcadsw_pkg::REG_VALID_L: cfg[mcadsw_pkg::CFG_VALID_MAP +: 32] = v;
+      mcadsw_pkg::REG_VALID_R: cfg[mcadsw_pkg::CFG_VALID_MAP + 32 +: 32] = v;
       default:
         if (off >= mcadsw_pkg::REG_THR0 && off < mcadsw_pkg::REG_THR0 + 4 * NTHR)
-          cfg_thr[(off - mcadsw_pkg::REG_THR0) / 4 * DCB +: DCB] = DCB'(v);
+          cfg[mcadsw_pkg::CFG_THR + (off - mcadsw_pkg::REG_THR0) / 4 * DCB +: DCB] = DCB'(v);
         else begin
           $display("FAIL: register offset 'h%0h has no port in the engine", off);
           $finish;
@@ -301,11 +268,11 @@ module tb_mcadsw_engine;
       if (cycles > 10_000_000) begin $display("FAIL: no done after %0d cycles", cycles); $finish; end
     end
     fd = $fopen({dir, "/icarus_out.hex"}, "w");
-    for (int a = cfg_base_out / 4; a < (cfg_base_out + cfg_out_stride * cfg_height) / 4; a++)
+    for (int a = base_out / 4; a < (base_out + out_stride * height) / 4; a++)
       $fwrite(fd, "%08x\n", mem[a]);
     // LR mode: the mask plane too.
-    if (cfg_mode[1])
-      for (int a = cfg_base_mask / 4; a < (cfg_base_mask + cfg_stride * cfg_height) / 4; a++)
+    if (lr)
+      for (int a = base_mask / 4; a < (base_mask + stride * height) / 4; a++)
         $fwrite(fd, "%08x\n", mem[a]);
     $fclose(fd);
     fd = $fopen({dir, "/icarus_counters.txt"}, "w");

@@ -113,7 +113,7 @@ TEST(Driver, ConfigureReachesEveryEnginePort) {
     EXPECT_EQ(int(cfg(Cfg::kLrT)), c.lr_tolerance);
     EXPECT_EQ(int(cfg(Cfg::kMode)), int(c.subpixel) | int(c.lr) << 1 | int(c.right) << 2);
     for (int i = 0; i < kWeightThresholds; ++i)
-      EXPECT_EQ(uint32_t(sim::get_bits(t.cfg_o, regs::cfg_lsb(Cfg::kThr) + i * regs::kThrBits, regs::kThrBits)),
+      EXPECT_EQ(uint32_t(sim::get_cfg(t.cfg_o, Cfg::kThr, i, regs::kThrBits)),
                 c.thresholds[size_t(i)]) << "threshold " << i;
     EXPECT_EQ(b.starts, 0) << "configure() must not start a frame";
   }

@@ -70,8 +70,7 @@ class Bench {
         if (off >= kBaseLy && off <= kBaseMask)  // BASE_LY .. BASE_MASK: Cfg kBaseLy .. kBaseMask
           return cfg(regs::Cfg(int(regs::Cfg::kBaseLy) + int(off - kBaseLy) / 4));
         if (off >= kThr0 && off < kThr0 + 4 * kWeightThresholds)
-          return uint32_t(sim::get_bits(t.cfg_o, regs::cfg_lsb(regs::Cfg::kThr) + int(off - kThr0) / 4 * kThrBits,
-                                        kThrBits));
+          return uint32_t(sim::get_cfg(t.cfg_o, regs::Cfg::kThr, int(off - kThr0) / 4, kThrBits));
         return ~0u;
     }
   }
