@@ -204,6 +204,17 @@ docs-waves: build
 bench: build
 	@$(BUILD_DIR)/bin/bench_ref
 
+## bench-sim: RUNS=5 BASELINE=<commit|exe>: the model's speed on CIF Teddy D=64 raw, LR and rectified
+##   (medians, kcycles/s; with BASELINE, runs alternating with that model and the ratio)
+bench-sim: build
+	@python3 flow/bench_sim.py --build $(abspath $(BUILD_DIR)) --runs $(or $(RUNS),5) \
+	  $(if $(FRAMES),--frames "$(FRAMES)") $(if $(BASELINE),--baseline "$(BASELINE)")
+
+## profile-sim: where a CIF D=64 frame's simulated time goes, per Verilog module and in the harness
+##   (perf and Verilator's --prof-cfuncs; build/prof/profile/summary.txt)
+profile-sim: bootstrap
+	@python3 flow/profile_sim.py --build $(abspath $(BUILD_DIR)/prof)
+
 ## report: build/report/report.md: Middlebury errors next to the paper and OpenCV, speed, hardware
 report: build
 	@python3 flow/report.py --build $(abspath $(BUILD_DIR))
