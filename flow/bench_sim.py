@@ -5,14 +5,14 @@
 (raw, LR, and rectified from camera B's raw pair) in build/bin/mcadsw_sim, RUNS times each, and
 prints each frame's median: the simulation loop's seconds and kcycles/s (as mcadsw_sim reports
 them) and the process's wall time (with the image loading and the reference model). With
---baseline (a git commit, built once in BUILD_DIR/bench/<commit>, or an mcadsw_sim executable) the
+--baseline (a git commit, built once in BUILD_DIR/bench_sim/<commit>, or an mcadsw_sim executable) the
 runs alternate between the two models, A then B, so that both see the same machine, and the
 ratio of the medians is printed. A benchmark, not a test: nothing fails on a time; a run fails
 only when a frame is not bit-exact or the two models' cycle counts differ.
 
   python3 flow/bench_sim.py [--runs 5] [--frames raw,lr,rect] [--baseline REF|EXE]
 
-Writes BUILD_DIR/bench/bench_sim.json.
+Writes BUILD_DIR/bench_sim/bench_sim.json.
 """
 import argparse
 import json
@@ -102,7 +102,7 @@ def main(argv):
     exe = build / "bin" / "mcadsw_sim"
     if not exe.is_file():
         raise FlowError(f"{exe} is missing (make build)", 2)
-    bench_dir = build / "bench"
+    bench_dir = build / "bench_sim"
     bench_dir.mkdir(parents=True, exist_ok=True)
     models = [("this build", exe)]
     if a.baseline:

@@ -61,7 +61,7 @@ def main():
 
         b = fake_sim(t / "b" / "mcadsw_sim", 2226986, 10.0)
         rc, out = bench(a, "--runs", "3", "--frames", "raw", "--baseline", str(b))
-        js = a / "bench" / "bench_sim.json"
+        js = a / "bench_sim" / "bench_sim.json"
         ok = rc == 0 and js.is_file()
         if ok:
             raw = json.loads(js.read_text())["frames"]["raw"]
