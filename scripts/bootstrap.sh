@@ -35,6 +35,7 @@ PACKAGES=(
   opensta            # static timing
   qflow-tech-osu018  # OSU 0.18 um standard cells for gate count and timing
   gtkwave            # waveform viewer for `make wave` (and fst2vcd, headless)
+  linux-perf         # the sampling profiler of `make profile-sim`
 )
 
 missing=()
