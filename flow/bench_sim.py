@@ -25,7 +25,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import FlowError, log, PREFIX, ROOT, run_main, tail  # noqa: E402
+from flowlib import FlowError, cmake_build, log, PREFIX, ROOT, run_main  # noqa: E402
 
 D = ROOT / "data"
 FRAMES = {
@@ -68,19 +68,12 @@ def build_baseline(ref, bench_dir):
             raise FlowError(f"git worktree add {src} {sha} failed")
     log(f"building the baseline model of {sha} in {bld} (once)")
     venv = ROOT / ".venv"
-    cfg = ["cmake", "-S", str(src), "-B", str(bld), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-           "-DMCADSW_BLOCK_BENCHES=none", "-DMCADSW_CORE_MODEL=OFF"]
     if venv.is_dir() and not (src / ".venv").exists():
         (src / ".venv").symlink_to(venv)      # the pinned tools the commit's build finds there
-    blog = bench_dir / f"{sha}.build.log"
-    with open(blog, "w") as f:
-        rc = subprocess.run(cfg, stdout=f, stderr=subprocess.STDOUT).returncode
-        if rc == 0:
-            rc = subprocess.run(["cmake", "--build", str(bld), "--target", "mcadsw_sim", "-j",
-                                 str(os.cpu_count() or 1)], stdout=f, stderr=subprocess.STDOUT).returncode
-    if rc != 0 or not exe.is_file():
-        print("\n".join(tail(blog, 30)))
-        raise FlowError(f"the baseline's build failed ({blog})")
+    cmake_build(bld, ["-DMCADSW_BLOCK_BENCHES=none", "-DMCADSW_CORE_MODEL=OFF"], ["mcadsw_sim"],
+                bench_dir / f"{sha}.build.log", src=src)
+    if not exe.is_file():
+        raise FlowError(f"the baseline's build made no {exe}")
     return exe, sha
 
 

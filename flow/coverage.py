@@ -27,7 +27,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import FlowError, log, PREFIX, ROOT, run_main, tail  # noqa: E402
+from flowlib import FlowError, cmake_build, log, PREFIX, ROOT, run_main, tail  # noqa: E402
 
 # The coverage model is built with Debian's Verilator 5.006, not the tool environment's 5.052:
 # 5.052's runtime counts the toggles of a signal wider than 64 bits wrongly (its
@@ -108,19 +108,11 @@ def main(argv):
     out = build / "coverage"
     if not (VROOT / "verilator-config.cmake").is_file() or not os.access(VCOV, os.X_OK):
         raise FlowError(f"Debian's Verilator missing at {VROOT} (run scripts/bootstrap.sh)", 2)
-    if subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                       "-DMCADSW_COVERAGE=ON", f"-DMCADSW_VERILATOR_ROOT={VROOT}", "-DMCADSW_BLOCK_BENCHES=none",
-                       "-DMCADSW_CORE_MODEL=OFF"], stdout=subprocess.DEVNULL).returncode != 0:
-        raise FlowError(f"cmake could not configure {build}")
     log(f"building the instrumented model ({build})")
-    blog = build / "coverage_build.log"
-    with open(blog, "w") as f:
-        rc = subprocess.run(["cmake", "--build", str(build), "--target", "mcadsw_sim", "mcadsw_sim_random",
-                             "rtl_engine_test", "rtl_axi_test", "-j", str(os.cpu_count() or 1)],
-                            stdout=f, stderr=subprocess.STDOUT).returncode
-    if rc != 0:
-        print("\n".join(tail(blog, 30)))
-        raise FlowError("build failed")
+    build.mkdir(parents=True, exist_ok=True)
+    cmake_build(build, ["-DMCADSW_COVERAGE=ON", f"-DMCADSW_VERILATOR_ROOT={VROOT}", "-DMCADSW_BLOCK_BENCHES=none",
+                        "-DMCADSW_CORE_MODEL=OFF"],
+                ["mcadsw_sim", "mcadsw_sim_random", "rtl_engine_test", "rtl_axi_test"], build / "coverage_build.log")
     shutil.rmtree(out, ignore_errors=True)
     (out / "runs").mkdir(parents=True)
     env = dict(os.environ, MCADSW_COVERAGE_DIR=str(out / "runs"))   # a .dat file a run, merged below

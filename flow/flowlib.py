@@ -90,6 +90,19 @@ def indent(lines):
     return "".join(f"  | {line}\n" for line in lines)
 
 
+def cmake_build(build, options, targets, log_path, src=ROOT):
+    """Configure SRC into BUILD (Ninja, Release, the -D OPTIONS) and build TARGETS on every
+    core, both into LOG_PATH; a FlowError with the log's last lines when either fails."""
+    with open(log_path, "w") as f:
+        for what, cmd in (("configure", ["cmake", "-S", str(src), "-B", str(build), "-G", "Ninja",
+                                         "-DCMAKE_BUILD_TYPE=Release"] + list(options)),
+                          ("build", ["cmake", "--build", str(build), "-j", str(os.cpu_count() or 1),
+                                     "--target"] + list(targets))):
+            f.flush()
+            if subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT).returncode != 0:
+                raise FlowError(f"cmake {what} of {build} failed (log {log_path}):\n" + indent(tail(log_path, 30)))
+
+
 def rtl_list(no_pkg=False, no_rect=False):
     """The files of rtl/mcadsw.f, relative to the RTL folder; no_rect: the engine without
     the rectifier (rtl/rect/'s modules replaced by rect/mcadsw_rect_none.sv, as

@@ -26,7 +26,7 @@ from collections import defaultdict
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from flowlib import FlowError, log, PREFIX, ROOT, run_main, tail  # noqa: E402
+from flowlib import FlowError, cmake_build, log, PREFIX, ROOT, run_main  # noqa: E402
 
 DEFAULT_FRAME = ["data/cif/teddy/left.png", "data/cif/teddy/right.png", "-d", "64"]
 
@@ -41,18 +41,17 @@ def classify(name):
     """(group, detail) of one function of perf's report."""
     m = PROF.search(name)
     if m:
-        return "model: Verilog blocks", f"{m.group(1)}"
-    if re.search(r"\bVmcadsw_top[_A-Za-z0-9]*(::|___)", name) or name.startswith("Vmcadsw_top"):
+        return "model: Verilog blocks", m.group(1)
+    if name.startswith("Vmcadsw_top"):
         return "model: scheduling and glue", "(Verilator's eval, settle, triggers)"
-    if re.search(r"\bVerilated|\bvl_|\bVL_|verilated", name):
-        return "Verilator runtime", name.split("(")[0][:60]
-    if re.search(r"cv::|opencv", name):
-        return "OpenCV (image I/O)", name.split("(")[0][:60]
-    if re.search(r"mcadsw::(sim|driver)::", name):
-        return "harness (memory model, driver, bench)", name.split("(")[0][:60]
-    if re.search(r"mcadsw::", name):
-        return "reference model", name.split("(")[0][:60]
-    return "other (C++ library, kernel)", name.split("(")[0][:60]
+    short = name.split("(")[0][:60]
+    for group, pattern in (("Verilator runtime", r"\bVerilated|\bvl_|\bVL_|verilated"),
+                           ("OpenCV (image I/O)", r"cv::|opencv"),
+                           ("harness (memory model, driver, bench)", r"mcadsw::(sim|driver)::"),
+                           ("reference model", r"mcadsw::")):
+        if re.search(pattern, name):
+            return group, short
+    return "other (C++ library, kernel)", short
 
 
 def summarise(report, samples):
@@ -92,18 +91,10 @@ def main(argv):
     out = build / "profile"
     if not shutil.which("perf"):
         raise FlowError("perf (Debian package linux-perf) is missing", 2)
-    if subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                       "-DMCADSW_PROFILE=ON", "-DMCADSW_BLOCK_BENCHES=none", "-DMCADSW_CORE_MODEL=OFF"],
-                      stdout=subprocess.DEVNULL).returncode != 0:
-        raise FlowError(f"cmake could not configure {build}")
     log(f"building the instrumented model ({build})")
-    blog = build / "profile_build.log"
-    with open(blog, "w") as f:
-        rc = subprocess.run(["cmake", "--build", str(build), "--target", "mcadsw_sim", "-j", str(os.cpu_count() or 1)],
-                            stdout=f, stderr=subprocess.STDOUT).returncode
-    if rc != 0:
-        print("\n".join(tail(blog, 30)))
-        raise FlowError("build failed")
+    build.mkdir(parents=True, exist_ok=True)
+    cmake_build(build, ["-DMCADSW_PROFILE=ON", "-DMCADSW_BLOCK_BENCHES=none", "-DMCADSW_CORE_MODEL=OFF"],
+                ["mcadsw_sim"], build / "profile_build.log")
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)
     args = a.sim_args or [str(ROOT / p) if "/" in p else p for p in DEFAULT_FRAME]
