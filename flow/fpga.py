@@ -234,12 +234,18 @@ def report(root, sim_summary):
     md += ["", f"## ECP5 ({e['board']}): the SoC's cells by RTL module", "",
            "From the flattened netlist, each cell by the source line it keeps (flip-flops, carry",
            "chains, multipliers; ABC's LUTs and the RAMs keep none: `flow/ecp5.py block` gives a",
-           "block's LUT4 and RAMs on its own). Every module has cells: none was optimised away.", "",
+           "block's LUT4 and RAMs on its own). Every module with a flip-flop has cells: none was",
+           "optimised away. A module without one (the engine, wiring only; combinational blocks)",
+           "may map to LUTs alone: it is listed apart, and its instance is required.", "",
            "| module | TRELLIS_FF | CCU2C | MULT18X18D |", "|---|---|---|---|"]
     blocks = json.loads((root / "ecp5" / "blocks.json").read_text())
     for m, c in blocks["cells_by_module"].items():
         md.append(f"| {m} | {c['TRELLIS_FF']} | {c['CCU2C']} | {c['MULT18X18D']} |")
-    md += ["", f"{len(blocks['instances'])} instances (Yosys $scopeinfo): " + ", ".join(blocks["instances"]) + "."]
+    for m, c in blocks.get("combinational", {}).items():
+        md.append(f"| {m} (combinational) | {c['TRELLIS_FF']} | {c['CCU2C']} | {c['MULT18X18D']} |")
+    insts = blocks["instances"]
+    md += ["", f"{len(insts)} instances (Yosys $scopeinfo): "
+           + ", ".join(f"{i} ({m})" for i, m in insts.items()) + "."]
     md += ["", "ECP5 TRELLIS_COMB before place and route: LUT4 + 2 CCU2C + 6 TRELLIS_DPR16X4 (LUT4 sites).", "",
            "## Steps", "", "| step | seconds | peak MB |", "|---|---|---|"]
     for k, v in summary["steps"].items():

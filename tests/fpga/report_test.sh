@@ -5,10 +5,11 @@
 # make fpga's report (flow/fpga.py report) on hand-written step figures (tests/fpga/report/):
 # a design over the ECP5's LUT4 sites fails its bars and is not placed; a placed one
 # below 30 frames a second fails the Fmax bar, with the frames a second computed from the
-# CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); missing figures exit 2;
-# the SoC without the rectifier, placed, reported beside the whole SoC that does not fit; a
-# placement whose routing stopped at the time limit, a design packed only, and one packed
-# within the device that nextpnr could not place.
+# CIF D = 64 cycles (raw and LR, not the sub-pixel or other cases); the cells by module (the
+# engine, wiring only, listed apart); missing figures exit 2; the SoC without the rectifier,
+# placed, reported beside the whole SoC that does not fit; a placement whose routing stopped
+# at the time limit, a design packed only, and one packed within the device that nextpnr
+# could not place.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 fix=$root/tests/fpga/report
@@ -30,6 +31,10 @@ grep -q '| XC7Z020 LUTs (logic + memory) (estimate) | 60000 of 53200 | \*\*no\*\
 grep -q '| XC7Z020 DSP48E1 (estimate) | 80 of 220 | yes |' <<<"$out" || fail "XC7Z020 DSP bar: $out"
 python3 -c "import json,sys; s=json.load(open(sys.argv[1])); assert s['cif_d64_cycles']=={'raw':2226986,'lr':3396072}, s['cif_d64_cycles']; assert s['fps_cif_d64']=={}" "$tmp/fpga/summary.json" \
   || fail "cycles or frames a second in summary.json"
+# The cells by module: a block with flip-flops, and the engine (wiring) listed apart.
+grep -q '^| mcadsw_census | 1249 | 6 | 0 |$' "$tmp/fpga/report.md" || fail "census row: $(cat "$tmp/fpga/report.md")"
+grep -q '^| mcadsw_engine (combinational) | 0 | 0 | 0 |$' "$tmp/fpga/report.md" || fail "combinational engine row"
+grep -q 'u_soc.u_engine (mcadsw_engine)' "$tmp/fpga/report.md" || fail "instances with their modules"
 # 2. Placed at 70.25 MHz: 30 x 2 226 986 cycles needs 66.8 MHz: met; frames a second.
 setup ecp5_summary_placed.json; run
 grep -q '| ECP5 Fmax >= 30 x 2226986 cycles = 66.8 MHz | 70.2 MHz | yes |' <<<"$out" || fail "Fmax bar: $out"
