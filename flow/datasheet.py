@@ -3,8 +3,11 @@
 # SPDX-License-Identifier: Apache-2.0
 """The datasheet: docs/datasheet.md, its timing diagrams and its HTML (make docs).
 
-    flow/datasheet.py collect [--build DIR]   figures from the flows' summaries in DIR (default
-                                              build/) into docs/datasheet/figures.json
+    flow/datasheet.py collect [--build DIR] [--only PREFIX ...]
+                                              figures from the flows' summaries in DIR (default
+                                              build/) into docs/datasheet/figures.json; with
+                                              --only, the figures whose key starts with a
+                                              PREFIX (e.g. xc7.), the others kept as they are
     flow/datasheet.py render [--html FILE]    docs/datasheet.md from docs/datasheet/template.md,
                                               the figures, the wrapper's ports, the register map
                                               and the timing diagrams (WaveJSON in
@@ -109,10 +112,14 @@ def git_head():
         return "unknown"
 
 
-def collect(build):
+def collect(build, only=None):
+    old = json.loads(FIGURES.read_text()) if only and FIGURES.is_file() else {}
     figs = {}
     head = git_head()
     for key, (rel, get, unit, cmd) in SOURCES.items():
+        if only and not any(key.startswith(o) for o in only) and key in old:
+            figs[key] = old[key]
+            continue
         path = build / rel
         entry = {"unit": unit, "source": "build/" + rel, "command": cmd}
         try:
@@ -124,6 +131,8 @@ def collect(build):
             entry["value"] = None
         figs[key] = entry
     FIGURES.write_text(json.dumps(figs, indent=1, sort_keys=True) + "\n")
+    if only and not any(k.startswith(o) for k in SOURCES for o in only):
+        raise SystemExit(f"datasheet: no figure key starts with {' or '.join(only)}")
     got = sum(1 for f in figs.values() if f["value"] is not None)
     print(f"datasheet: {got} of {len(figs)} figures collected from {build} into {FIGURES.relative_to(ROOT)}")
     for k, f in figs.items():
@@ -246,9 +255,10 @@ def main(argv):
     ap.add_argument("--build", default=str(ROOT / "build"))
     ap.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"))
     ap.add_argument("--html")
+    ap.add_argument("--only", nargs="+", help="collect: only the figures whose key starts with one of these")
     a = ap.parse_args(argv)
     if a.cmd == "collect":
-        collect(pathlib.Path(a.build))
+        collect(pathlib.Path(a.build), a.only)
         return 0
     text = render(a.gen_rtl_pkg)
     svgs = render_svgs()
