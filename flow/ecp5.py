@@ -174,7 +174,8 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
     simulated annealing) or static (electrostatic); HEAP_BETA: heap's largest placement density
     (nextpnr's default 0.9; lower spreads the cells). STAGE: "all"; "place", which stops after
     placement and writes the placed design (OUT/placed.json, nextpnr's --no-route --write);
-    or "route", which routes the placed design DESIGN_IN (a placed.json of a "place" stage) as
+    or "route", which routes the placed design DESIGN_IN (a placed.json of a "place" stage,
+    without the settings nextpnr wrote into it: they would override this command line's) as
     it is (--no-pack --no-place), so routers, seeds and ROUTER_OPTS (nextpnr options such as
     --router2-alt-weights) can be compared on one placement. Returns the step's figures."""
     b = BOARDS[board]
@@ -566,9 +567,19 @@ def route(a):
     board = prior.get("board") or "ulx3s-85f"
     log(f"nextpnr-ecp5 ({a.router}, seed {a.seed}{', ' + ' '.join(opts) if opts else ''}) of {placed}, "
         f"engine clock {clk_mhz:g} MHz")
+    # nextpnr keeps its settings in the design it writes (the router, the seed, ...) and takes
+    # them back over its command line's when it reads one: the placement goes in without them.
+    design = json.loads(placed.read_text())
+    for m in design["modules"].values():
+        sets = m.get("settings", {})
+        for k in [k for k in sets if k in ("router", "seed") or k.startswith("router")]:
+            del sets[k]
+    (out / "placed_in.json").write_text(json.dumps(design))
+    del design
     try:
         p = place_route(out, board, clk_mhz, seed=a.seed, limit_min=a.minutes, router=a.router,
-                        heatmap=a.heatmap, stage="route", design_in=placed, router_opts=opts)
+                        heatmap=a.heatmap, stage="route", design_in=out / "placed_in.json",
+                        router_opts=opts)
     except PnrTimeout as t:
         summary["problems"].append(str(t))
     else:
@@ -577,6 +588,10 @@ def route(a):
         summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
         summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con} for k, (ach, con) in fmax.items()}
         summary["problems"] += problems
+        # router2 logs its own lines (then runs router1 to check the result); router1 does not.
+        ran2 = re.search(r"^Info: Router2", (out / "nextpnr.log").read_text(errors="replace"), re.M)
+        if bool(ran2) != (a.router == "router2"):
+            summary["problems"].append(f"nextpnr did not run {a.router} ({out / 'nextpnr.log'})")
         log("routed: Fmax " + ", ".join(f"{ach:.1f} MHz (constraint {con:.0f})" for ach, con in fmax.values())
             + f"; bitstream {out / 'design.bit'}")
     return finish(summary, out, t0)
