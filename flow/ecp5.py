@@ -16,7 +16,8 @@ configuration and the bitstream, and the logs.
                              --out DIR                                       (make fpga)
     python3 flow/ecp5.py place --netlist DIR [--placer heap|static] [--seed N] --out DIR2
     python3 flow/ecp5.py route --placed DIR [--router R] [--seed N] [--alt-weights] [--tmg-ripup]
-                               [--heatmap] [--minutes M] --out DIR2
+                               [--no-tmdriv] [--set router2/KEY=VALUE ...] [--heatmap]
+                               [--minutes M] --out DIR2
 
 places and routes one small block of the RTL (the engine's queue, rtl/mcadsw_fifo.sv,
 32 bits x 8) on the ULX3S's LFE5U-85F at 100 MHz, packs its bitstream and checks nextpnr's
@@ -558,12 +559,16 @@ def route(a):
     out.mkdir(parents=True, exist_ok=True)
     for f in ("nextpnr-report.json", "design.config", "design.bit", "summary.json"):
         (out / f).unlink(missing_ok=True)
-    opts = (["--router2-alt-weights"] if a.alt_weights else []) + (["--tmg-ripup"] if a.tmg_ripup else [])
+    bad = [k for k, _ in (a.set or []) if not k.startswith("router2/")]
+    if bad:
+        raise FlowError(f"--set takes router2's settings (router2/...), not {', '.join(bad)}", 2)
+    opts = (["--router2-alt-weights"] if a.alt_weights else []) + (["--tmg-ripup"] if a.tmg_ripup else []) \
+        + (["--no-tmdriv"] if a.no_tmdriv else [])
     t0 = time.time()
     summary = {k: prior.get(k) for k in ("top", "target", "dmax", "par", "rectifier", "board", "pll",
                                          "need", "placer", "placed_fmax_mhz")}
     summary.update({"placed": str(placed), "clk_mhz": clk_mhz, "router": a.router, "seed": a.seed,
-                    "router_options": opts, "place_route": None, "problems": []})
+                    "router_options": opts, "router2_settings": dict(a.set or []), "place_route": None, "problems": []})
     board = prior.get("board") or "ulx3s-85f"
     log(f"nextpnr-ecp5 ({a.router}, seed {a.seed}{', ' + ' '.join(opts) if opts else ''}) of {placed}, "
         f"engine clock {clk_mhz:g} MHz")
@@ -572,8 +577,10 @@ def route(a):
     design = json.loads(placed.read_text())
     for m in design["modules"].values():
         sets = m.get("settings", {})
-        for k in [k for k in sets if k in ("router", "seed") or k.startswith("router")]:
+        for k in [k for k in sets if k in ("router", "seed", "timing_driven") or k.startswith("router")]:
             del sets[k]
+        if m.get("attributes", {}).get("top"):
+            sets.update(dict(a.set or []))
     (out / "placed_in.json").write_text(json.dumps(design))
     del design
     try:
@@ -669,9 +676,16 @@ def main(argv):
     ro.add_argument("--clk-mhz", type=float, help="clock constraint (default: the placed run's engine clock)")
     ro.add_argument("--alt-weights", action="store_true", help="router2's alternate weights (--router2-alt-weights)")
     ro.add_argument("--tmg-ripup", action="store_true", help="nextpnr's timing-driven rip-up (--tmg-ripup)")
+    ro.add_argument("--no-tmdriv", action="store_true",
+                    help="route for congestion alone, not timing (nextpnr's --no-tmdriv); the report's Fmax still says "
+                    "whether the clock is met")
     ro.add_argument("--heatmap", action="store_true",
                     help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
     ro.add_argument("--minutes", type=float, default=None, help="nextpnr stopped after this many minutes")
+    ro.add_argument("--set", action="append", type=lambda kv: tuple(kv.split("=", 1)), metavar="KEY=VALUE",
+                    help="a setting of router2 that nextpnr has no option for, written into the design it reads "
+                    "(router2/currCongWeightMult=2.0, router2/histCongWeight=1.0, router2/bbMargin/x=3, "
+                    "router2/bbMargin/y=3, router2/initCurrCongWeight=0.5: nextpnr's defaults)")
     a = ap.parse_args(argv)
     try:
         return {"smoke": smoke, "check": check, "block": block, "soc": soc, "place": place,
