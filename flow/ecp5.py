@@ -306,11 +306,8 @@ def check_report(path):
 
 
 def smoke(a):
-    out = Path(a.out).resolve()
-    out.mkdir(parents=True, exist_ok=True)
-    for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
-              "summary.json"):
-        (out / f).unlink(missing_ok=True)
+    out = output_dir(a.out, ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config",
+                             "design.bit", "summary.json", "placed_in.json", "place/placed.json"))
     rtl = ROOT / "rtl"
     t0 = time.time()
     log(f"synth_ecp5 of mcadsw_fifo (W = 32, DEPTH = 8) into {out}")
@@ -436,11 +433,9 @@ def estimate_paths(netlist, out_json, groups=40):
 def soc(a):
     if a.heatmap and a.router != "router2":
         raise FlowError("--heatmap is router2's: give --router router2 too", 2)
-    out = Path(a.out).resolve()
-    out.mkdir(parents=True, exist_ok=True)
-    for f in ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config", "design.bit",
-              "summary.json", "blocks.json", "paths.json", "placed_in.json", "place/placed.json"):
-        (out / f).unlink(missing_ok=True)
+    out = output_dir(a.out, ("netlist.json", "pack-report.json", "nextpnr-report.json", "design.config",
+                             "design.bit", "summary.json", "blocks.json", "paths.json", "placed_in.json",
+                             "place/placed.json"))
     t0 = time.time()
     divs, clk_mhz = pll_divs(a.clk_mhz)
     fpga = not a.asic
@@ -534,6 +529,18 @@ def finish(summary, out, t0):
     return 1 if summary["problems"] else 0
 
 
+def output_dir(path, stale, src=None, src_opt=""):
+    """PATH resolved and made, without the files STALE of an earlier run (so a failed step
+    leaves none behind); it must differ from SRC, the folder given by SRC_OPT."""
+    out = Path(path).resolve()
+    if src is not None and out == src:
+        raise FlowError(f"--out must differ from {src_opt}", 2)
+    out.mkdir(parents=True, exist_ok=True)
+    for f in stale:
+        (out / f).unlink(missing_ok=True)
+    return out
+
+
 def place(a):
     """Places the packed netlist of a `soc` run (NETLIST/netlist.json, from --no-pnr or a
     whole run) into OUT/placed.json and stops: one placement for several `route` runs."""
@@ -541,12 +548,7 @@ def place(a):
     if not (src / "netlist.json").is_file() or not (src / "summary.json").is_file():
         raise FlowError(f"{src}: no netlist.json and summary.json of flow/ecp5.py soc", 2)
     prior = json.loads((src / "summary.json").read_text())
-    out = Path(a.out).resolve()
-    if out == src:
-        raise FlowError("--out must differ from --netlist", 2)
-    out.mkdir(parents=True, exist_ok=True)
-    for f in ("netlist.json", "placed.json", "nextpnr-report.json", "summary.json"):
-        (out / f).unlink(missing_ok=True)
+    out = output_dir(a.out, ("placed.json", "nextpnr-report.json", "summary.json"), src, "--netlist")
     t0 = time.time()
     summary = {k: prior.get(k) for k in ("top", "target", "dmax", "par", "rectifier", "board", "clk_mhz",
                                          "pll", "need")}
@@ -604,12 +606,8 @@ def route(a):
         raise FlowError(f"no engine clock: give --clk-mhz ({src / 'summary.json'} has none)", 2)
     if a.heatmap and a.router != "router2":
         raise FlowError("--heatmap is router2's: give --router router2 too", 2)
-    out = Path(a.out).resolve()
-    if out == src:
-        raise FlowError("--out must differ from --placed (the placement's folder is kept as it is)", 2)
-    out.mkdir(parents=True, exist_ok=True)
-    for f in ("nextpnr-report.json", "design.config", "design.bit", "summary.json"):
-        (out / f).unlink(missing_ok=True)
+    out = output_dir(a.out, ("nextpnr-report.json", "design.config", "design.bit", "summary.json"), src,
+                     "--placed (the placement's folder is kept as it is)")
     bad = [k for k, _ in (a.set or []) if not k.startswith("router2/")]
     if bad:
         raise FlowError(f"--set takes router2's settings (router2/...), not {', '.join(bad)}", 2)
