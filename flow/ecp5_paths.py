@@ -17,7 +17,8 @@ nextpnr's 40.1 ns after placement (24.94 MHz).
 
 Start points: flip-flop outputs (TRELLIS_FF.Q) and block-RAM outputs (DP16KD, unregistered:
 clock to output). End points: flip-flop inputs (D, CE, LSR), block-RAM and LUT-RAM inputs.
-Combinational arcs: LUT4, the LUT-combining muxes (PFUMX, L6MUX21), carry cells (CCU2C:
+Combinational arcs: LUT4, the LUT-combining muxes (PFUMX, L6MUX21: no net from the LUTs or
+muxes they combine, which reach them on the slice's dedicated wires), carry cells (CCU2C:
 carry in to carry out on the dedicated chain, without a net), multipliers (MULT18X18D,
 unregistered as synth_ecp5 maps them), LUT-RAM reads (TRELLIS_DPR16X4 read address to data).
 Exit 0; 2 on an unreadable netlist.
@@ -49,8 +50,10 @@ def arcs(cell):
     outs = [p for p, d in pd.items() if d == "output"]
     if t == "LUT4":
         return [(ins, outs, LUT, True)]
-    if t in ("PFUMX", "L6MUX21"):
-        return [(ins, outs, MUX, True)]
+    if t == "PFUMX":     # its LUT inputs come from the slice's own two LUTs
+        return [(["ALUT", "BLUT"], outs, MUX, False), (["C0"], outs, MUX, True)]
+    if t == "L6MUX21":   # its data inputs from the neighbouring slices' PFUMX, dedicated
+        return [(["D0", "D1"], outs, MUX, False), (["SD"], outs, MUX, True)]
     if t == "CCU2C":
         data = [p for p in ins if p != "CIN"]
         return [(data, ["S0", "S1"], CARRY_IN_S, True), (data, ["COUT"], CARRY_IN_CO, True),
@@ -80,6 +83,14 @@ def analyse(netlist):
     if top is None:
         raise ValueError(f"{netlist}: no top module")
     cells = mods[top]["cells"]
+    global NET_NAMES
+    NET_NAMES = {}
+    for name, n in mods[top].get("netnames", {}).items():
+        if n.get("hide_name"):
+            continue
+        for i, b in enumerate(n.get("bits", [])):
+            if isinstance(b, int):
+                NET_NAMES.setdefault(b, name if len(n["bits"]) == 1 else f"{name}[{i}]")
     arr, pred = {}, {}
     users = defaultdict(list)           # bit -> [(cell, output bits, delay)]
     for cn, c in cells.items():
@@ -128,7 +139,25 @@ def analyse(netlist):
                 if isinstance(b, int) and b in arr:
                     ends.append((round(arr[b] + NET + SETUP, 2), b, cn, p))
     ends.sort(key=lambda e: -e[0])
+    analyse.arrivals = arr
     return ends, cells, pred
+
+
+NET_NAMES = {}
+
+
+def trace(end, cells, pred, arrivals):
+    """The cells of an end point's slowest path, first to last: lines of arrival (ns), cell
+    type, the cell's RTL lines, and the name of the net it drives (the netlist's, when Yosys
+    kept one)."""
+    steps, x = [], end[1]
+    while x in pred:
+        b, c = pred[x]
+        steps.append((arrivals.get(x, 0.0), cells[c]["type"], rtl_lines(cells[c]), NET_NAMES.get(x, "")))
+        if b is None:
+            break
+        x = b
+    return [f"{t:6.2f}  {ty:<12} {ln:<40} {net}" for t, ty, ln, net in reversed(steps)]
 
 
 def groups(ends, cells, pred):
@@ -149,7 +178,8 @@ def groups(ends, cells, pred):
         if key in seen:
             continue
         seen.add(key)
-        out.append({"ns": t, "from": key[0], "to": key[1], "through": list(reversed(through))})
+        out.append({"ns": t, "from": key[0], "to": key[1], "through": list(reversed(through)),
+                    "end": (t, b, cn, p)})
     return out
 
 
@@ -158,6 +188,8 @@ def main(argv):
     ap.add_argument("netlist")
     ap.add_argument("--groups", type=int, default=30, help="path groups listed (default 30)")
     ap.add_argument("--json", help="write the groups listed to this file")
+    ap.add_argument("--trace", type=int, default=0, metavar="K",
+                    help="print the cells of the K-th group's path (1: the slowest)")
     a = ap.parse_args(argv)
     try:
         ends, cells, pred = analyse(a.netlist)
@@ -171,6 +203,15 @@ def main(argv):
     for g in gs:
         print(f"{g['ns']:6.2f} ns  {g['from']}  ->  {g['to']}"
               + (f"   (through {', '.join(g['through'][:4])})" if g["through"] else ""))
+    if a.trace:
+        if not 1 <= a.trace <= len(gs):
+            print(f"ecp5_paths: --trace {a.trace}: {len(gs)} groups listed", file=sys.stderr)
+            return 2
+        print(f"path of group {a.trace} (arrival ns, cell, RTL lines, net driven):")
+        for line in trace(gs[a.trace - 1]["end"], cells, pred, analyse.arrivals):
+            print("  " + line)
+    for g in gs:
+        del g["end"]
     if a.json:
         Path(a.json).write_text(json.dumps({"worst_ns": worst, "groups": gs}, indent=1) + "\n")
     return 0
