@@ -8,7 +8,7 @@
 //   2  the fill from the right (the filled value of row y replaces row y - 2 in
 //      its median row buffer), the mask byte of row y
 //   3  sort the column {row r - 1, row r, row r + 1}, shift it into the window
-//   4  the 3x3 median of row r = y - 1 (edges replicated)
+//   4  the 3x3 median of row r = y - 1 (edges replicated; FPGA target: in two cycles)
 //   5  the output word
 // Mask and output words go to the stage's write queue (mask_push_o,
 // out_push_o; both may come in the same cycle, the mask word first).
@@ -118,9 +118,10 @@ module mcadsw_post_fill #(
     hi = (hi < c) ? hi : c;
     med3 = (lo > hi) ? lo : hi;
   endfunction
-  function automatic logic [VB-1:0] median9(input logic [3*VB-1:0] s0, input logic [3*VB-1:0] s1,
-                                            input logic [3*VB-1:0] s2);
-    logic [VB-1:0] lo, hi, a, b;
+  // The three values whose median is the median of nine: {lo, a, hi}.
+  function automatic logic [3*VB-1:0] median9_parts(input logic [3*VB-1:0] s0, input logic [3*VB-1:0] s1,
+                                                    input logic [3*VB-1:0] s2);
+    logic [VB-1:0] lo, hi, a;
     lo = s0[2*VB +: VB];
     if (s1[2*VB +: VB] > lo) lo = s1[2*VB +: VB];
     if (s2[2*VB +: VB] > lo) lo = s2[2*VB +: VB];
@@ -128,9 +129,43 @@ module mcadsw_post_fill #(
     if (s1[0 +: VB] < hi) hi = s1[0 +: VB];
     if (s2[0 +: VB] < hi) hi = s2[0 +: VB];
     a = med3(s0[VB +: VB], s1[VB +: VB], s2[VB +: VB]);
-    b = med3(lo, a, hi);
-    median9 = b;
+    median9_parts = {lo, a, hi};
   endfunction
+  function automatic logic [VB-1:0] med3_of(input logic [3*VB-1:0] parts);
+    med3_of = med3(parts[2*VB +: VB], parts[VB +: VB], parts[0 +: VB]);
+  endfunction
+
+  // Stage 4's median into stage 5: in one cycle (ASIC target), or in two on the FPGA
+  // target (the three values registered between the two halves: the median of nine
+  // is six compare-selects in series, too long for one cycle of the FPGA's clock).
+  logic          s5_go;                        // a median enters stage 5
+  logic [VB-1:0] s5_median;
+  logic [CW-1:0] s5_x;
+  logic          s4b_busy;                     // FPGA target: a median between its halves
+  if (mcadsw_pkg::FPGA != 0) begin : g_median_split
+    logic            s4b_valid_q;
+    logic [3*VB-1:0] s4b_parts_q;
+    logic [CW-1:0]   s4b_x_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) s4b_valid_q <= 1'b0;
+      else         s4b_valid_q <= s4_valid_q;
+    end
+    always_ff @(posedge clk_i) begin
+      if (s4_valid_q) begin
+        s4b_parts_q <= median9_parts(win0_q, win1_q, win2_q);
+        s4b_x_q     <= s4_x_q;
+      end
+    end
+    assign s5_go     = s4b_valid_q;
+    assign s5_median = med3_of(s4b_parts_q);
+    assign s5_x      = s4b_x_q;
+    assign s4b_busy  = s4b_valid_q;
+  end else begin : g_median_one
+    assign s5_go     = s4_valid_q;
+    assign s5_median = med3_of(median9_parts(win0_q, win1_q, win2_q));
+    assign s5_x      = s4_x_q;
+    assign s4b_busy  = 1'b0;
+  end
 
   // ---- Stage 5: the output word --------------------------------------------------------------
   logic [31:0] out_word_q, out_data;           // the output word so far / with this pixel
@@ -149,7 +184,7 @@ module mcadsw_post_fill #(
   assign out_push_o  = s5_valid_q && medians_q && out_low;
   assign out_entry_o = {1'b1, wide_i ? s5_x_q >> 1 : s5_x_q >> 2, out_be, out_data};
 
-  assign done_o = issued_q && !s2_valid_q && !s3_valid_q && !s4_valid_q && !s5_valid_q;
+  assign done_o = issued_q && !s2_valid_q && !s3_valid_q && !s4_valid_q && !s4b_busy && !s5_valid_q;
 
   // ---- Buffer ports ------------------------------------------------------------------------
   always_ff @(posedge clk_i) begin
@@ -181,9 +216,9 @@ module mcadsw_post_fill #(
         s4_x_q <= s3_x_q + CW'(1);
       end
     end
-    if (s4_valid_q) begin
-      s5_median_q <= median9(win0_q, win1_q, win2_q);
-      s5_x_q      <= s4_x_q;
+    if (s5_go) begin
+      s5_median_q <= s5_median;
+      s5_x_q      <= s5_x;
     end
   end
 
@@ -238,7 +273,7 @@ module mcadsw_post_fill #(
       // the flush step shifts column 0 in again: left edge).
       s4_valid_q <= s3_valid_q && !(s3_first_q && !s3_flush_q);
       // Stage 4: the median; stage 5: the output word.
-      s5_valid_q <= s4_valid_q;
+      s5_valid_q <= s5_go;
       if (s5_valid_q && medians_q) begin
         if (out_low) begin
           out_word_q <= '0;
@@ -272,7 +307,8 @@ module mcadsw_post_fill #(
     end
   end
 
-  `MCADSW_ASSUME(PassStartsWhenIdle, !(start_i && (s2_valid_q || s3_valid_q || s4_valid_q || s5_valid_q)))
+  `MCADSW_ASSUME(PassStartsWhenIdle, !(start_i && (s2_valid_q || s3_valid_q || s4_valid_q || s4b_busy ||
+                                                 s5_valid_q)))
 
 endmodule
 

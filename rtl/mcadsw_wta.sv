@@ -184,7 +184,14 @@ module mcadsw_wta #(
         n16 = {1'b0, b_num_q[m*(FB+1) +: FB+1], 4'b0000};
         den = (FB + 6)'(b_den_q[m*(FB+2) +: FB+2]);
         q = '0;
-        for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= odd_times(den, k));
+        if (mcadsw_pkg::FPGA != 0) begin
+          // FPGA target: the tests hold for k = 1 .. q and fail above (den > 0: the
+          // odd multiples grow), so q is where they change (a priority select), not
+          // their sum (a chain of adders).
+          for (int k = 1; k <= 8; k++) if (n16 >= odd_times(den, k)) q = 4'(k);
+        end else begin
+          for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= odd_times(den, k));
+        end
         if (!b_ok_q[m] || den == '0) q = '0;
         sub_o[m*SPB +: SPB] <= b_neg_q[m] ? {b_d_q[m*DB +: DB], 4'b0000} - SPB'(q)
                                           : {b_d_q[m*DB +: DB], 4'b0000} + SPB'(q);
