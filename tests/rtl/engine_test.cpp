@@ -748,6 +748,12 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   with("tile stride below 4 x height", 4, [](auto& c) { c.tile_stride = 156; });
   with("tile stride not a multiple of 4", 4, [](auto& c) { c.tile_stride = 162; });
   with("tiled right Y reaches the output", 6, [](auto& c) { c.tile_stride = 400; });
+  // A tiled plane of exactly 256 MiB (16 columns of 4 pixels, 16 MiB each): its size has only
+  // bit 28 set (a mutant forcing that bit of the product to 0 survived a sample).
+  with("tiled planes of 256 MiB reach the output", 6, [](auto& c) {
+    c.width = 64;
+    c.tile_stride = 1u << 24;
+  });
   with("tiled left V beyond 4 GiB (raster, 2560 bytes, would end at 4 GiB)", 9, [](auto& c) {
     c.tile_stride = 184;  // 15 x 184 = 2760 bytes; raster 64 x 40 = 2560
     c.base_lv = 0xfffff600u;
@@ -761,6 +767,20 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
     c.stride = 56;
   });
   lr("control: valid tiled LR configuration", 0, [](auto& c) { c.tile_stride = 160; });
+  // dR and the mask span stride x height bytes: 4 MiB x 64 rows, exactly 256 MiB (only bit 28
+  // of the product set; a mutant forcing that bit to 0 survived a sample). The mask starts
+  // 4 KiB before dR's end.
+  const auto lr_big = [&](const char* what, int code, uint32_t mask) {
+    lr(what, code, [=](auto& c) {
+      c.tile_stride = 256;
+      c.height = 64;
+      c.stride = 1u << 22;
+      c.base_dr = 0x10000000u;
+      c.base_mask = mask;
+    });
+  };
+  lr_big("LR mode, 256 MiB dR reaches the mask", 6, 0x1ffff000u);
+  lr_big("control: LR mode, 256 MiB dR and mask apart", 0, 0x20000000u);
   with("input plane beyond 4 GiB", 9, [](auto& c) { c.base_lv = 0xfffff800u; });
   for (const BadConfigs::Bad& b : bad.list) {
     const sim::EngineResult r = sim::run_raw(b.cfg, {}, 1000);
