@@ -77,20 +77,20 @@ def rtl_lines(cell):
 
 def analyse(netlist):
     """Arrival times of the top module's nets; returns (end points, the cells, predecessor
-    map): end points [(arrival with setup, bit, cell, port)], slowest first."""
+    map, arrival times, net names): end points [(arrival with setup, bit, cell, port)],
+    slowest first; net names by bit, where Yosys kept one."""
     mods = json.loads(Path(netlist).read_text())["modules"]
     top = next((k for k, v in mods.items() if v.get("attributes", {}).get("top")), None)
     if top is None:
         raise ValueError(f"{netlist}: no top module")
     cells = mods[top]["cells"]
-    global NET_NAMES
-    NET_NAMES = {}
+    names = {}
     for name, n in mods[top].get("netnames", {}).items():
         if n.get("hide_name"):
             continue
         for i, b in enumerate(n.get("bits", [])):
             if isinstance(b, int):
-                NET_NAMES.setdefault(b, name if len(n["bits"]) == 1 else f"{name}[{i}]")
+                names.setdefault(b, name if len(n["bits"]) == 1 else f"{name}[{i}]")
     arr, pred = {}, {}
     users = defaultdict(list)           # bit -> [(cell, output bits, delay)]
     for cn, c in cells.items():
@@ -139,21 +139,17 @@ def analyse(netlist):
                 if isinstance(b, int) and b in arr:
                     ends.append((round(arr[b] + NET + SETUP, 2), b, cn, p))
     ends.sort(key=lambda e: -e[0])
-    analyse.arrivals = arr
-    return ends, cells, pred
+    return ends, cells, pred, arr, names
 
 
-NET_NAMES = {}
-
-
-def trace(end, cells, pred, arrivals):
+def trace(end, cells, pred, arrivals, names):
     """The cells of an end point's slowest path, first to last: lines of arrival (ns), cell
     type, the cell's RTL lines, and the name of the net it drives (the netlist's, when Yosys
     kept one)."""
     steps, x = [], end[1]
     while x in pred:
         b, c = pred[x]
-        steps.append((arrivals.get(x, 0.0), cells[c]["type"], rtl_lines(cells[c]), NET_NAMES.get(x, "")))
+        steps.append((arrivals.get(x, 0.0), cells[c]["type"], rtl_lines(cells[c]), names.get(x, "")))
         if b is None:
             break
         x = b
@@ -192,7 +188,7 @@ def main(argv):
                     help="print the cells of the K-th group's path (1: the slowest)")
     a = ap.parse_args(argv)
     try:
-        ends, cells, pred = analyse(a.netlist)
+        ends, cells, pred, arrivals, names = analyse(a.netlist)
     except (OSError, ValueError, KeyError, StopIteration) as e:
         print(f"ecp5_paths: {e}", file=sys.stderr)
         return 2
@@ -208,7 +204,7 @@ def main(argv):
             print(f"ecp5_paths: --trace {a.trace}: {len(gs)} groups listed", file=sys.stderr)
             return 2
         print(f"path of group {a.trace} (arrival ns, cell, RTL lines, net driven):")
-        for line in trace(gs[a.trace - 1]["end"], cells, pred, analyse.arrivals):
+        for line in trace(gs[a.trace - 1]["end"], cells, pred, arrivals, names):
             print("  " + line)
     for g in gs:
         del g["end"]
