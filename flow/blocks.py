@@ -217,14 +217,13 @@ def read_table(path):
 # budget (constraints/budget.json rect_*), and kept out of the engine's totals.
 RECT_GROUP = "rectifier"
 GROUPS = {"mcadsw_weight_gen": "weight_generator", "mcadsw_cost_agg": "cost_aggregator_wta",
-          "mcadsw_mem_ctrl": "memory_controller", "mcadsw_win_reader": "memory_controller",
           "mcadsw_scheduler": "block_scheduler", "mcadsw_depth_fifo": "depth_fifo",
           "mcadsw_post": "post_stage", "mcadsw_post_check": "post_stage",
           "mcadsw_post_fill": "post_stage", "mcadsw_fifo": "post_stage", "mcadsw_engine": "top_registers_counters",
           "mcadsw_cfg_check": "top_registers_counters", "mcadsw_frame_ctrl": "top_registers_counters",
           "mcadsw_win_geom": "top_registers_counters", "mcadsw_pass_cfg": "top_registers_counters",
           "mcadsw_port_mux": "top_registers_counters",
-          "mcadsw_rect": RECT_GROUP, "mcadsw_rect_mark": RECT_GROUP, "mcadsw_rect_check": RECT_GROUP}
+          "mcadsw_fetch": "memory_controller", "mcadsw_rectifier": RECT_GROUP}
 GROUP_NAMES = {
     "census_left": "census left (transformer + buffer)", "census_right": "census right (transformer + buffer)",
     "census_left_right": "census left + right (one module at this DMAX)",

@@ -14,9 +14,8 @@
   REPORT_ONLY=1                       the summary of the last run again (after editing
                                       tests/mutate/survivors.txt)
   NO_RECT=1                           leave the rectifier out of the mutant list: no mutant
-                                      in the cells under u_engine.u_rect, u_engine.u_rect_mark
-                                      and u_engine.u_rect_check (the mcadsw_rect* modules and
-                                      the FIFOs inside them); the N mutants are spread over the
+                                      in the cells under u_engine.u_rectifier (the
+                                      mcadsw_rect* modules and the FIFOs inside them); the N mutants are spread over the
                                       rest. Default 0 (the whole design). (A few cells that
                                       Yosys's optimisation makes after flattening carry no
                                       instance path and stay in the list.)
@@ -377,12 +376,11 @@ def mutant_design(out, n, seed, no_rect):
     if design.is_file() and stamp_file.is_file() and stamp_file.read_text().strip() == stamp:
         return design
     # NO_RECT=1: the mutant list is drawn from every cell but those of the rectifier's
-    # instances (flattened names $flatten\u_engine.\u_rect.* and u_engine.u_rect.*, the same
-    # for u_rect_mark and u_rect_check).
+    # instance (flattened names $flatten\u_engine.\u_rectifier.* and u_engine.u_rectifier.*).
     mut_sel = ""
     if no_rect:
         mut_sel = "select -del" + "".join(f" c:$flatten\\u_engine.\\{i}.* c:u_engine.{i}.*"
-                                          for i in ("u_rect", "u_rect_mark", "u_rect_check")) + ";"
+                                          for i in ("u_rectifier",)) + ";"
     log(f"Yosys: elaborating mcadsw_top, {n} mutants (seed {seed}{', not in the rectifier' if no_rect else ''}) "
         f"behind mutsel[{width - 1}:0]")
     for f in ("instances.txt", "design.stamp"):
@@ -416,7 +414,7 @@ def mutant_design(out, n, seed, no_rect):
     listed = sum(ln.startswith("mutate ") for ln in (out / "list.ys").read_text().splitlines())
     if listed != n:
         raise FlowError(f"Yosys listed {listed} mutants, not {n}", 2)
-    if no_rect and re.search(r"-cell (\$flatten\\)?u_engine\.\\?u_rect(_mark|_check)?\.",
+    if no_rect and re.search(r"-cell (\$flatten\\)?u_engine\.\\?u_rectifier\.",
                              (out / "list.ys").read_text()):
         raise FlowError(f"NO_RECT=1 but Yosys listed a mutant in the rectifier ({out}/list.ys)", 2)
     stamp_file.write_text(stamp + "\n")

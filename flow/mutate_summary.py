@@ -85,7 +85,7 @@ def summarize(out, list_path, list_name, n, seed, sample, seconds, jobs, no_rect
     print(f"mutate: {total} mutants: {killed} killed, {equivalent} equivalent, {open_} open (listed), "
           f"{unlisted} unlisted survivors; score {score:.1f} % (killed / non-equivalent; target >= 95 %)")
     if no_rect:
-        print("mutate: the rectifier (u_engine.u_rect, u_rect_mark, u_rect_check) was left out (NO_RECT=1)")
+        print("mutate: the rectifier (u_engine.u_rectifier) was left out (NO_RECT=1)")
     print("mutate: per module (total killed survived equivalent):")
     for name, m in sorted(per_module.items()):
         print(f"  {name:<20s} {m['total']:4d} {m['killed']:4d} {m['survived']:4d} {m['equivalent']:4d}")

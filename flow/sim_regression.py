@@ -94,7 +94,7 @@ WAVE_GROUPS = [
      "m_awlen_o m_wvalid_o m_wready_i m_wlast_o m_bvalid_i wr_idle_o drain_i"),
     ("Top", ENG, "start_i busy_o done_o error_o mem_req_o mem_gnt_i mem_we_o mem_addr_o mem_rvalid_i mem_wr_idle_i"),
     ("Scheduler", f"{ENG}.u_scheduler", "prep_start_o prep_bank_o prep_done_i agg_bank_o job_valid_o job_ready_i job_row_o"),
-    ("Memory controller", f"{ENG}.u_mem_ctrl", "rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o"),
+    ("Memory controller", f"{ENG}.u_fetch.u_mem_ctrl", "rd_req_i rd_gnt_o rd_rvalid_o wr_req_i wr_gnt_o"),
     ("Census left", f"{ENG}.u_census_l", "state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o"),
     ("Census right", f"{ENG}.u_census_r", "state_q pix_valid_i pix_ready_o wcnt_q ki_q ring_free_i done_o"),
     ("Weight generator", f"{ENG}.u_weight_gen", "state_q pix_valid_i pix_ready_o done_o r_q occ_q row_ready_o row_take_i"),

@@ -194,7 +194,7 @@ def read_sta(out, instances=()):
     """The figures of OpenSTA's logs in out: wns and worst slack (ns), the critical
     path, the nets of the crossing check (slowest first), the violating
     endpoints per block instance, and for each top-level instance named in
-    instances (u_rect, ...) its endpoints and their worst slack (endpoint_slack)."""
+    instances (u_rectifier, ...) its endpoints and their worst slack (endpoint_slack)."""
     sta_log = (out / "sta.log").read_text(errors="replace")
 
     def first(pattern, text, field):

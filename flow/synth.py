@@ -31,8 +31,8 @@ and 2), sta.py (step 4), soc.py (step 5), synth_report.py (step 6), fpga.py
   5. the SoC wrapper's blocks (mcadsw_regs, mcadsw_axi_master) are mapped
      (flow/soc.tcl) and timed alone (flow/sta_alone.tcl);
   6. report.md and summary.json, written last (deleted at the start). The
-     rectifier (rtl/rect/: the engine's blocks u_rect, u_rect_mark,
-     u_rect_check, group "rectifier" of flow/blocks.py) is mapped and timed in
+     rectifier (rtl/rect/: the engine's block u_rectifier, its pass, mark
+     step and configuration check, group "rectifier" of flow/blocks.py) is mapped and timed in
      steps 2 to 4 as every block is, and reported apart: its gates, flip-flops and
      memory are the rect_* figures, not in the engine's (nand2_eq, flip_flops,
      memory_kB_engine, soc_total_nand2_eq); its worst slack is the worst of the

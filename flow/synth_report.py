@@ -116,9 +116,9 @@ def render(s):
                  f"{b['yosys_seconds']} | {b['peak_MB']} | {'reused' if b['reused'] else 'synthesised'} |")
     if rect_mods:
         r += ["", "## Rectifier, in the engine, reported apart", "",
-              "The rectifier of `rtl/rect/` is inside the engine: its pass (`mcadsw_rect`, instance `u_rect`),",
-              "mark step (`mcadsw_rect_mark`, `u_rect_mark`) and configuration check (`mcadsw_rect_check`,",
-              "`u_rect_check`) are blocks of the engine, mapped, assembled and timed with it (group",
+              "The rectifier of `rtl/rect/` is inside the engine: `mcadsw_rectifier` (instance `u_rectifier`), its",
+              "pass (`mcadsw_rect`), mark step (`mcadsw_rect_mark`) and configuration check (`mcadsw_rect_check`),",
+              "is a block of the engine, mapped, assembled and timed with it (group",
               "`rectifier`). Its figures are reported apart and excluded from the engine's budgets (the gates,",
               "flip-flops and engine memory above; the macro count and the asynchronous-read count above include",
               "it). Its worst slack is the worst endpoint inside its instances in the engine's STA",

@@ -17,6 +17,7 @@ mcadsw_cfg_check.sv
 mcadsw_cost_agg.sv
 mcadsw_depth_fifo.sv
 mcadsw_engine.sv
+mcadsw_fetch.sv
 mcadsw_fifo.sv
 mcadsw_frame_ctrl.sv
 mcadsw_horz_agg.sv
@@ -46,3 +47,4 @@ rect/mcadsw_rect_port.sv
 rect/mcadsw_rect_mark.sv
 rect/mcadsw_rect_check.sv
 rect/mcadsw_rect.sv
+rect/mcadsw_rectifier.sv

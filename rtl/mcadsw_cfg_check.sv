@@ -8,7 +8,7 @@
 // on it in its Check state starts from flip-flops; a non-zero code rejects the start
 // before anything is read or written. The plane sizes (products of a stride and a
 // height) are the one registered part: computed from the configuration as it is
-// registered (cap_*_i at capture_i, the engine's start), so that no multiplier lies
+// registered (cap_cfg_i at capture_i, the engine's start), so that no multiplier lies
 // in front of the address compares in the check's cycle.
 //
 // SEQ (the FPGA target): the plane checks (overlap, beyond the address space) run one
@@ -38,36 +38,11 @@ module mcadsw_cfg_check #(
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
-  // The configuration being registered (the engine's capture inputs), for the sizes
+  // The configuration bundle as it is being registered (the engine's capture input,
+  // read at capture_i for the sizes) and as registered (fields at mcadsw_pkg::CFG_*)
   input  logic            capture_i,
-  input  logic [AW-1:0]   cap_stride_i,
-  input  logic [AW-1:0]   cap_out_stride_i,
-  input  logic [AW-1:0]   cap_tile_stride_i,
-  input  logic [CW-1:0]   cap_width_i,
-  input  logic [CW-1:0]   cap_height_i,
-  // Planes (byte addresses)
-  input  logic [AW-1:0]   base_ly_i,
-  input  logic [AW-1:0]   base_lu_i,
-  input  logic [AW-1:0]   base_lv_i,
-  input  logic [AW-1:0]   base_ry_i,
-  input  logic [AW-1:0]   base_ru_i,
-  input  logic [AW-1:0]   base_rv_i,
-  input  logic [AW-1:0]   base_out_i,
-  input  logic [AW-1:0]   base_dl_i,
-  input  logic [AW-1:0]   base_dr_i,
-  input  logic [AW-1:0]   base_mask_i,
-  input  logic [AW-1:0]   stride_i,          // input planes (raster), dR and the mask
-  input  logic [AW-1:0]   out_stride_i,      // disparity plane and dL
-  input  logic [AW-1:0]   tile_stride_i,     // input planes column-tiled; 0: raster
-  // Mode and frame
-  input  logic            sub_i,             // sub-pixel output
-  input  logic            lr_i,              // LR mode
-  input  logic            right_i,           // right view as base
-  input  logic            rect_i,            // RECT_CTRL.ENABLE
-  input  logic [7:0]      lr_t_i,
-  input  logic [CW-1:0]   width_i,
-  input  logic [CW-1:0]   height_i,
-  input  logic [NB-1:0]   disp_i,
+  input  logic [mcadsw_pkg::CFG_BITS-1:0] cap_cfg_i,
+  input  logic [mcadsw_pkg::CFG_BITS-1:0] cfg_i,
   // mcadsw_pkg::ErrNone, or the first failing check's code; registered: the verdict
   // on the configuration of the cycle before
   output logic [mcadsw_pkg::ERR_BITS-1:0] err_o,
@@ -80,6 +55,41 @@ module mcadsw_cfg_check #(
   output logic [SB-1:0]   size_o,            // stride x height: dR, the mask
   output logic [SB-1:0]   out_size_o         // out stride x height: the disparity plane, dL
 );
+
+  // The fields the check reads (cap_*: as being registered)
+  logic [AW-1:0] cap_stride, cap_out_stride, cap_tile_stride, stride, out_stride, tile_stride;
+  logic [AW-1:0] base_ly, base_lu, base_lv, base_ry, base_ru, base_rv;
+  logic [AW-1:0] base_out, base_dl, base_dr, base_mask;
+  logic [CW-1:0] cap_width, cap_height, width, height;
+  logic [7:0]    lr_t;
+  logic [NB-1:0] disp;
+  logic          sub, lr, right, rect;
+  assign cap_stride      = cap_cfg_i[mcadsw_pkg::CFG_STRIDE +: AW];
+  assign cap_out_stride  = cap_cfg_i[mcadsw_pkg::CFG_OUT_STRIDE +: AW];
+  assign cap_tile_stride = cap_cfg_i[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
+  assign cap_width       = cap_cfg_i[mcadsw_pkg::CFG_WIDTH +: CW];
+  assign cap_height      = cap_cfg_i[mcadsw_pkg::CFG_HEIGHT +: CW];
+  assign base_ly         = cfg_i[mcadsw_pkg::CFG_BASE_LY +: AW];
+  assign base_lu         = cfg_i[mcadsw_pkg::CFG_BASE_LU +: AW];
+  assign base_lv         = cfg_i[mcadsw_pkg::CFG_BASE_LV +: AW];
+  assign base_ry         = cfg_i[mcadsw_pkg::CFG_BASE_RY +: AW];
+  assign base_ru         = cfg_i[mcadsw_pkg::CFG_BASE_RU +: AW];
+  assign base_rv         = cfg_i[mcadsw_pkg::CFG_BASE_RV +: AW];
+  assign base_out        = cfg_i[mcadsw_pkg::CFG_BASE_OUT +: AW];
+  assign base_dl         = cfg_i[mcadsw_pkg::CFG_BASE_DL +: AW];
+  assign base_dr         = cfg_i[mcadsw_pkg::CFG_BASE_DR +: AW];
+  assign base_mask       = cfg_i[mcadsw_pkg::CFG_BASE_MASK +: AW];
+  assign stride          = cfg_i[mcadsw_pkg::CFG_STRIDE +: AW];
+  assign out_stride      = cfg_i[mcadsw_pkg::CFG_OUT_STRIDE +: AW];
+  assign tile_stride     = cfg_i[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
+  assign lr_t            = cfg_i[mcadsw_pkg::CFG_LR_T +: 8];
+  assign width           = cfg_i[mcadsw_pkg::CFG_WIDTH +: CW];
+  assign height          = cfg_i[mcadsw_pkg::CFG_HEIGHT +: CW];
+  assign disp            = cfg_i[mcadsw_pkg::CFG_DISP +: NB];
+  assign {right, lr, sub} = cfg_i[mcadsw_pkg::CFG_MODE +: 3];
+  assign rect            = cfg_i[mcadsw_pkg::CFG_RECT_EN];
+  logic cfg_unused;                          // the fields other blocks read
+  assign cfg_unused = ^{cap_cfg_i, cfg_i};
 
   // The checks in priority order, check c failing gives code CODES[c].
   localparam int NCHECK = 13;
@@ -116,11 +126,11 @@ module mcadsw_cfg_check #(
 
   // The first pass's planes: base view Y, U, V and match view Y.
   logic [AW-1:0] base_by, base_bu, base_bv, base_my, base_first;
-  assign base_by    = right_i ? base_ry_i : base_ly_i;
-  assign base_bu    = right_i ? base_ru_i : base_lu_i;
-  assign base_bv    = right_i ? base_rv_i : base_lv_i;
-  assign base_my    = right_i ? base_ly_i : base_ry_i;
-  assign base_first = lr_i ? base_dl_i : base_out_i;
+  assign base_by    = right ? base_ry : base_ly;
+  assign base_bu    = right ? base_ru : base_lu;
+  assign base_bv    = right ? base_rv : base_lv;
+  assign base_my    = right ? base_ly : base_ry;
+  assign base_first = lr ? base_dl : base_out;
 
   // Planes the frame reads (in) and writes (wr), and which are enabled.
   localparam int NIN = 6, NWR = 4;
@@ -128,10 +138,10 @@ module mcadsw_cfg_check #(
   logic [NIN-1:0]    in_en;
   logic [NWR*AW-1:0] wr_base;
   logic [NWR-1:0]    wr_en, wr_outs;   // wr_outs: the plane has the output stride
-  assign in_base = {base_rv_i, base_ru_i, base_my, base_bv, base_bu, base_by};
-  assign in_en   = {lr_i, lr_i, 4'b1111};
-  assign wr_base = {base_mask_i, base_out_i, base_dr_i, base_first};
-  assign wr_en   = {lr_i, lr_i, lr_i, 1'b1};
+  assign in_base = {base_rv, base_ru, base_my, base_bv, base_bu, base_by};
+  assign in_en   = {lr, lr, 4'b1111};
+  assign wr_base = {base_mask, base_out, base_dr, base_first};
+  assign wr_en   = {lr, lr, lr, 1'b1};
   assign wr_outs = 4'b0101;
 
   // The sizes, registered with the configuration. The input planes: raster, stride x
@@ -142,12 +152,12 @@ module mcadsw_cfg_check #(
       {size, in_size, out_size} <= '0;
     end else if (capture_i) begin : p_capture
       logic [CW-1:0] wcols;            // columns of 4 pixels
-      wcols    = cap_width_i + CW'(3);
+      wcols    = cap_width + CW'(3);
       wcols    = wcols >> 2;
-      size     <= SB'(cap_stride_i) * SB'(cap_height_i);
-      in_size  <= (cap_tile_stride_i != '0) ? SB'(cap_tile_stride_i) * SB'(wcols)
-                                            : SB'(cap_stride_i) * SB'(cap_height_i);
-      out_size <= SB'(cap_out_stride_i) * SB'(cap_height_i);
+      size     <= SB'(cap_stride) * SB'(cap_height);
+      in_size  <= (cap_tile_stride != '0) ? SB'(cap_tile_stride) * SB'(wcols)
+                                            : SB'(cap_stride) * SB'(cap_height);
+      out_size <= SB'(cap_out_stride) * SB'(cap_height);
     end
   end
 
@@ -265,8 +275,8 @@ module mcadsw_cfg_check #(
     logic [CW:0]   out_bytes;          // bytes of an output row
     logic          misaligned;
     logic          tiled;
-    tiled     = tile_stride_i != '0;
-    out_bytes = sub_i ? {width_i, 1'b0} : {1'b0, width_i};
+    tiled     = tile_stride != '0;
+    out_bytes = sub ? {width, 1'b0} : {1'b0, width};
     misaligned = 1'b0;
     for (int i = 0; i < NIN; i++)
       misaligned = misaligned || (in_en[i] && in_base[i*AW +: 2] != 2'b00);
@@ -275,26 +285,26 @@ module mcadsw_cfg_check #(
     // Each check on its own; the code is the first failing one's, the verdict
     // an OR of all (flat, so the frame controller's branch does not wait for the
     // priority chain).
-    fail[0]  = width_i == '0 || 32'(width_i) > mcadsw_pkg::MAX_WIDTH;
-    fail[1]  = height_i == '0 || 32'(height_i) > mcadsw_pkg::MAX_HEIGHT;
-    fail[2]  = disp_i == '0 || 32'(disp_i) > DMAX;
+    fail[0]  = width == '0 || 32'(width) > mcadsw_pkg::MAX_WIDTH;
+    fail[1]  = height == '0 || 32'(height) > mcadsw_pkg::MAX_HEIGHT;
+    fail[2]  = disp == '0 || 32'(disp) > DMAX;
     // STRIDE is the input planes' (raster) and, in the LR mode, dR's and the mask's.
-    fail[3]  = ((!tiled || lr_i) && (stride_i < AW'(width_i) || (stride_i & AW'(3)) != '0)) ||
-               (tiled && (tile_stride_i < AW'({height_i, 2'b00}) || (tile_stride_i & AW'(3)) != '0));
+    fail[3]  = ((!tiled || lr) && (stride < AW'(width) || (stride & AW'(3)) != '0)) ||
+               (tiled && (tile_stride < AW'({height, 2'b00}) || (tile_stride & AW'(3)) != '0));
     fail[4]  = misaligned;
     fail[5]  = overlap;
-    fail[6]  = out_stride_i < AW'(out_bytes) || (out_stride_i & AW'(3)) != '0;
-    fail[7]  = lr_i && right_i;
+    fail[6]  = out_stride < AW'(out_bytes) || (out_stride & AW'(3)) != '0;
+    fail[7]  = lr && right;
     fail[8]  = past;
-    fail[9]  = lr_i && 32'(lr_t_i) > mcadsw_pkg::LR_T_MAX;
-    fail[10] = lr_i && 32'(width_i) > mcadsw_pkg::POST_MAX_WIDTH;
+    fail[9]  = lr && 32'(lr_t) > mcadsw_pkg::LR_T_MAX;
+    fail[10] = lr && 32'(width) > mcadsw_pkg::POST_MAX_WIDTH;
     // Right U and V not configured: the same base as each other or as another
     // input plane (registers left at their reset value, or copied).
-    fail[11] = lr_i && (base_ru_i == base_rv_i || base_ru_i == base_by || base_ru_i == base_bu ||
-                        base_ru_i == base_bv || base_ru_i == base_my || base_rv_i == base_by ||
-                        base_rv_i == base_bu || base_rv_i == base_bv || base_rv_i == base_my);
+    fail[11] = lr && (base_ru == base_rv || base_ru == base_by || base_ru == base_bu ||
+                        base_ru == base_bv || base_ru == base_my || base_rv == base_by ||
+                        base_rv == base_bu || base_rv == base_bv || base_rv == base_my);
     // A build without the rectifier (mcadsw_pkg::RECT 0) rejects rectification.
-    fail[12] = rect_i && mcadsw_pkg::RECT == 0;
+    fail[12] = rect && mcadsw_pkg::RECT == 0;
     ok  = fail == '0;
     err = mcadsw_pkg::ErrNone;
     for (int c = NCHECK - 1; c >= 0; c--)

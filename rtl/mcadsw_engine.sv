@@ -3,13 +3,13 @@
 
 // MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC), wiring
 // only: the configuration registered and its views (mcadsw_pass_cfg), its check, the
-// frame controller, the block scheduler and the window geometry; the memory
-// controller and three window readers, the left and right mini-census transformers,
+// frame controller, the block scheduler and the window geometry; the memory controller
+// and three window readers (mcadsw_fetch), the left and right mini-census transformers,
 // the weight generator, the cost aggregator with WTA, and the depth FIFO; beyond the
-// paper the LR post stage, the rectifier's check, pass and mark step; and the 32-bit
-// external memory port, owned by the rectify pass, the mark step, the post stage or
-// the passes (mcadsw_port_mux). docs/architecture.md and docs/blocks/ describe the
-// blocks; docs/memory_map.md the configuration, status and memory layout.
+// paper the LR post stage and the rectifier (mcadsw_rectifier: its check, pass and mark
+// step); and the 32-bit external memory port, owned by the rectify pass, the mark step,
+// the post stage or the passes (mcadsw_port_mux). docs/architecture.md and docs/blocks/
+// describe the blocks; docs/memory_map.md the configuration, status and memory layout.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -76,28 +76,20 @@ module mcadsw_engine #(
   logic                            accept, to_second, pass_second, pass_post;
   logic [1:0]                      mark_phase;
   logic [mcadsw_pkg::CFG_BITS-1:0] cfg_q;
-  logic [CW-1:0]                   width_q, height_q;
-  logic [AW-1:0]                   stride_q, out_stride_q, tile_q, rect_stride;
-  logic                            sub_q, lr_q, right_q, tiled, post_wide;
-  logic [6*AW-1:0]                 in_base;
+  logic [CW-1:0]                   height_q, xend;
+  logic [AW-1:0]                   stride_q, tile_q, rect_stride, mark_valid, mark_base, mark_stride;
+  logic [AW-1:0]                   base_by, base_bu, base_bv, base_my, base_out, pass_stride;
+  logic                            tiled, post_wide, mark_half;
+  logic                            right, wide, pack;  // right view as base; 16-bit output; LR scratch
   logic [5:0]                      rect_planes;
   logic [4*AW-1:0]                 wr_base;
   logic [3:0]                      wr_outs;
-  logic [AW-1:0]                   base_by, base_bu, base_bv, base_my, base_out, pass_stride;
-  logic [CW-1:0]                   xend;
   logic [1:0]                      xlo;
-  logic                            right, wide, pack;  // right view as base; 16-bit output; LR scratch
-  logic [AW-1:0]                   mark_valid, mark_base, mark_stride;
-  logic                            mark_half;
   logic [15:0]                     mark_value;
-  // The fields most blocks read
-  assign width_q       = cfg_q[mcadsw_pkg::CFG_WIDTH +: CW];
-  assign height_q      = cfg_q[mcadsw_pkg::CFG_HEIGHT +: CW];
-  assign stride_q      = cfg_q[mcadsw_pkg::CFG_STRIDE +: AW];
-  assign out_stride_q  = cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW];
-  assign tile_q        = cfg_q[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
-  assign {right_q, lr_q, sub_q} = cfg_q[mcadsw_pkg::CFG_MODE +: 3];
-  assign in_base       = cfg_q[mcadsw_pkg::CFG_BASE_LY +: 6*AW];  // LY LU LV RY RU RV, plane p at AW p
+  // The fields several blocks read
+  assign height_q = cfg_q[mcadsw_pkg::CFG_HEIGHT +: CW];
+  assign stride_q = cfg_q[mcadsw_pkg::CFG_STRIDE +: AW];
+  assign tile_q   = cfg_q[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
 
   mcadsw_pass_cfg #(.AW(AW), .CW(CW)) u_pass_cfg (
     .clk_i, .rst_ni, .cfg_i,
@@ -120,18 +112,7 @@ module mcadsw_engine #(
   logic cfg_ok_q, cfg_done_q;
   logic [SB-1:0] in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
-    .clk_i, .rst_ni, .capture_i (accept), .cap_stride_i (cfg_i[mcadsw_pkg::CFG_STRIDE +: AW]),
-    .cap_out_stride_i (cfg_i[mcadsw_pkg::CFG_OUT_STRIDE +: AW]),
-    .cap_tile_stride_i (cfg_i[mcadsw_pkg::CFG_TILE_STRIDE +: AW]),
-    .cap_width_i (cfg_i[mcadsw_pkg::CFG_WIDTH +: CW]), .cap_height_i (cfg_i[mcadsw_pkg::CFG_HEIGHT +: CW]),
-    .base_ly_i (in_base[0*AW +: AW]), .base_lu_i (in_base[1*AW +: AW]), .base_lv_i (in_base[2*AW +: AW]),
-    .base_ry_i (in_base[3*AW +: AW]), .base_ru_i (in_base[4*AW +: AW]), .base_rv_i (in_base[5*AW +: AW]),
-    .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_dl_i (cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW]),
-    .base_dr_i (cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
-    .stride_i (stride_q), .out_stride_i (out_stride_q), .tile_stride_i (tile_q),
-    .sub_i (sub_q), .lr_i (lr_q), .right_i (right_q), .rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]),
-    .lr_t_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 8]), .width_i (width_q), .height_i (height_q),
-    .disp_i (cfg_q[mcadsw_pkg::CFG_DISP +: NB]),
+    .clk_i, .rst_ni, .capture_i (accept), .cap_cfg_i (cfg_i), .cfg_i (cfg_q),
     .err_o (cfg_err_q), .ok_o (cfg_ok_q), .done_o (cfg_done_q),
     .in_size_o (in_size), .size_o (size), .out_size_o (out_size)
   );
@@ -147,7 +128,8 @@ module mcadsw_engine #(
   mcadsw_frame_ctrl u_frame_ctrl (
     .clk_i, .rst_ni,
     .start_i,
-    .cfg_lr_i (lr_q), .cfg_right_i (right_q), .cfg_rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]), .err_i (cfg_err_q),
+    .cfg_lr_i (cfg_q[mcadsw_pkg::CFG_MODE + 1]), .cfg_right_i (cfg_q[mcadsw_pkg::CFG_MODE + 2]),
+    .cfg_rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]), .err_i (cfg_err_q),
     .ok_i (cfg_ok_q), .chk_done_i (cfg_done_q),
     .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
@@ -220,25 +202,29 @@ module mcadsw_engine #(
   );
 
   // ---- Memory controller and window readers ----------------------------------------------
-  localparam int NR = 3;
-  logic [NR-1:0]    rd_req, rd_gnt, rd_rvalid;
-  logic [NR*AW-1:0] rd_addr;
-  logic [NR*4-1:0]  rd_len;
-  logic [31:0]      rd_rdata;
-  logic             wr_req, wr_gnt;
-  logic [AW-1:0]    wr_addr;
-  logic [3:0]       wr_be;
-  logic [31:0]      wr_wdata;
-  logic             eng_req, eng_gnt, eng_we, eng_rvalid;
-  logic [3:0]       eng_be;
-  logic [AW-1:0]    eng_addr;
-  logic [3:0]       eng_len;
-  logic [31:0]      eng_wdata;
+  logic          wr_req, wr_gnt;
+  logic [AW-1:0] wr_addr;
+  logic [3:0]    wr_be;
+  logic [31:0]   wr_wdata;
+  logic          eng_req, eng_gnt, eng_we, eng_rvalid;
+  logic [3:0]    eng_be;
+  logic [AW-1:0] eng_addr;
+  logic [3:0]    eng_len;
+  logic [31:0]   eng_wdata;
+  logic          lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
+  logic [31:0]   lpix, rpix, wpix;
 
-  mcadsw_mem_ctrl #(.NR(NR), .AW(AW)) u_mem_ctrl (
-    .clk_i, .rst_ni,
-    .rd_req_i (rd_req), .rd_addr_i (rd_addr), .rd_len_i (rd_len), .rd_gnt_o (rd_gnt),
-    .rd_rvalid_o (rd_rvalid), .rd_rdata_o (rd_rdata),
+  mcadsw_fetch #(.AW(AW), .CW(CW), .COLS(COLS), .LSTRIPS(LSTRIPS), .RSTRIPS(RSTRIPS),
+                 .WSTRIPS(WSTRIPS), .RSB(RSB)) u_fetch (
+    .clk_i, .rst_ni, .start_i (prep_start),
+    .base_y_i (base_by), .base_u_i (base_bu), .base_v_i (base_bv), .base_m_i (base_my),
+    .stride_i (stride_q), .tile_i (tile_q), .xend_i (xend), .xlo_i (xlo), .mirror_i (right),
+    .height_i (height_q), .cen_y0_i (cen_y0), .w_y0_i (prep_y0),
+    .lx0_i (lx_rd), .lstrips_i (l_strips), .rx0_i (rx_rd), .rstrips_i (r_strips),
+    .wx0_i (wx_rd), .wstrips_i (w_strips),
+    .lpix_valid_o (lpix_valid), .lpix_ready_i (lpix_ready), .lpix_o (lpix),
+    .rpix_valid_o (rpix_valid), .rpix_ready_i (rpix_ready), .rpix_o (rpix),
+    .wpix_valid_o (wpix_valid), .wpix_ready_i (wpix_ready), .wpix_o (wpix),
     .wr_req_i (wr_req), .wr_addr_i (wr_addr), .wr_be_i (wr_be), .wr_wdata_i (wr_wdata),
     .wr_gnt_o (wr_gnt),
     .mem_req_o (eng_req), .mem_gnt_i (eng_gnt), .mem_we_o (eng_we), .mem_be_o (eng_be),
@@ -254,66 +240,37 @@ module mcadsw_engine #(
   logic [31:0]   post_wdata;
 
   mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
-    .clk_i, .rst_ni,
-    .start_i (post_start),
+    .clk_i, .rst_ni, .start_i (post_start),
     .base_dl_i (cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW]), .base_dr_i (cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW]),
     .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
-    .stride_i (stride_q), .out_stride_i (out_stride_q), .width_i (width_q), .height_i (height_q),
-    .tol_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 6]), .wide_i (post_wide),
-    .busy_o (post_busy), .done_o (post_done),
-    .mem_req_o (post_req), .mem_gnt_i (post_gnt), .mem_we_o (post_we),
-    .mem_be_o (post_be), .mem_addr_o (post_addr), .mem_wdata_o (post_wdata),
-    .mem_rvalid_i (post_rvalid), .mem_rdata_i
+    .stride_i (stride_q), .out_stride_i (cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW]),
+    .width_i (cfg_q[mcadsw_pkg::CFG_WIDTH +: CW]), .height_i (height_q),
+    .tol_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 6]), .wide_i (post_wide), .busy_o (post_busy), .done_o (post_done),
+    .mem_req_o (post_req), .mem_gnt_i (post_gnt), .mem_we_o (post_we), .mem_be_o (post_be),
+    .mem_addr_o (post_addr), .mem_wdata_o (post_wdata), .mem_rvalid_i (post_rvalid), .mem_rdata_i
   );
 
   // Rectification (docs/blocks/rectifier.md): the check of its registers, the rectify
-  // pass and the mark step (docs/algorithm.md 13.4; its plane, bitmap and value by
-  // phase from mcadsw_pass_cfg). in_size, size, out_size are mcadsw_cfg_check's,
-  // registered with the configuration.
-  logic rchk_busy_unused;
-  mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
-    .clk_i, .rst_ni, .start_i (rchk_start), .busy_o (rchk_busy_unused), .done_o (rchk_done),
-    .err_o (rchk_err),
-    .step_log2_i (cfg_q[mcadsw_pkg::CFG_RECT_STEP +: 3]), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (cfg_q[mcadsw_pkg::CFG_RAW_WIDTH +: CW]), .raw_h_i (cfg_q[mcadsw_pkg::CFG_RAW_HEIGHT +: CW]),
-    .raw_stride_i (cfg_q[mcadsw_pkg::CFG_RAW_STRIDE +: AW]), .tiled_i (tiled), .planes_i (rect_planes),
-    .raw_base_i (cfg_q[mcadsw_pkg::CFG_RAW +: 6*AW]), .rect_base_i (in_base), .rect_size_i (in_size),
-    .mesh_base_i (cfg_q[mcadsw_pkg::CFG_MESH +: 2*AW]), .valid_base_i (cfg_q[mcadsw_pkg::CFG_VALID_MAP +: 2*AW]),
-    .mesh_nx_i (cfg_q[mcadsw_pkg::CFG_MESH_NX +: CW]), .mesh_ny_i (cfg_q[mcadsw_pkg::CFG_MESH_NY +: CW]),
-    .out_base_i (wr_base), .out_size_i ({size, out_size, size, out_size}), .outs_i (wr_outs)
-  );
-
-  logic          rect_req, rect_we, rect_gnt, rect_rvalid, rect_busy_unused;
-  logic [3:0]    rect_be;
-  logic [AW-1:0] rect_addr;
-  logic [2:0]    rect_len;
-  logic [31:0]   rect_wdata;
-  mcadsw_rect #(.CW(CW)) u_rect (
-    .clk_i, .rst_ni, .start_i (rect_start),
-    .step_log2_i (cfg_q[mcadsw_pkg::CFG_RECT_STEP +: 3]), .width_i (width_q), .height_i (height_q),
-    .raw_w_i (cfg_q[mcadsw_pkg::CFG_RAW_WIDTH +: CW]), .raw_h_i (cfg_q[mcadsw_pkg::CFG_RAW_HEIGHT +: CW]),
-    .tiled_i (tiled), .raw_stride_i (cfg_q[mcadsw_pkg::CFG_RAW_STRIDE +: AW]), .stride_i (rect_stride),
-    .raw_base_i (cfg_q[mcadsw_pkg::CFG_RAW +: 6*AW]), .base_i (in_base), .planes_i (rect_planes),
-    .mesh_base_i (cfg_q[mcadsw_pkg::CFG_MESH +: 2*AW]), .valid_base_i (cfg_q[mcadsw_pkg::CFG_VALID_MAP +: 2*AW]),
-    .busy_o (rect_busy_unused), .done_o (rect_done), .err_o (rect_err),
-    .mem_req_o (rect_req), .mem_gnt_i (rect_gnt), .mem_we_o (rect_we),
-    .mem_be_o (rect_be), .mem_addr_o (rect_addr), .mem_len_o (rect_len),
-    .mem_wdata_o (rect_wdata), .mem_rvalid_i (rect_rvalid), .mem_rdata_i
-  );
-
-  logic          mark_req, mark_we, mark_gnt, mark_rvalid, mark_busy_unused;
-  logic [3:0]    mark_be;
-  logic [AW-1:0] mark_addr;
-  logic [2:0]    mark_len;
-  logic [31:0]   mark_wdata;
-  mcadsw_rect_mark #(.CW(CW)) u_rect_mark (
-    .clk_i, .rst_ni, .start_i (mark_start), .width_i (width_q), .height_i (height_q),
-    .valid_base_i (mark_valid), .base_i (mark_base), .stride_i (mark_stride), .half_i (mark_half),
-    .value_i (mark_value),
-    .busy_o (mark_busy_unused), .done_o (mark_done),
-    .mem_req_o (mark_req), .mem_gnt_i (mark_gnt), .mem_we_o (mark_we),
-    .mem_be_o (mark_be), .mem_addr_o (mark_addr), .mem_len_o (mark_len),
-    .mem_wdata_o (mark_wdata), .mem_rvalid_i (mark_rvalid), .mem_rdata_i
+  // pass and the mark step. in_size, size, out_size are mcadsw_cfg_check's.
+  logic          rect_req, rect_we, rect_gnt, rect_rvalid, mark_req, mark_we, mark_gnt, mark_rvalid;
+  logic [3:0]    rect_be, mark_be;
+  logic [AW-1:0] rect_addr, mark_addr;
+  logic [2:0]    rect_len, mark_len;
+  logic [31:0]   rect_wdata, mark_wdata;
+  mcadsw_rectifier #(.AW(AW), .CW(CW), .SB(SB)) u_rectifier (
+    .clk_i, .rst_ni, .cfg_i (cfg_q), .tiled_i (tiled), .planes_i (rect_planes), .stride_i (rect_stride),
+    .out_base_i (wr_base), .outs_i (wr_outs), .in_size_i (in_size), .size_i (size),
+    .out_size_i (out_size), .mark_valid_i (mark_valid), .mark_base_i (mark_base),
+    .mark_stride_i (mark_stride), .mark_half_i (mark_half), .mark_value_i (mark_value),
+    .chk_start_i (rchk_start), .chk_done_o (rchk_done), .chk_err_o (rchk_err),
+    .rect_start_i (rect_start), .rect_done_o (rect_done), .rect_err_o (rect_err),
+    .mark_start_i (mark_start), .mark_done_o (mark_done),
+    .rect_req_o (rect_req), .rect_gnt_i (rect_gnt), .rect_we_o (rect_we), .rect_be_o (rect_be),
+    .rect_addr_o (rect_addr), .rect_len_o (rect_len), .rect_wdata_o (rect_wdata),
+    .rect_rvalid_i (rect_rvalid),
+    .mark_req_o (mark_req), .mark_gnt_i (mark_gnt), .mark_we_o (mark_we), .mark_be_o (mark_be),
+    .mark_addr_o (mark_addr), .mark_len_o (mark_len), .mark_wdata_o (mark_wdata),
+    .mark_rvalid_i (mark_rvalid), .mem_rdata_i
   );
 
   // The port's owner: the rectify pass, the mark step, the post stage, or the passes.
@@ -333,65 +290,16 @@ module mcadsw_engine #(
     .mem_rvalid_i
   );
 
-  logic        lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
-  logic [31:0] lpix, rpix, wpix;
-  logic        lrd_busy_unused, rrd_busy_unused, wrd_busy_unused;
-
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(LSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
-  u_rd_census_l (
-    .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_by), .stride_i (stride_q), .tile_i (tile_q),
-    .width_i (xend), .lo_i (xlo), .mirror_i (right), .height_i (height_q),
-    .x0_i (lx_rd), .y0_i (cen_y0), .strips_i (l_strips),
-    .busy_o (lrd_busy_unused),
-    .req_o (rd_req[0]), .addr_o (rd_addr[0*AW +: AW]), .len_o (rd_len[0*4 +: 4]),
-    .gnt_i (rd_gnt[0]),
-    .rvalid_i (rd_rvalid[0]), .rdata_i (rd_rdata),
-    .pix_valid_o (lpix_valid), .pix_ready_i (lpix_ready), .pix_data_o (lpix)
-  );
-
-  mcadsw_win_reader #(.ROWS(COLS + 4), .STRIPS(RSTRIPS), .PLANES(1), .CW(CW), .AW(AW))
-  u_rd_census_r (
-    .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i (base_my), .stride_i (stride_q), .tile_i (tile_q),
-    .width_i (xend), .lo_i (xlo), .mirror_i (right), .height_i (height_q),
-    .x0_i (rx_rd), .y0_i (cen_y0), .strips_i (r_strips),
-    .busy_o (rrd_busy_unused),
-    .req_o (rd_req[1]), .addr_o (rd_addr[1*AW +: AW]), .len_o (rd_len[1*4 +: 4]),
-    .gnt_i (rd_gnt[1]),
-    .rvalid_i (rd_rvalid[1]), .rdata_i (rd_rdata),
-    .pix_valid_o (rpix_valid), .pix_ready_i (rpix_ready), .pix_data_o (rpix)
-  );
-
-  mcadsw_win_reader #(.ROWS(COLS), .STRIPS(WSTRIPS), .PLANES(3), .CW(CW), .AW(AW))
-  u_rd_weight (
-    .clk_i, .rst_ni,
-    .start_i (prep_start), .base_i ({base_bv, base_bu, base_by}), .stride_i (stride_q), .tile_i (tile_q),
-    .width_i (xend), .lo_i (xlo), .mirror_i (right), .height_i (height_q),
-    .x0_i (wx_rd), .y0_i (prep_y0), .strips_i (w_strips),
-    .busy_o (wrd_busy_unused),
-    .req_o (rd_req[2]), .addr_o (rd_addr[2*AW +: AW]), .len_o (rd_len[2*4 +: 4]),
-    .gnt_i (rd_gnt[2]),
-    .rvalid_i (rd_rvalid[2]), .rdata_i (rd_rdata),
-    .pix_valid_o (wpix_valid), .pix_ready_i (wpix_ready), .pix_data_o (wpix)
-  );
-
   // ---- Census transformers and weight generator ---------------------------------------------
-  logic cl_busy_unused, cr_busy_unused, wg_busy_unused;
-  logic cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused;
-
-  logic                       vrd_en, hrd_en;
-  logic [4:0]                 vrd_row, hrd_row_unused;
-  logic [2:0]                 vrd_grp, hrd_grp;
-  logic [SLB-1:0]             vrd_slot, hrd_slot;
-  logic                       hrd_rel;
-  logic [DB-1:0]              vrd_d_unused;
   // Census reads (mcadsw_cost_agg): ASIC target one of LANES (left) and RLANES (right)
   // columns, the window's rows; FPGA target column words, one left and two right ports.
   localparam int CRP = FPGA ? 2 : 1;                   // right census read ports
   localparam int CLW = FPGA ? COLS*CB : LANES*WINDOW*CB;
   localparam int CRW = FPGA ? CRP*COLS*CB : RLANES*WINDOW*CB;
-  logic                       lrd_en;
+  logic                       vrd_en, hrd_en, hrd_rel, lrd_en;
+  logic [4:0]                 vrd_row;
+  logic [2:0]                 vrd_grp, hrd_grp;
+  logic [SLB-1:0]             vrd_slot, hrd_slot;
   logic [5:0]                 lrd_col;
   logic [CRP-1:0]             rrd_en;
   logic [CRP*RXB-1:0]         rrd_col;
@@ -399,6 +307,14 @@ module mcadsw_engine #(
   logic [CRW-1:0]             cen_r;
   logic [LANES*WINDOW*WB-1:0] wv;
   logic [HAGG*WINDOW*WB-1:0]  wh;
+  // Status outputs the engine does not need
+  logic [4:0]                 hrd_row_unused, disp_row_unused, sub_row_unused;
+  logic [DB-1:0]              vrd_d_unused;
+  logic cl_busy_unused, cr_busy_unused, wg_busy_unused, sub_busy_unused, agg_busy_unused;
+  logic cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, unused_status;
+  assign unused_status = ^{disp_row_unused, hrd_row_unused, sub_busy_unused, sub_row_unused,
+                           agg_busy_unused, vrd_d_unused, cl_busy_unused, cr_busy_unused, wg_busy_unused,
+                           cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy};
 
   mcadsw_census #(.COLS(COLS)) u_census_l (
     .clk_i, .rst_ni,
@@ -441,23 +357,15 @@ module mcadsw_engine #(
   );
 
   // ---- Cost aggregator, WTA and depth FIFO ---------------------------------------------------
-  logic                 disp_valid;
-  logic [4:0]           disp_row_unused;
-  logic [2:0]           disp_grp;
-  logic [HAGG*DB-1:0]   disp;
-  logic                 unused_status;
-  // Sub-pixel values (docs/algorithm.md 12.6), two cycles after the disparities.
-  // They go to the depth FIFO in sub-pixel mode. The scheduler follows vbusy_o
-  // (busy_o on the ASIC target; on the FPGA target the vertical side's reads, the
-  // only ones of the census banks): the WTA's last two stages do not use the
-  // census and weight banks, and the depth FIFO holds a row until its last values
-  // have arrived.
+  // Sub-pixel values (docs/algorithm.md 12.6) follow the disparities by two cycles. The
+  // scheduler follows vbusy_o (busy_o on the ASIC target; on the FPGA target the vertical
+  // side's reads, the only ones of the census banks): the WTA's last two stages do not use
+  // the census and weight banks, and the depth FIFO holds a row until its last values arrive.
   localparam int VB = DB + 4;
-  logic                 sub_valid, sub_busy_unused, agg_busy_unused;
-  logic [4:0]           sub_row_unused;
-  logic [2:0]           sub_grp;
-  logic [HAGG*VB-1:0]   sub;
-  logic [HAGG*DB-1:0]   sub_d;
+  logic               disp_valid, sub_valid;
+  logic [2:0]         disp_grp, sub_grp;
+  logic [HAGG*DB-1:0] disp, sub_d;
+  logic [HAGG*VB-1:0] sub;
 
   mcadsw_cost_agg #(.P(PAR)) u_cost_agg (
     .clk_i, .rst_ni,
@@ -474,12 +382,6 @@ module mcadsw_engine #(
     .sub_valid_o (sub_valid), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp),
     .sub_o (sub), .sub_d_o (sub_d), .sub_busy_o (sub_busy_unused)
   );
-  // Status outputs of the blocks the engine does not need.
-  assign unused_status = ^{lrd_busy_unused, rrd_busy_unused, wrd_busy_unused, disp_row_unused,
-                        hrd_row_unused, sub_busy_unused, sub_row_unused, agg_busy_unused, vrd_d_unused,
-                        cl_busy_unused, cr_busy_unused, wg_busy_unused,
-                        cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy,
-                        rchk_busy_unused, rect_busy_unused, mark_busy_unused};
 
   // The depth FIFO's values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
   // the scratch format {offset + 8, d} (docs/blocks/engine.md section 7).

@@ -13,3 +13,4 @@ mcadsw_rect_port.sv
 mcadsw_rect_mark.sv
 mcadsw_rect_check.sv
 mcadsw_rect.sv
+mcadsw_rectifier.sv
