@@ -424,6 +424,60 @@ module mcadsw_rect #(
                          unused_nrd_odd, nd_rows[CW:6], nd_cols[CW:7], stride_i[31:29]};
 
   `MCADSW_ASSERT(load_when_idle, !ld_start || !ld_busy)
+
+`ifdef MCADSW_CHECKS
+  // verilator coverage_off
+  // ---- Tile handoff (live in simulation; make formal, formal/rect_handoff.sby, proves it
+  // with the submodules cut out, their outputs free but for the loader's busy and done) ----
+  // The jobs loaded and not yet sampled, oldest first ({tile a, b, view, plane}), and the
+  // tile whose nodes the node front end holds: the producer fills an empty buffer, the
+  // consumer samples a full one, the jobs in the order loaded, and the consumer copies
+  // the nodes of its own tile.
+  localparam int JB = 2 * CW + 4;
+  logic          f_prod, f_run_q, f_ntile_ok_q;
+  logic [1:0]    f_n_q;
+  logic [2*JB-1:0] f_jobs_q;
+  logic [2*CW:0] f_ntile_q;
+  assign f_prod = ps_q == PLoadRun && (pr_empty_q || ld_done);
+  always_ff @(posedge clk_i or negedge rst_ni) begin : f_handoff
+    logic [2*JB-1:0] j;
+    logic [1:0]      n;
+    if (!rst_ni) begin
+      f_n_q <= '0; f_jobs_q <= '0; f_run_q <= 1'b0; f_ntile_q <= '0; f_ntile_ok_q <= 1'b0;
+    end else begin
+      j = f_jobs_q;
+      n = f_n_q;
+      if (cons_free_buf) begin
+        j = j >> JB;
+        n = n - 2'd1;
+      end
+      if (f_prod) begin
+        j[32'(n) * JB +: JB] = {p_a, p_b, p_v, p_p};
+        n = n + 2'd1;
+      end
+      f_jobs_q <= j;
+      f_n_q <= n;
+      if (ld_start) f_run_q <= 1'b1;
+      else if (ld_done) f_run_q <= 1'b0;
+      if (ps_q == PNodesWait && nd_done && !check_q) begin
+        f_ntile_q <= {p_a, p_b, p_v};
+        f_ntile_ok_q <= 1'b1;
+      end else if (ps_q == PIdle) f_ntile_ok_q <= 1'b0;
+    end
+  end
+  // The loader (cut out in the proof): busy from the cycle after its start to its done.
+  `MCADSW_ASSUME(LoaderBusyFromStartToDone, ld_busy == f_run_q && (!ld_done || f_run_q))
+  `MCADSW_ASSERT(LoadIntoEmptyBuffer, !f_prod || !buf_full_q[p_q])
+  `MCADSW_ASSERT(SampleFullBuffer, cs_q == CIdle || buf_full_q[c_q])
+  `MCADSW_ASSERT(JobsInBuffers, 32'(f_n_q) == 32'(buf_full_q[0]) + 32'(buf_full_q[1])
+                                && p_q == (c_q ^ (f_n_q == 2'd1)))
+  `MCADSW_ASSERT(JobsInOrder, cs_q == CIdle || {c_a, c_b, c_v, c_p} == f_jobs_q[0 +: JB])
+  `MCADSW_ASSERT(NodesOfItsTile, !cons_took_nodes || (f_ntile_ok_q && {c_a, c_b, c_v} == f_ntile_q))
+  `MCADSW_COVER(TileSampled, cons_free_buf && c_first)
+  `MCADSW_COVER(BothBuffersFull, buf_full_q == 2'b11)
+  `MCADSW_COVER(SecondTileNodes, cons_took_nodes && c_a == CW'(1))
+  // verilator coverage_on
+`endif
 endmodule
 
 `default_nettype wire
