@@ -421,7 +421,7 @@ def estimate_paths(netlist, out_json, groups=40):
     """flow/ecp5_paths.py on a netlist: its longest register-to-register path groups into
     OUT_JSON; returns the worst estimate (ns). A guide before place and route, not a figure."""
     ends, cells, pred, _, _ = ecp5_paths.analyse(netlist)
-    gs = ecp5_paths.groups(ends, cells, pred)[:groups]
+    gs = ecp5_paths.groups(ends, cells, pred)[0][:groups]
     worst = gs[0]["ns"] if gs else 0.0
     Path(out_json).write_text(json.dumps({"worst_ns": worst, "groups": gs}, indent=1) + "\n")
     if gs:

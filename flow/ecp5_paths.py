@@ -158,9 +158,9 @@ def trace(end, cells, pred, arrivals, names):
 
 def groups(ends, cells, pred):
     """The slowest path of each (first register's RTL lines, last register's RTL lines), slowest
-    first: [{"ns", "from", "to", "through"}], through: the RTL lines of the carry chains and
-    multipliers on the way (LUTs keep none)."""
-    seen, out = set(), []
+    first: ([{"ns", "from", "to", "through"}], [the end point of each, for trace()]), through:
+    the RTL lines of the carry chains and multipliers on the way (LUTs keep none)."""
+    seen, out, out_ends = set(), [], []
     for t, b, cn, p in ends:
         through, x = [], b
         while x in pred and pred[x][0] is not None:
@@ -174,9 +174,9 @@ def groups(ends, cells, pred):
         if key in seen:
             continue
         seen.add(key)
-        out.append({"ns": t, "from": key[0], "to": key[1], "through": list(reversed(through)),
-                    "end": (t, b, cn, p)})
-    return out
+        out.append({"ns": t, "from": key[0], "to": key[1], "through": list(reversed(through))})
+        out_ends.append((t, b, cn, p))
+    return out, out_ends
 
 
 def main(argv):
@@ -192,7 +192,8 @@ def main(argv):
     except (OSError, ValueError, KeyError, StopIteration) as e:
         print(f"ecp5_paths: {e}", file=sys.stderr)
         return 2
-    gs = groups(ends, cells, pred)[:a.groups]
+    gs, g_ends = groups(ends, cells, pred)
+    gs = gs[:a.groups]
     worst = gs[0]["ns"] if gs else 0.0
     print(f"estimated worst register-to-register path {worst:.1f} ns "
           f"({1000.0 / worst if worst else 0:.1f} MHz), {len(ends)} end points")
@@ -204,10 +205,8 @@ def main(argv):
             print(f"ecp5_paths: --trace {a.trace}: {len(gs)} groups listed", file=sys.stderr)
             return 2
         print(f"path of group {a.trace} (arrival ns, cell, RTL lines, net driven):")
-        for line in trace(gs[a.trace - 1]["end"], cells, pred, arrivals, names):
+        for line in trace(g_ends[a.trace - 1], cells, pred, arrivals, names):
             print("  " + line)
-    for g in gs:
-        del g["end"]
     if a.json:
         Path(a.json).write_text(json.dumps({"worst_ns": worst, "groups": gs}, indent=1) + "\n")
     return 0
