@@ -16,6 +16,8 @@
 
 #include "engine_bench.hpp"
 #include "engine_expect.hpp"
+#include "frame_layout.hpp"
+#include "mcadsw/driver.hpp"
 #include "mcadsw/ref.hpp"
 #include "mcadsw/regs.hpp"
 #include "regs_expect.hpp"
@@ -286,6 +288,45 @@ TEST(Axi, RegisterWindowThroughTheSoc) {
     }
   });
   EXPECT_EQ(v.bad_reads + v.bad_writes, 0) << v.describe();
+}
+
+// STATUS and IRQ_STATUS of a frame, through the SoC: while it runs BUSY 1 and DONE 0 (a
+// driver polls DONE, driver::Engine::wait, so a DONE that read 1 during the frame would end
+// its wait at once); at its end DONE 1, ERROR 0 and, with both interrupts enabled, only the
+// done interrupt pending, until cleared (the other benches wait on the interrupt line or the
+// core's done and never read these during or after a frame). The frame reads a memory
+// that holds no image: its output is not checked here.
+TEST(Axi, StatusAndInterruptsOfAFrameThroughTheSoc) {
+  using namespace regs;
+  struct Bus : driver::RegisterBus {
+    sim::RegisterPort& p;
+    explicit Bus(sim::RegisterPort& port) : p(port) {}
+    uint32_t read(uint32_t offset) override { return p.read(offset, nullptr); }
+    void write(uint32_t offset, uint32_t value) override { p.write(offset, value); }
+  };
+  sim::with_registers([&](sim::RegisterPort& p) {
+    Bus bus(p);
+    driver::Engine e(bus);
+    const sim::RawConfig c{0x10000, 0x20000, 0x30000, 0x40000, 0x50000, 64, 64, 64, 40, 16};
+    e.configure(sim::bench::frame_config(c, make_weight_table(kDefaultGamma)));
+    e.enable_interrupts(true, true);
+    e.start();
+    for (int i = 0; i < 4; ++i) {
+      p.cycles(25);
+      const driver::Status st = e.status();
+      EXPECT_TRUE(st.busy) << "read " << i;
+      EXPECT_FALSE(st.done) << "read " << i;
+      EXPECT_FALSE(st.error) << "read " << i;
+      EXPECT_EQ(p.read(kIrqStatus, nullptr), 0u) << "read " << i;
+    }
+    const driver::Status st = e.wait(2000, [&] { p.cycles(100); });
+    EXPECT_FALSE(st.busy);
+    EXPECT_TRUE(st.done);
+    EXPECT_FALSE(st.error);
+    EXPECT_EQ(p.read(kIrqStatus, nullptr), 1u << kIrqDoneLsb) << "only the done interrupt pending";
+    e.clear();
+    EXPECT_EQ(p.read(kIrqStatus, nullptr), 0u);
+  });
 }
 
 // Byte strobes through the SoC: a write with WSTRB k changes exactly the bytes
