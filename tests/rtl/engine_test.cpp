@@ -467,7 +467,7 @@ std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng)
 TEST(Engine, RectifiedFramesMatchReference) {
   if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
   std::mt19937 rng(32);
-  for (int k = 0; k < 8; ++k) {
+  for (int k = 0; k < 9; ++k) {
     std::uniform_int_distribution<int> wd(12, 90), hd(6, 50);
     const int w = wd(rng), h = hd(rng), s = 3 + k % 3;
     const int rw = std::max(8, int(w * std::uniform_real_distribution<double>(0.7, 1.4)(rng)));
@@ -480,6 +480,9 @@ TEST(Engine, RectifiedFramesMatchReference) {
     opt.frame.lr = k >= 6;  // dR 255 and dL flagged at invalid pixels before the post stage
     opt.frame.right = !opt.frame.lr && k % 3 == 2;
     opt.frame.tiled = k >= 3 && k != 6;
+    // The last: a tile stride of 128 KiB, so the writer's strip step has bit 17 set (`make
+    // mutate` found its high bits unchecked).
+    if (k == 8) opt.frame.tile_stride = 0x20000;
     opt.memory.latency.random = k % 2 == 0;
     opt.memory.latency.seed = uint32_t(40 + k);
     Config cfg;
@@ -488,11 +491,38 @@ TEST(Engine, RectifiedFramesMatchReference) {
                  std::to_string(rw) + "x" + std::to_string(rh) + ", S = " + std::to_string(1 << s) +
                  (opt.frame.subpixel ? ", sub-pixel" : "") + (opt.frame.right ? ", right view as base" : "") +
                  (opt.frame.lr ? ", LR" : "") +
-                 (opt.frame.tiled ? ", tiled" : ""));
+                 (opt.frame.tiled ? ", tiled" : "") + (opt.frame.tile_stride ? ", tile stride 128 KiB" : ""));
     const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
     expect_exact(r);
     EXPECT_EQ(r.rect_mismatches, 0);
   }
+}
+
+// Meshes whose nodes lie left of and above the raw views (negative u and v: the sign bit of
+// an 18-bit node, every node of the first tiles' left and top; `make mutate` found the sign
+// of a node inside a tile unchecked): the identity shifted by 40 pixels left and 12 up at
+// step 8, so the pixels that map outside come out invalid.
+TEST(Engine, RectifiedFrameFromNodesLeftOfTheRawView) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
+  std::mt19937 rng(33);
+  const int w = 64, h = 24, rw = 80, rh = 40;
+  const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
+  const auto shifted = [&](int dx, int dy) {
+    Mesh m = make_mesh(w, h, 3);
+    for (int j = 0; j < m.ny; ++j)
+      for (int i = 0; i < m.nx; ++i) {
+        m.u[size_t(j * m.nx + i)] = (i * m.step() - dx) * 32;
+        m.v[size_t(j * m.nx + i)] = (j * m.step() - dy) * 32;
+      }
+    return m;
+  };
+  EngineOptions opt;
+  opt.frame.rect = sim::Rectification{shifted(40, 12), shifted(36, 12)};
+  Config cfg;
+  cfg.disparities = std::min(16, kDmax);
+  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+  expect_exact(r);
+  EXPECT_EQ(r.rect_mismatches, 0);
 }
 
 // Faults in the rectify pass: a reset and a CTRL.ABORT while it runs, then clean
