@@ -2,7 +2,7 @@
 # SPDX-FileCopyrightText: 2026 The mcadsw authors
 # SPDX-License-Identifier: Apache-2.0
 """make formal: the proofs of formal/*.sby under SymbiYosys (yowasp-sby of the pinned tool
-environment, its Yosys, yosys-smtbmc and Boolector).
+environment, its Yosys, yosys-smtbmc and Boolector; ABC for IC3 from Debian's yosys package).
 
 Each check is one .sby file with its tasks: `prove` (the properties hold in every reachable
 state, unbounded: k-induction with smtbmc where the induction closes with the block's
@@ -15,7 +15,8 @@ assumptions, its submodules' are assertions (rtl/mcadsw_assert.svh).
   python3 flow/formal.py [--build DIR] [--only NAME ...]   every check (or those named);
                                         DIR/formal/summary.json (all checks only)
   python3 flow/formal.py --selftest     each mutant below must make its check's bmc task
-                                        FAIL with a counterexample
+                                        FAIL with a counterexample, and an IC3 check's
+                                        prove task FAIL too
 """
 import argparse
 import json
