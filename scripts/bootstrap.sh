@@ -31,7 +31,8 @@ PACKAGES=(
   verilator          # 5.006: the coverage model only (flow/coverage.py: 5.052 miscounts the
                      # toggles of signals wider than 64 bits); the rest uses .venv's 5.052
   iverilog           # second (4-state) simulator, parse check
-  yosys              # ASIC synthesis and mutation flows (0.23 on bookworm)
+  yosys              # ASIC synthesis and mutation flows (0.23 on bookworm); its yosys-abc
+                     # runs the IC3 proofs of make formal (flow/formal.py)
   opensta            # static timing
   qflow-tech-osu018  # OSU 0.18 um standard cells for gate count and timing
   gtkwave            # waveform viewer for `make wave` (and fst2vcd, headless)
