@@ -498,6 +498,30 @@ TEST(Engine, RectifiedFramesMatchReference) {
   }
 }
 
+// LR and sub-pixel with disparities of 32 and more: the right view is the left shifted by 40
+// pixels, so the scratch values the post stage reads back (16 d + offset) reach bit 9
+// (`make mutate` found that bit of the post stage's row buffer unchecked: the other LR
+// sub-pixel frames of the suite stay below d = 32).
+TEST(Engine, LrSubpixelAtLargeDisparities) {
+  if (kDmax < 48) GTEST_SKIP() << "DMAX " << kDmax << " is below the shift";
+  std::mt19937 rng(34);
+  const int w = 96, h = 20, shift = 40;
+  const YuvImage left = test::random_yuv(w, h, rng);
+  YuvImage right = left;
+  for (Plane* pr : {&right.y, &right.u, &right.v}) {
+    const Plane& pl = pr == &right.y ? left.y : pr == &right.u ? left.u : left.v;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) pr->at(x, y) = pl.at(std::min(w - 1, x + shift), y);
+  }
+  EngineOptions opt;
+  opt.frame.lr = true;
+  opt.frame.subpixel = true;
+  Config cfg;
+  cfg.disparities = std::min(64, kDmax);
+  const EngineResult r = sim::run_engine(left, right, cfg, opt);
+  expect_exact(r);
+}
+
 // Meshes whose nodes lie left of and above the raw views (negative u and v: the sign bit of
 // an 18-bit node, every node of the first tiles' left and top; `make mutate` found the sign
 // of a node inside a tile unchecked): the identity shifted by 40 pixels left and 12 up at
