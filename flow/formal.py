@@ -103,7 +103,7 @@ def checks():
 
 
 def sby_info(name):
-    """The tasks and depths of formal/NAME.sby, and how its prove task proves ("k-induction"
+    """Text, tasks and depths of formal/NAME.sby, and how its prove task proves ("k-induction"
     or "PDR", from its engine)."""
     text = (FORMAL / f"{name}.sby").read_text()
     tasks = re.search(r"^\[tasks\]\n(.*?)\n\n", text, re.S | re.M).group(1).split()
@@ -113,8 +113,8 @@ def sby_info(name):
             depth.setdefault(t, int(m.group(2)))
     engines = re.search(r"^\[engines\]\n(.*?)\n\n", text, re.S | re.M).group(1).splitlines()
     prove_engine = [e.split(":", 1)[-1].strip() for e in engines if e.startswith("prove:") or ":" not in e]
-    depth["method"] = "PDR" if prove_engine and prove_engine[0].startswith("abc pdr") else "k-induction"
-    return text, tasks, depth
+    method = "PDR" if prove_engine and prove_engine[0].startswith("abc pdr") else "k-induction"
+    return text, tasks, depth, method
 
 
 def cover_name(src, line):
@@ -194,9 +194,9 @@ def prove(a, out, env):
     run = Run()
     try:
         for name in only:
-            _, tasks, depth = sby_info(name)
+            _, tasks, depth, method = sby_info(name)
             main = "prove" if "prove" in tasks else "bmc"
-            row = {"check": name, "kind": f"unbounded ({depth['method']})" if main == "prove" else "bounded",
+            row = {"check": name, "kind": f"unbounded ({method})" if main == "prove" else "bounded",
                    "depth": depth.get(main)}
             for task in (main, "cover"):
                 if task not in tasks:
@@ -223,11 +223,11 @@ def prove(a, out, env):
                         status = "FAIL (no cover statement)"
                 row[f"{task}_result"] = status
                 ok = status == "PASS"
-                what = {"prove": f"proven for every reachable state ({depth['method']})",
+                what = {"prove": f"proven for every reachable state ({method})",
                         "bmc": f"proven for every trace of {depth.get('bmc')} cycles from reset",
                         "cover": "reached: " + ", ".join(row.get("covers_reached", []))}[task]
                 log(f"{name} {task}: {what if ok else status} ({secs} s; {wd}/logfile.txt)")
-                if not ok and task == "prove" and depth["method"] == "PDR" and "bmc" in tasks:
+                if not ok and task == "prove" and method == "PDR" and "bmc" in tasks:
                     # No trace from the IC3 engine here: the file's bmc task looks for one.
                     bstatus, _, btext = run_task(run, env, FORMAL / f"{name}.sby", "bmc", out / f"{name}_bmc")
                     status += f"; its bmc task ({depth.get('bmc')} cycles): {bstatus}"
@@ -264,7 +264,7 @@ def selftest(a, out, env):
             mdir = out / "mutants" / str(i)
             (mdir / rtl).parent.mkdir(parents=True, exist_ok=True)
             (mdir / rtl).write_text(src.replace(old, new))
-            text, tasks, _ = sby_info(name)
+            text, tasks, _, method = sby_info(name)
             assert text.count(f"../rtl/{rtl}\n") == 1, (name, rtl)
             # The check's file with the mutant in the block's place (SymbiYosys's [files]
             # "name path" form); its paths stay relative to formal/, where it runs.
@@ -279,7 +279,7 @@ def selftest(a, out, env):
                 bad.append(f"{name} mutant {i} ({what}): {status}, no counterexample "
                            f"({out / f'mutant_{i}'}/logfile.txt)")
             # An IC3 proof must fail on the mutant too (the bmc task above gives the trace).
-            if "prove" in tasks and sby_info(name)[2]["method"] == "PDR":
+            if "prove" in tasks and method == "PDR":
                 status, secs, _ = run_task(run, env, sby, "prove", out / f"mutant_{i}_prove")
                 if status == "FAIL":
                     log(f"selftest: {name} mutant {i} fails the unbounded proof (PDR) too ({secs} s)")

@@ -508,11 +508,9 @@ TEST(Engine, LrSubpixelAtLargeDisparities) {
   const int w = 96, h = 20, shift = 40;
   const YuvImage left = test::random_yuv(w, h, rng);
   YuvImage right = left;
-  for (Plane* pr : {&right.y, &right.u, &right.v}) {
-    const Plane& pl = pr == &right.y ? left.y : pr == &right.u ? left.u : left.v;
+  for (const auto& [pl, pr] : {std::pair{&left.y, &right.y}, {&left.u, &right.u}, {&left.v, &right.v}})
     for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) pr->at(x, y) = pl.at(std::min(w - 1, x + shift), y);
-  }
+      for (int x = 0; x < w; ++x) pr->at(x, y) = pl->at(std::min(w - 1, x + shift), y);
   EngineOptions opt;
   opt.frame.lr = true;
   opt.frame.subpixel = true;
