@@ -159,3 +159,13 @@ long frame_limit(int W, int H, const EngineOptions& opt) {
 }
 
 }  // namespace mcadsw::sim::bench
+
+namespace mcadsw::sim {
+
+#if VM_TRACE_FST
+bool model_writes_waves() { return true; }
+#else
+bool model_writes_waves() { return false; }
+#endif
+
+}  // namespace mcadsw::sim

@@ -225,4 +225,9 @@ struct RegisterPort {
 MemoryModel::Violations with_registers(const std::function<void(RegisterPort&)>& script,
                                        const EngineOptions& opt = {});
 
+// Whether this model was verilated with FST tracing (EngineOptions::run.waves). The
+// regression's models are not (a traced model keeps every traced signal a variable and
+// runs slower); build/bin/mcadsw_sim_waves is mcadsw_sim on the traced model.
+bool model_writes_waves();
+
 }  // namespace mcadsw::sim

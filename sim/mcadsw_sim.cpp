@@ -10,12 +10,16 @@
 //              [--origin ADDR] [--packed] [--record-ports FILE]
 //              [--calib CALIB.yml | --mesh MESH.bin] [--step S]
 // Exit status: 0 bit-exact, 1 mismatch / timeout / harness error, 2 usage.
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
+
+#include <unistd.h>
 
 #include "engine_bench.hpp"
 #include "mcadsw/eval.hpp"
@@ -191,6 +195,21 @@ int main(int argc, char** argv) {
                                   std::to_string(step) + " (a region of the rectified frame on whole mesh cells)");
   } catch (const std::exception& e) {
     std::cerr << "mcadsw_sim: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  if (!waves.empty() && !mcadsw::sim::model_writes_waves()) {
+    // This model simulates faster without tracing; mcadsw_sim_waves, beside it, is the
+    // same program on the traced model: run that with the same arguments.
+    std::error_code ec;
+    const auto traced = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "mcadsw_sim_waves";
+    if (!ec && std::filesystem::exists(traced)) {
+      std::fflush(stdout);
+      execv(traced.c_str(), argv);
+      std::cerr << "mcadsw_sim: --waves: cannot run " << traced.string() << ": " << std::strerror(errno) << "\n";
+      return 1;
+    }
+    std::cerr << "mcadsw_sim: --waves: this model was built without FST tracing, and " << traced.string()
+              << " (the traced one) is missing: cmake --build BUILD --target mcadsw_sim_waves\n";
     return 2;
   }
   opt.run.waves = waves;

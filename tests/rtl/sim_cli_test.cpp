@@ -137,6 +137,20 @@ TEST_F(SimCli, WavesUseTheRealClockPeriod) {
   EXPECT_LE(last, (cycles + 600) * period);
 }
 
+// mcadsw_sim's model is not traced; --waves runs mcadsw_sim_waves beside it (above). Without
+// that executable: a message naming the target to build, exit 2, no wave file.
+TEST_F(SimCli, WavesWithoutTheTracedModelNameWhatToBuild) {
+  const fs::path alone = dir_ / "alone" / "mcadsw_sim";
+  fs::create_directories(alone.parent_path());
+  fs::copy_file(MCADSW_SIM, alone);
+  const fs::path fst = dir_ / "w.fst";
+  const CliRun r = mcadsw::test::run_command(alone.string(), pair() + " -d 4 --crop 100,100,20,10 --waves " +
+                                                                 fst.string() + outputs());
+  expect_failure(r, "--target mcadsw_sim_waves");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(fs::exists(fst));
+}
+
 TEST_F(SimCli, MissingFile) {
   expect_failure(run("nonexistent.png " + view("tsukuba", "right.png") + " -d 16" + outputs()),
                  "no such file");
