@@ -25,7 +25,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 # What REUSE.toml may license: files that have no room for a comment, or data a program
 # writes. Anything else must carry its own SPDX-License-Identifier line.
-ANNOTATED_SUFFIXES = {".png", ".json", ".svg", ".yml"}
+ANNOTATED_SUFFIXES = {".png", ".json", ".svg", ".yml", ".csv"}
 ANNOTATED_NAMES = {"SHA256SUMS"}
 
 
