@@ -400,10 +400,8 @@ def cells_by_module(netlist):
     (SRC_PRIMS); the LUTs of ABC's mapping and the RAMs keep none (flow/ecp5.py block gives a
     block's LUT4 and RAMs on its own). Also the instances: Yosys's $scopeinfo cells, one a
     flattened instance, kept even when all its logic is gone ({instance path: module file})."""
-    mods = json.loads(Path(netlist).read_text())["modules"]
-    top = next(k for k, v in mods.items() if v.get("attributes", {}).get("top"))
     by_mod, insts = {}, []
-    for n, c in mods[top]["cells"].items():
+    for n, c in ecp5_paths.top_module(netlist)["cells"].items():
         if c["type"] == "$scopeinfo":
             f = re.findall(r"rtl/([\w/]+)\.sv", c["attributes"].get("module_src", ""))
             insts.append((n, f[0] if f else None))

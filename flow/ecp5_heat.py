@@ -18,11 +18,13 @@ are compared at the same iteration. Exit 0; 2 on a missing or unreadable input.
 """
 import argparse
 import csv
-import json
 import re
 import sys
 from collections import Counter, defaultdict
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from ecp5_paths import top_module  # noqa: E402
 
 DEEPER = ("u_cost_agg", "u_fetch", "u_post", "u_rectifier")
 
@@ -35,17 +37,14 @@ def block_of(name, src=""):
             return ".".join(p[:3] if p[1] in DEEPER and len(p) > 2 else p[:2])
         if p:
             return p[0]
-    m = re.search(r"rtl/([A-Za-z0-9_/]+)\.s?v:", src or "")
+    m = re.search(r"rtl/([\w/]+)\.sv", src or "")
     return m.group(1) if m else "(unnamed)"
 
 
 def tiles_of(placed):
     """{(x, y): Counter of blocks}, Counter of cells by block, from a placed design."""
-    cells = json.loads(Path(placed).read_text())["modules"]
-    top = next((m for m in cells.values() if m.get("attributes", {}).get("top")), None)
-    top = top or next(iter(cells.values()))
     tiles, count = defaultdict(Counter), Counter()
-    for name, c in top["cells"].items():
+    for name, c in top_module(placed)["cells"].items():
         attrs = c.get("attributes", {})
         bel = attrs.get("NEXTPNR_BEL")
         m = re.match(r"X(\d+)/Y(\d+)/", bel or "")
@@ -90,7 +89,7 @@ def main(argv):
     try:
         tiles, count = tiles_of(a.placed)
         total, by_block, empty, hot = heat(tiles, csv_path)
-    except (OSError, ValueError, KeyError, StopIteration) as e:
+    except (OSError, ValueError, KeyError) as e:
         print(f"ecp5_heat: {e}", file=sys.stderr)
         return 2
     print(f"ecp5_heat: {csv_path}: {total} overused wire uses at iteration {a.iteration}, "

@@ -75,17 +75,24 @@ def rtl_lines(cell):
     return " ".join(s) or cell["type"]
 
 
+def top_module(netlist):
+    """The top module (the one whose attributes say top) of a design in Yosys's JSON, as
+    synth_ecp5 and nextpnr write it; ValueError if there is none."""
+    mods = json.loads(Path(netlist).read_text())["modules"]
+    top = next((v for v in mods.values() if v.get("attributes", {}).get("top")), None)
+    if top is None:
+        raise ValueError(f"{netlist}: no top module")
+    return top
+
+
 def analyse(netlist):
     """Arrival times of the top module's nets; returns (end points, the cells, predecessor
     map, arrival times, net names): end points [(arrival with setup, bit, cell, port)],
     slowest first; net names by bit, where Yosys kept one."""
-    mods = json.loads(Path(netlist).read_text())["modules"]
-    top = next((k for k, v in mods.items() if v.get("attributes", {}).get("top")), None)
-    if top is None:
-        raise ValueError(f"{netlist}: no top module")
-    cells = mods[top]["cells"]
+    top = top_module(netlist)
+    cells = top["cells"]
     names = {}
-    for name, n in mods[top].get("netnames", {}).items():
+    for name, n in top.get("netnames", {}).items():
         if n.get("hide_name"):
             continue
         for i, b in enumerate(n.get("bits", [])):
