@@ -38,8 +38,10 @@ RTL = ROOT / "rtl"
 # The packages, read in this order before the modules and never linted as a top: the
 # engine's, then the rectifier's (it imports the engine's). rtl/mcadsw.f lists both first.
 PKGS = ["mcadsw_pkg.sv", "rect/mcadsw_rect_pkg.sv"]
-# The engine core: instances and wires only (the lint step fails on an always block in it).
+# The engine core: instances and wires only (the lint step fails on an always block in it,
+# and when it grows past WIRING_LINES lines: glue that grows belongs in a block).
 WIRING = "mcadsw_engine.sv"
+WIRING_LINES = 360
 # Yosys 0.23 parses a unary operator before a size cast as part of the size: `-(N)'(x)` as a
 # cast to the size -(N) (it read -(13)'(2) as +2), `~N'(x)` as a cast to the size ~N (it read
 # ~12'(3) as 1); both found by gate-level simulation. Verilator and Icarus apply the operator
@@ -121,6 +123,11 @@ class Check:
         if found:
             print(f"rtl_check: rtl/{WIRING} is wiring, but has an always block (line {', '.join(map(str, found))}): "
                   "move it into the block that owns it")
+            return False
+        lines = len((RTL / WIRING).read_text().splitlines())
+        if lines > WIRING_LINES:
+            print(f"rtl_check: rtl/{WIRING} is wiring, but has {lines} lines (at most {WIRING_LINES}): "
+                  "move what is not instances and wires into the block that owns it")
             return False
         pkg = Path(self.alt_pkg).read_text() if self.alt_pkg else (RTL / PKGS[0]).read_text()
         fields = [f.lower() for f in re.findall(r"localparam int CFG_([A-Z0-9_]+?)\s*=", pkg)

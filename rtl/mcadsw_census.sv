@@ -250,7 +250,6 @@ module mcadsw_census #(
 
   // ---- Input buffer -------------------------------------------------------------------
   logic [4*LW-1:0]   strip_cols;       // the 4 luma columns of a finished strip
-  logic              in_plane_unused;
   logic              col_valid;        // FPGA target: the strip's columns one a cycle
   logic [1:0]        col_b;            // ... column col_b of the last strip
   logic [LW-1:0]     col_word;
@@ -263,7 +262,7 @@ module mcadsw_census #(
     .data_i  (pix_data_i),
     .last_o  (strip_end),
     .done_o  (win_done),
-    .plane_o (in_plane_unused),
+    .plane_o (),
     .strip_o (in_strip),
     .cols_o  (strip_cols),
     .col_valid_o (col_valid),

@@ -1,15 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The mcadsw authors
 // SPDX-License-Identifier: Apache-2.0
 
-// MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC), wiring
-// only: the configuration registered and its views (mcadsw_pass_cfg), its check, the
-// frame controller, the block scheduler and the window geometry; the memory controller
-// and three window readers (mcadsw_fetch), the left and right mini-census transformers,
-// the weight generator, the cost aggregator with WTA, and the depth FIFO; beyond the
-// paper the LR post stage and the rectifier (mcadsw_rectifier: its check, pass and mark
-// step); and the 32-bit external memory port, owned by the rectify pass, the mark step,
-// the post stage or the passes (mcadsw_port_mux). docs/architecture.md and docs/blocks/
-// describe the blocks; docs/memory_map.md the configuration, status and memory layout.
+// MCADSW disparity engine core (paper Fig. 9; mcadsw_top wraps it for an SoC), wiring only:
+// the configuration and its views, its check, the frame controller, the scheduler, the window
+// geometry, the memory side (controller and window readers), the census transformers, the
+// weight generator, the cost aggregator with WTA, the depth FIFO; beyond the paper the LR post
+// stage, the rectifier and the owner of the external port. docs/blocks/engine.md describes
+// the wiring, docs/memory_map.md the configuration, status and memory layout.
 `default_nettype none
 `include "mcadsw_assert.svh"
 
@@ -73,20 +70,18 @@ module mcadsw_engine #(
   // ---- Configuration: registered at the start, checked, then fixed for the frame ----------
   // mcadsw_pass_cfg: the configuration registered (cfg_q, fields at mcadsw_pkg::CFG_*), the
   // pass view, the rectifier's and the mark step's views (docs/blocks/engine.md 1).
-  logic                            accept, to_second, pass_second, pass_post;
-  logic [1:0]                      mark_phase;
+  logic                            accept, to_second, pass_second, pass_post, tiled, post_wide;
+  logic                            right, wide, pack;  // right view as base; 16-bit output; LR scratch
   logic [mcadsw_pkg::CFG_BITS-1:0] cfg_q;
   logic [CW-1:0]                   height_q, xend;
   logic [AW-1:0]                   stride_q, tile_q, rect_stride, mark_valid, mark_base, mark_stride;
   logic [AW-1:0]                   base_by, base_bu, base_bv, base_my, base_out, pass_stride;
-  logic                            tiled, post_wide, mark_half;
-  logic                            right, wide, pack;  // right view as base; 16-bit output; LR scratch
-  logic [5:0]                      rect_planes;
-  logic [4*AW-1:0]                 wr_base;
-  logic [3:0]                      wr_outs;
-  logic [1:0]                      xlo;
+  logic [1:0]                      mark_phase, xlo;
+  logic                            mark_half;
   logic [15:0]                     mark_value;
-  // The fields several blocks read
+  logic [5:0]                      rect_planes;
+  logic [3:0]                      wr_outs;
+  logic [4*AW-1:0]                 wr_base;
   assign height_q = cfg_q[mcadsw_pkg::CFG_HEIGHT +: CW];
   assign stride_q = cfg_q[mcadsw_pkg::CFG_STRIDE +: AW];
   assign tile_q   = cfg_q[mcadsw_pkg::CFG_TILE_STRIDE +: AW];
@@ -104,13 +99,11 @@ module mcadsw_engine #(
     .mark_half_o (mark_half), .mark_value_o (mark_value)
   );
 
-  // The check's verdict is registered (mcadsw_cfg_check): the configuration settles
-  // through its multipliers and comparators in the frame controller's StSettle, and
-  // the controller's branch on it starts from flip-flops (timing).
-  localparam int SB = AW + CW;                      // plane sizes, exact
+  // The check's verdict is registered (docs/blocks/engine.md 2); plane sizes are exact.
+  localparam int SB = AW + CW;
   logic [mcadsw_pkg::ERR_BITS-1:0] cfg_err_q;
-  logic cfg_ok_q, cfg_done_q;
-  logic [SB-1:0] in_size, size, out_size;
+  logic                            cfg_ok_q, cfg_done_q;
+  logic [SB-1:0]                   in_size, size, out_size;
   mcadsw_cfg_check #(.AW(AW), .CW(CW), .DMAX(DMAX), .NB(NB), .SB(SB)) u_cfg_check (
     .clk_i, .rst_ni, .capture_i (accept), .cap_cfg_i (cfg_i), .cfg_i (cfg_q),
     .err_o (cfg_err_q), .ok_o (cfg_ok_q), .done_o (cfg_done_q),
@@ -118,7 +111,7 @@ module mcadsw_engine #(
   );
 
   // ---- Frame controller: the passes, busy / done, error code, counters --------------------
-  logic sched_busy, sched_done, go, post_start, post_done, post_busy;
+  logic sched_busy, sched_done, go, post_start, post_done;
   logic rchk_start, rchk_done, rect_start, rect_done, rect_sel, mark_start, mark_done, mark_sel;
   logic [2:0] rchk_err;
   logic [1:0] rect_err;
@@ -126,43 +119,33 @@ module mcadsw_engine #(
   assign error_code_o = 8'(error_code);
 
   mcadsw_frame_ctrl u_frame_ctrl (
-    .clk_i, .rst_ni,
-    .start_i,
+    .clk_i, .rst_ni, .start_i,
     .cfg_lr_i (cfg_q[mcadsw_pkg::CFG_MODE + 1]), .cfg_right_i (cfg_q[mcadsw_pkg::CFG_MODE + 2]),
     .cfg_rect_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]), .err_i (cfg_err_q),
-    .ok_i (cfg_ok_q), .chk_done_i (cfg_done_q),
-    .accept_o (accept),
+    .ok_i (cfg_ok_q), .chk_done_i (cfg_done_q), .accept_o (accept),
     .rchk_start_o (rchk_start), .rchk_done_i (rchk_done), .rchk_err_i (rchk_err),
     .rect_start_o (rect_start), .rect_done_i (rect_done), .rect_err_i (rect_err),
-    .rect_sel_o (rect_sel),
-    .mark_start_o (mark_start), .mark_done_i (mark_done), .mark_sel_o (mark_sel),
-    .mark_phase_o (mark_phase),
+    .rect_sel_o (rect_sel), .mark_start_o (mark_start), .mark_done_i (mark_done),
+    .mark_sel_o (mark_sel), .mark_phase_o (mark_phase),
     .sched_start_o (go), .sched_busy_i (sched_busy), .sched_done_i (sched_done),
     .to_second_o (to_second), .pass_second_o (pass_second), .pass_post_o (pass_post),
-    .post_start_o (post_start), .post_done_i (post_done),
-    .wr_idle_i (mem_wr_idle_i),
+    .post_start_o (post_start), .post_done_i (post_done), .wr_idle_i (mem_wr_idle_i),
     .mem_req_i (mem_req_o), .mem_gnt_i, .mem_we_i (mem_we_o), .mem_len_i (mem_len_o),
     .busy_o, .done_o, .error_o, .error_code_o (error_code),
     .cnt_cycles_o, .cnt_words_read_o, .cnt_words_written_o, .cnt_stall_o
   );
 
   // ---- Block scheduler -----------------------------------------------------------------
-  logic               prep_start, prep_bank, agg_bank;
-  logic signed [CW:0] prep_x0, prep_y0;
-  logic               cl_done, cr_done, wg_done;   // the preparers' (one cycle each)
-  logic [4:0]         prep_rows;
-  logic               prep_cont;      // the block continues its left neighbour
   localparam int SLB = $clog2(mcadsw_pkg::WEIGHT_SLOTS);
-  logic               wrow_ready;
+  logic               prep_start, prep_bank, prep_cont, agg_bank, agg_active, agg_busy, wrow_ready;
+  logic               cl_done, cr_done, wg_done;   // the preparers' (one cycle each)
+  logic               job_valid, job_ready, desc_push, fifo_space, fifo_empty;
+  logic signed [CW:0] prep_x0, prep_y0;
+  logic [4:0]         prep_rows, job_row, desc_n;
   logic [SLB-1:0]     wrow_slot;
-  logic               agg_active;     // census rings: the previous block still aggregates
-  logic               job_valid, job_ready, agg_busy;
-  logic [4:0]         job_row;
   logic [5:0]         job_last_col;
-  logic               desc_push, fifo_space, fifo_empty;
   logic [AW-1:0]      desc_addr;
   logic [CW-1:0]      desc_x;
-  logic [4:0]         desc_n;
 
   mcadsw_scheduler #(.CW(CW), .AW(AW)) u_scheduler (
     .clk_i, .rst_ni, .start_i (go), .width_i (xend), .height_i (height_q), .out_base_i (base_out),
@@ -202,17 +185,11 @@ module mcadsw_engine #(
   );
 
   // ---- Memory controller and window readers ----------------------------------------------
-  logic          wr_req, wr_gnt;
-  logic [AW-1:0] wr_addr;
-  logic [3:0]    wr_be;
-  logic [31:0]   wr_wdata;
-  logic          eng_req, eng_gnt, eng_we, eng_rvalid;
-  logic [3:0]    eng_be;
-  logic [AW-1:0] eng_addr;
-  logic [3:0]    eng_len;
-  logic [31:0]   eng_wdata;
+  logic          wr_req, wr_gnt, eng_req, eng_gnt, eng_we, eng_rvalid;
   logic          lpix_valid, lpix_ready, rpix_valid, rpix_ready, wpix_valid, wpix_ready;
-  logic [31:0]   lpix, rpix, wpix;
+  logic [3:0]    wr_be, eng_be, eng_len;
+  logic [AW-1:0] wr_addr, eng_addr;
+  logic [31:0]   wr_wdata, eng_wdata, lpix, rpix, wpix;
 
   mcadsw_fetch #(.AW(AW), .CW(CW), .COLS(COLS), .LSTRIPS(LSTRIPS), .RSTRIPS(RSTRIPS),
                  .WSTRIPS(WSTRIPS), .RSB(RSB)) u_fetch (
@@ -232,8 +209,7 @@ module mcadsw_engine #(
     .mem_rvalid_i (eng_rvalid), .mem_rdata_i
   );
 
-  // ---- Post stage (LR mode, pass 2), rectify pass and mark step ------------------------------
-  // Each owns the external port in its frame-controller states (mcadsw_port_mux).
+  // ---- Post stage (LR mode), rectify pass and mark step: each owns the port in its states --
   logic          post_req, post_we, post_gnt, post_rvalid;
   logic [3:0]    post_be;
   logic [AW-1:0] post_addr;
@@ -245,13 +221,12 @@ module mcadsw_engine #(
     .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
     .stride_i (stride_q), .out_stride_i (cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW]),
     .width_i (cfg_q[mcadsw_pkg::CFG_WIDTH +: CW]), .height_i (height_q),
-    .tol_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 6]), .wide_i (post_wide), .busy_o (post_busy), .done_o (post_done),
+    .tol_i (cfg_q[mcadsw_pkg::CFG_LR_T +: 6]), .wide_i (post_wide), .busy_o (), .done_o (post_done),
     .mem_req_o (post_req), .mem_gnt_i (post_gnt), .mem_we_o (post_we), .mem_be_o (post_be),
     .mem_addr_o (post_addr), .mem_wdata_o (post_wdata), .mem_rvalid_i (post_rvalid), .mem_rdata_i
   );
 
-  // Rectification (docs/blocks/rectifier.md): the check of its registers, the rectify
-  // pass and the mark step. in_size, size, out_size are mcadsw_cfg_check's.
+  // Rectification (docs/blocks/rectifier.md): the check of its registers, pass and mark step.
   logic          rect_req, rect_we, rect_gnt, rect_rvalid, mark_req, mark_we, mark_gnt, mark_rvalid;
   logic [3:0]    rect_be, mark_be;
   logic [AW-1:0] rect_addr, mark_addr;
@@ -273,7 +248,6 @@ module mcadsw_engine #(
     .mark_rvalid_i (mark_rvalid), .mem_rdata_i
   );
 
-  // The port's owner: the rectify pass, the mark step, the post stage, or the passes.
   mcadsw_port_mux #(.AW(AW)) u_port_mux (
     .clk_i, .rst_ni, .rect_sel_i (rect_sel), .mark_sel_i (mark_sel), .pass_post_i (pass_post),
     .rect_req_i (rect_req), .rect_we_i (rect_we), .rect_be_i (rect_be), .rect_addr_i (rect_addr),
@@ -307,49 +281,34 @@ module mcadsw_engine #(
   logic [CRW-1:0]             cen_r;
   logic [LANES*WINDOW*WB-1:0] wv;
   logic [HAGG*WINDOW*WB-1:0]  wh;
-  // Status outputs the engine does not need
-  logic [4:0]                 hrd_row_unused, disp_row_unused, sub_row_unused;
-  logic [DB-1:0]              vrd_d_unused;
-  logic cl_busy_unused, cr_busy_unused, wg_busy_unused, sub_busy_unused, agg_busy_unused;
-  logic cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, unused_status;
-  assign unused_status = ^{disp_row_unused, hrd_row_unused, sub_busy_unused, sub_row_unused,
-                           agg_busy_unused, vrd_d_unused, cl_busy_unused, cr_busy_unused, wg_busy_unused,
-                           cl_cfg_ready_unused, cr_cfg_ready_unused, wg_cfg_ready_unused, post_busy};
 
   mcadsw_census #(.COLS(COLS)) u_census_l (
-    .clk_i, .rst_ni,
-    .cfg_valid_i (prep_start), .cfg_ready_o (cl_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .clk_i, .rst_ni, .cfg_valid_i (prep_start), .cfg_ready_o (), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (cl_lo_x), .cfg_hi_x_i (cl_hi_x), .cfg_lo_y_i (cen_lo_y), .cfg_hi_y_i (cen_hi_y),
     .cfg_ofs_i (cl_ofs), .cfg_cont_i (prep_cont), .cfg_first_i (cl_first),
-    .ring_free_i (!agg_active),
+    .ring_free_i (!agg_active), .done_o (cl_done), .busy_o (),
     .pix_valid_i (lpix_valid), .pix_ready_o (lpix_ready), .pix_data_i (lpix),
-    .done_o (cl_done), .busy_o (cl_busy_unused),
     .rd_en_i (lrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
     .rd_col_i (lrd_col), .rd_data_o (cen_l)
   );
 
-  // ASIC target: a step reads disparities d .. d + PAR - 1: left lane l's columns
-  // minus d + PAR - 1 .. minus d, RLANES right columns from column grp LANES +
-  // DMAX - 1 - d - (PAR - 1) of the window (0 .. RCOLS - RLANES: d <= DMAX - PAR).
+  // ASIC target: a step (d .. d + PAR - 1) reads RLANES right columns from column
+  // grp LANES + DMAX - 1 - d - (PAR - 1) of the window (docs/blocks/census.md).
   mcadsw_census #(.COLS(RCOLS), .RL(FPGA ? CRP : RLANES)) u_census_r (
-    .clk_i, .rst_ni,
-    .cfg_valid_i (prep_start), .cfg_ready_o (cr_cfg_ready_unused), .cfg_bank_i (prep_bank),
+    .clk_i, .rst_ni, .cfg_valid_i (prep_start), .cfg_ready_o (), .cfg_bank_i (prep_bank),
     .cfg_lo_x_i (cr_lo_x), .cfg_hi_x_i (cr_hi_x), .cfg_lo_y_i (cen_lo_y), .cfg_hi_y_i (cen_hi_y),
     .cfg_ofs_i (cr_ofs), .cfg_cont_i (prep_cont), .cfg_first_i (cr_first),
-    .ring_free_i (!agg_active),
+    .ring_free_i (!agg_active), .done_o (cr_done), .busy_o (),
     .pix_valid_i (rpix_valid), .pix_ready_o (rpix_ready), .pix_data_i (rpix),
-    .done_o (cr_done), .busy_o (cr_busy_unused),
     .rd_en_i (rrd_en), .rd_bank_i (agg_bank), .rd_row_i (6'(vrd_row)),
     .rd_col_i (rrd_col), .rd_data_o (cen_r)
   );
 
   mcadsw_weight_gen u_weight_gen (
-    .clk_i, .rst_ni,
-    .thr_i (cfg_q[mcadsw_pkg::CFG_THR +: NTHR*DCB]),
-    .cfg_valid_i (prep_start), .cfg_ready_o (wg_cfg_ready_unused),
+    .clk_i, .rst_ni, .thr_i (cfg_q[mcadsw_pkg::CFG_THR +: NTHR*DCB]),
+    .cfg_valid_i (prep_start), .cfg_ready_o (), .done_o (wg_done), .busy_o (),
     .cfg_ofs_i (w_ofs), .cfg_first_i (w_first), .cfg_lo_i (w_lo), .cfg_rows_i (prep_rows),
     .pix_valid_i (wpix_valid), .pix_ready_o (wpix_ready), .pix_data_i (wpix),
-    .done_o (wg_done), .busy_o (wg_busy_unused),
     .row_ready_o (wrow_ready), .rd_slot_o (wrow_slot), .row_take_i (desc_push),
     .vrd_en_i (vrd_en), .vrd_slot_i (vrd_slot), .vrd_grp_i (vrd_grp), .wv_o (wv),
     .hrd_en_i (hrd_en), .hrd_slot_i (hrd_slot), .hrd_grp_i (hrd_grp), .hrd_rel_i (hrd_rel),
@@ -357,10 +316,8 @@ module mcadsw_engine #(
   );
 
   // ---- Cost aggregator, WTA and depth FIFO ---------------------------------------------------
-  // Sub-pixel values (docs/algorithm.md 12.6) follow the disparities by two cycles. The
-  // scheduler follows vbusy_o (busy_o on the ASIC target; on the FPGA target the vertical
-  // side's reads, the only ones of the census banks): the WTA's last two stages do not use
-  // the census and weight banks, and the depth FIFO holds a row until its last values arrive.
+  // Sub-pixel values follow the disparities by two cycles; the scheduler follows vbusy_o, the
+  // census and weight banks' last use (docs/blocks/cost_agg.md).
   localparam int VB = DB + 4;
   logic               disp_valid, sub_valid;
   logic [2:0]         disp_grp, sub_grp;
@@ -368,32 +325,26 @@ module mcadsw_engine #(
   logic [HAGG*VB-1:0] sub;
 
   mcadsw_cost_agg #(.P(PAR)) u_cost_agg (
-    .clk_i, .rst_ni,
-    .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
-    .job_disp_i (cfg_q[mcadsw_pkg::CFG_DISP +: NB]), .job_last_col_i (job_last_col), .job_wslot_i (wrow_slot),
-    .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp), .vrd_d_o (vrd_d_unused),
-    .vrd_slot_o (vrd_slot), .wv_i (wv),
+    .clk_i, .rst_ni, .job_valid_i (job_valid), .job_ready_o (job_ready), .job_row_i (job_row),
+    .job_disp_i (cfg_q[mcadsw_pkg::CFG_DISP +: NB]), .job_last_col_i (job_last_col),
+    .job_wslot_i (wrow_slot), .vrd_en_o (vrd_en), .vrd_row_o (vrd_row), .vrd_grp_o (vrd_grp),
+    .vrd_d_o (), .vrd_slot_o (vrd_slot), .wv_i (wv), .cen_l_i (cen_l), .cen_r_i (cen_r),
     .lrd_en_o (lrd_en), .lrd_col_o (lrd_col), .rrd_en_o (rrd_en), .rrd_col_o (rrd_col),
-    .cen_l_i (cen_l), .cen_r_i (cen_r),
-    .hrd_en_o (hrd_en), .hrd_row_o (hrd_row_unused), .hrd_grp_o (hrd_grp),
-    .hrd_slot_o (hrd_slot), .hrd_rel_o (hrd_rel), .wh_i (wh),
-    .disp_valid_o (disp_valid), .disp_row_o (disp_row_unused), .disp_grp_o (disp_grp),
-    .disp_o (disp), .busy_o (agg_busy_unused), .vbusy_o (agg_busy),
-    .sub_valid_o (sub_valid), .sub_row_o (sub_row_unused), .sub_grp_o (sub_grp),
-    .sub_o (sub), .sub_d_o (sub_d), .sub_busy_o (sub_busy_unused)
+    .hrd_en_o (hrd_en), .hrd_row_o (), .hrd_grp_o (hrd_grp), .hrd_slot_o (hrd_slot),
+    .hrd_rel_o (hrd_rel), .wh_i (wh), .busy_o (), .vbusy_o (agg_busy),
+    .disp_valid_o (disp_valid), .disp_row_o (), .disp_grp_o (disp_grp), .disp_o (disp),
+    .sub_valid_o (sub_valid), .sub_row_o (), .sub_grp_o (sub_grp), .sub_o (sub), .sub_d_o (sub_d),
+    .sub_busy_o ()
   );
 
-  // The depth FIFO's values: d, 16 d + offset, or in the LR mode's first sub-pixel pass
-  // the scratch format {offset + 8, d} (docs/blocks/engine.md section 7).
+  // Values: d, 16 d + offset, or the LR mode's scratch format (docs/blocks/engine.md 7).
   mcadsw_depth_fifo #(.AW(AW), .CW(CW), .DB(DB)) u_depth_fifo (
-    .clk_i, .rst_ni,
-    .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x), .desc_n_i (desc_n),
-    .space_o (fifo_space), .empty_o (fifo_empty),
+    .clk_i, .rst_ni, .desc_push_i (desc_push), .desc_addr_i (desc_addr), .desc_x_i (desc_x),
+    .desc_n_i (desc_n), .space_o (fifo_space), .empty_o (fifo_empty),
     .wide_i (wide), .pack_i (pack), .mirror_i (right), .xlo_i (xlo), .xend_i (xend),
     .disp_valid_i (disp_valid), .disp_grp_i (disp_grp), .disp_i (disp),
     .sub_valid_i (sub_valid), .sub_grp_i (sub_grp), .sub_i (sub), .sub_d_i (sub_d),
-    .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata),
-    .wr_gnt_i (wr_gnt)
+    .wr_req_o (wr_req), .wr_addr_o (wr_addr), .wr_be_o (wr_be), .wr_wdata_o (wr_wdata), .wr_gnt_i (wr_gnt)
   );
 
   // ---- Invariants -------------------------------------------------------------------------

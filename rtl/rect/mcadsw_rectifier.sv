@@ -78,9 +78,8 @@ module mcadsw_rectifier #(
   assign mesh_base  = cfg_i[mcadsw_pkg::CFG_MESH +: 2*AW];
   assign valid_base = cfg_i[mcadsw_pkg::CFG_VALID_MAP +: 2*AW];
 
-  logic chk_busy_unused, rect_busy_unused, mark_busy_unused;
   mcadsw_rect_check #(.AW(AW), .CW(CW), .SB(SB)) u_rect_check (
-    .clk_i, .rst_ni, .start_i (chk_start_i), .busy_o (chk_busy_unused), .done_o (chk_done_o),
+    .clk_i, .rst_ni, .start_i (chk_start_i), .busy_o (), .done_o (chk_done_o),
     .err_o (chk_err_o),
     .step_log2_i (step_log2), .width_i (width), .height_i (height), .raw_w_i (raw_w), .raw_h_i (raw_h),
     .raw_stride_i (raw_stride), .tiled_i, .planes_i, .raw_base_i (raw_base), .rect_base_i (rect_base),
@@ -94,7 +93,7 @@ module mcadsw_rectifier #(
     .step_log2_i (step_log2), .width_i (width), .height_i (height), .raw_w_i (raw_w), .raw_h_i (raw_h),
     .tiled_i, .raw_stride_i (raw_stride), .stride_i, .raw_base_i (raw_base), .base_i (rect_base),
     .planes_i, .mesh_base_i (mesh_base), .valid_base_i (valid_base),
-    .busy_o (rect_busy_unused), .done_o (rect_done_o), .err_o (rect_err_o),
+    .busy_o (), .done_o (rect_done_o), .err_o (rect_err_o),
     .mem_req_o (rect_req_o), .mem_gnt_i (rect_gnt_i), .mem_we_o (rect_we_o), .mem_be_o (rect_be_o),
     .mem_addr_o (rect_addr_o), .mem_len_o (rect_len_o), .mem_wdata_o (rect_wdata_o),
     .mem_rvalid_i (rect_rvalid_i), .mem_rdata_i
@@ -104,14 +103,14 @@ module mcadsw_rectifier #(
     .clk_i, .rst_ni, .start_i (mark_start_i), .width_i (width), .height_i (height),
     .valid_base_i (mark_valid_i), .base_i (mark_base_i), .stride_i (mark_stride_i),
     .half_i (mark_half_i), .value_i (mark_value_i),
-    .busy_o (mark_busy_unused), .done_o (mark_done_o),
+    .busy_o (), .done_o (mark_done_o),
     .mem_req_o (mark_req_o), .mem_gnt_i (mark_gnt_i), .mem_we_o (mark_we_o), .mem_be_o (mark_be_o),
     .mem_addr_o (mark_addr_o), .mem_len_o (mark_len_o), .mem_wdata_o (mark_wdata_o),
     .mem_rvalid_i (mark_rvalid_i), .mem_rdata_i
   );
 
   logic unused;
-  assign unused = ^{chk_busy_unused, rect_busy_unused, mark_busy_unused, cfg_i};  // cfg_i: other blocks' fields too
+  assign unused = ^cfg_i;  // cfg_i: other blocks' fields too
 
 endmodule
 
