@@ -165,11 +165,13 @@ formal: bootstrap
 
 ## mutate: N=200 SEED=1 Yosys mutants of the flattened design against the kill suite; survivors
 ##   must be listed in tests/mutate/survivors.txt (SAMPLE=12 a seeded sample, as CI runs; JOBS=,
-##   MUTANTS="3 17" again, REPORT_ONLY=1, NO_RECT=1, TIMEOUT=300 a stage: flow/mutate.py)
+##   MUTANTS="3 17" again, REPORT_ONLY=1, NO_RECT=1, TIMEOUT=300 a stage, REKEY=1 the list's keys
+##   carried over to an RTL change that kept the draw: flow/mutate.py)
 mutate: bootstrap
 	@python3 flow/mutate.py $(if $(N),--n "$(N)") $(if $(SEED),--seed "$(SEED)") $(if $(SAMPLE),--sample "$(SAMPLE)") \
 	  $(if $(strip $(MUTANTS)),--mutants "$(MUTANTS)") $(if $(JOBS),--jobs "$(JOBS)") \
-	  $(if $(filter 1,$(REPORT_ONLY)),--report-only) $(if $(NO_RECT),--no-rect "$(NO_RECT)") \
+	  $(if $(filter 1,$(REPORT_ONLY)),--report-only) $(if $(filter 1,$(REKEY)),--rekey) \
+	  $(if $(NO_RECT),--no-rect "$(NO_RECT)") \
 	  $(if $(TIMEOUT),--timeout "$(TIMEOUT)") --build $(abspath $(BUILD_DIR))
 
 ## rtl-pkg: regenerate rtl/mcadsw_pkg.sv, rtl/rect/mcadsw_rect_pkg.sv, docs/registers.md, the C header,

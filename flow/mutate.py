@@ -20,8 +20,10 @@
                                       Yosys's optimisation makes after flattening carry no
                                       instance path and stay in the list.)
   TIMEOUT=300                         seconds a kill-suite stage (below)
+  REKEY=1                             after an RTL change that moved lines but kept the
+                                      draw: the survivors list's keys carried over (below)
   python3 flow/mutate.py [--n N] [--seed S] [--sample K] [--jobs J] [--mutants "3 17"]
-                         [--report-only] [--no-rect 0|1] [--timeout S] [--build DIR]
+                         [--report-only] [--rekey] [--no-rect 0|1] [--timeout S] [--build DIR]
 
 Flow: Yosys reads the RTL as synthesis does (-DSYNTHESIS, -Irtl for the `include of
 rtl/mcadsw_assert.svh in rtl/rect/), elaborates mcadsw_top (the engine, its register block
@@ -63,6 +65,14 @@ are not in the suite.
 Survivors: tests/mutate/survivors.txt lists survivors by key (the `mutate` command without
 -ctrl) with a kind and the reason: equivalent (cannot change any output; not counted in the
 score) or open (could, but no test shows it yet; counted as survived).
+A key names source lines and Yosys's running cell numbers, so any RTL change gives new keys.
+When the design is made again the flow keeps the draw before as list.prev.ys. REKEY=1 makes
+the design, compares the two draws mutant by mutant without what moves with the lines (the
+-src attributes, the line numbers in cell names, Yosys's running numbers: draw_key), and when
+they are the same mutations in the same order (an RTL change that moved lines or wires but
+left the logic and the hierarchy: the analysis still holds) writes each listed survivor's
+new key into the list; when they differ it says so (exit 2): a new draw, to run in full and
+review. Then `make mutate N=200 SEED=1` confirms the outcomes.
 Output in BUILD/mutate: summary.json (total, killed, survived, equivalent, open, unlisted,
 score = killed / (total - equivalent), per module counts, the survivors; flow/mutate_summary.py),
 mutants.tsv (number, module, key), results/ and outcomes.tsv (number, outcome, the test
@@ -131,6 +141,43 @@ def equivalent_mutants(list_text, mutants):
         if f[0].startswith("mutate ") and len(f) > 1 and f[1] == "equivalent":
             eq.add(f[0])
     return [int(k) for k, _, key in mutants if key in eq]
+
+
+def draw_key(key):
+    """A mutant's key without what moves when RTL lines move but the logic does not: the
+    -ctrl and -src arguments, the line numbers in Yosys's cell names ($and$rtl/m.sv:512$3905)
+    and Yosys's running numbers ($procmux$76192)."""
+    key = re.sub(r" -ctrl \S+ [0-9]+ [0-9]+", "", key.strip())
+    key = re.sub(r" -src \S+", "", key)
+    key = re.sub(r"(\.s?v):[0-9]+", r"\1:L", key)
+    return re.sub(r"\$[0-9]+", "$N", key)
+
+
+def rekey(prev_list, cur_list, list_text):
+    """The survivors list (its text) with the key of each listed mutant of the previous draw
+    (prev_list, the text of Yosys's list.ys) replaced by the same mutant's key in the current
+    draw (cur_list), when the two draws are the same mutations in the same order (draw_key
+    equal, mutant by mutant). Returns (text, number of keys replaced); FlowError (exit 2) when
+    the draws differ."""
+    def keys(text):
+        return [re.sub(r" -ctrl \S+ [0-9]+ [0-9]+", "", ln.strip(), count=1)
+                for ln in text.splitlines() if ln.startswith("mutate ")]
+    prev, cur = keys(prev_list), keys(cur_list)
+    if len(prev) != len(cur):
+        raise FlowError(f"the draws differ: {len(prev)} mutants before, {len(cur)} now", 2)
+    differ = [k + 1 for k, (a, b) in enumerate(zip(prev, cur)) if draw_key(a) != draw_key(b)]
+    if differ:
+        raise FlowError(f"the draws differ in {len(differ)} of {len(cur)} mutants (the first: "
+                        f"{differ[0]}): a new draw; run it in full and review the survivors", 2)
+    new = dict(zip(prev, cur))
+    out, n = [], 0
+    for line in list_text.split("\n"):
+        f = line.split("\t")
+        if f[0].startswith("mutate ") and f[0] in new and new[f[0]] != f[0]:
+            f[0] = new[f[0]]
+            n += 1
+        out.append("\t".join(f))
+    return "\n".join(out), n
 
 
 def mutant_modules(instances_text, list_text):
@@ -385,6 +432,8 @@ def mutant_design(out, n, seed, no_rect):
         f"behind mutsel[{width - 1}:0]")
     for f in ("instances.txt", "design.stamp"):
         (out / f).unlink(missing_ok=True)
+    if (out / "list.ys").is_file():      # the draw before, for REKEY=1
+        (out / "list.ys").replace(out / "list.prev.ys")
     # Instance name -> module, for the per-module counts. The type exactly m (a pattern
     # t:*m* would also count the instances of every module whose name contains m:
     # mcadsw_rect those of all mcadsw_rect_*): the module itself, or a parameterised copy,
@@ -524,6 +573,8 @@ def parse(argv):
     ap.add_argument("--jobs", default=str(len(os.sched_getaffinity(0))), help="mutants at a time (JOBS=)")
     ap.add_argument("--mutants", default="", help='only these, e.g. "3 17" (MUTANTS=)')
     ap.add_argument("--report-only", action="store_true", help="the last run's summary again (REPORT_ONLY=1)")
+    ap.add_argument("--rekey", action="store_true",
+                    help="carry the survivors list's keys over to an unchanged draw (REKEY=1)")
     ap.add_argument("--no-rect", default="0", help="1: no mutant in the rectifier (NO_RECT=)")
     ap.add_argument("--timeout", default="300", help="seconds a kill-suite stage (TIMEOUT=, default 300)")
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder (BUILD_DIR=; output in its mutate/)")
@@ -562,6 +613,17 @@ def main(argv):
             raise FlowError(f"no list of survivors at {SURVIVORS}", 2)
         out.mkdir(parents=True, exist_ok=True)
         start_all = time.time()
+        if a.rekey:
+            mutant_design(out, a.n, a.seed, a.no_rect)
+            if not (out / "list.prev.ys").is_file():
+                raise FlowError(f"no draw before in {out} (list.prev.ys): REKEY=1 needs the mutation "
+                                "run of the RTL before the change in this build folder", 2)
+            text, n = rekey((out / "list.prev.ys").read_text(), (out / "list.ys").read_text(),
+                            SURVIVORS.read_text())
+            SURVIVORS.write_text(text)
+            log(f"the same {a.n} mutations as the draw before: {n} keys of "
+                f"{SURVIVORS.relative_to(ROOT)} rewritten; make mutate N={a.n} SEED={a.seed} confirms the outcomes")
+            return 0
         if a.report_only:
             if not ((out / "results").is_dir() and (out / "mutants.tsv").is_file()):
                 raise FlowError(f"no results in {out}: run make mutate first", 2)

@@ -8,7 +8,8 @@ state = (state * 1103515245 + 12345) mod 2^31, k = state mod N + 1, from state =
 sample depends on it. Its draws are checked against ones computed by hand, with the mutants
 the survivors list gives as equivalent skipped and drawn again in their place. Then bad
 input to flow/mutate.py: one message naming the setting, exit 2, before Yosys runs. Then a
-stage out of time: stopped, and killed when it ignores the stop.
+stage out of time: stopped, and killed when it ignores the stop. And REKEY=1's key
+comparison and carry-over.
   tests/mutate/sample_test.py     (a few seconds; Python 3 standard library only)
 """
 import subprocess
@@ -54,6 +55,27 @@ rows = [("1", "m", "mutate -mode inv -cell a"), ("2", "m", "mutate -mode inv -ce
 survivors = ("# a comment\nmutate -mode inv -cell b\tequivalent\twhy\n"
              "mutate -mode inv -cell c\topen\twhy not\nmutate -mode inv -cell z\tequivalent\tanother RTL\n")
 check("equivalents of a list", mutate.equivalent_mutants(survivors, rows), [2])
+
+# REKEY=1: a key without what moves with RTL lines; a survivors list carried over to a draw
+# of the same mutations with moved lines and renumbered cells; a different draw refused.
+check("draw_key", mutate.draw_key("mutate -mode inv -module t -cell $flatten\\u_e.$and$rtl/m.sv:512$3905 "
+                                  "-port A -portbit 7 -src rtl/m.sv:512.6-512.9 -src rtl/e.sv:40.1-44.4"),
+      "mutate -mode inv -module t -cell $flatten\\u_e.$and$rtl/m.sv:L$N -port A -portbit 7")
+prev = ("mutate -ctrl mutsel 2 1 -mode inv -cell $procmux$10 -port A -portbit 3 -src rtl/m.sv:40.1-40.9\n"
+        "mutate -ctrl mutsel 2 2 -mode const0 -cell $and$rtl/m.sv:41$11 -port Y -portbit 0 -src rtl/m.sv:41.2-41.8\n")
+cur = ("mutate -ctrl mutsel 2 1 -mode inv -cell $procmux$20 -port A -portbit 3 -src rtl/m.sv:38.1-38.9\n"
+       "mutate -ctrl mutsel 2 2 -mode const0 -cell $and$rtl/m.sv:39$21 -port Y -portbit 0 -src rtl/m.sv:39.2-39.8\n")
+listed = ("# comment\nmutate -mode const0 -cell $and$rtl/m.sv:41$11 -port Y -portbit 0 -src rtl/m.sv:41.2-41.8"
+          "\tequivalent\twhy\nmutate -mode inv -cell other\topen\tanother draw's\n")
+check("rekey, the same draw", mutate.rekey(prev, cur, listed),
+      ("# comment\nmutate -mode const0 -cell $and$rtl/m.sv:39$21 -port Y -portbit 0 -src rtl/m.sv:39.2-39.8"
+       "\tequivalent\twhy\nmutate -mode inv -cell other\topen\tanother draw's\n", 1))
+try:
+    mutate.rekey(prev, cur.replace("-portbit 3", "-portbit 4"), listed)
+    check("rekey, another draw", "no error", "FlowError")
+except mutate.FlowError as e:
+    check("rekey, another draw", (e.code, str(e)), (2, "the draws differ in 1 of 2 mutants (the first: 1): "
+                                                      "a new draw; run it in full and review the survivors"))
 
 # Bad input: exit 2, the message on stderr; nothing is built.
 with tempfile.TemporaryDirectory() as build:
