@@ -143,12 +143,18 @@ def equivalent_mutants(list_text, mutants):
     return [int(k) for k, _, key in mutants if key in eq]
 
 
+def mutant_keys(list_text):
+    """The keys of Yosys's list (list.ys text), in its order: each `mutate` command without
+    its -ctrl argument."""
+    return [re.sub(r" -ctrl \S+ [0-9]+ [0-9]+", "", ln.strip(), count=1)
+            for ln in list_text.splitlines() if ln.startswith("mutate ")]
+
+
 def draw_key(key):
     """A mutant's key without what moves when RTL lines move but the logic does not: the
-    -ctrl and -src arguments, the line numbers in Yosys's cell names ($and$rtl/m.sv:512$3905)
-    and Yosys's running numbers ($procmux$76192)."""
-    key = re.sub(r" -ctrl \S+ [0-9]+ [0-9]+", "", key.strip())
-    key = re.sub(r" -src \S+", "", key)
+    -src arguments, the line numbers in Yosys's cell names ($and$rtl/m.sv:512$3905) and
+    Yosys's running numbers ($procmux$76192)."""
+    key = re.sub(r" -src \S+", "", key.strip())
     key = re.sub(r"(\.s?v):[0-9]+", r"\1:L", key)
     return re.sub(r"\$[0-9]+", "$N", key)
 
@@ -159,10 +165,7 @@ def rekey(prev_list, cur_list, list_text):
     draw (cur_list), when the two draws are the same mutations in the same order (draw_key
     equal, mutant by mutant). Returns (text, number of keys replaced); FlowError (exit 2) when
     the draws differ."""
-    def keys(text):
-        return [re.sub(r" -ctrl \S+ [0-9]+ [0-9]+", "", ln.strip(), count=1)
-                for ln in text.splitlines() if ln.startswith("mutate ")]
-    prev, cur = keys(prev_list), keys(cur_list)
+    prev, cur = mutant_keys(prev_list), mutant_keys(cur_list)
     if len(prev) != len(cur):
         raise FlowError(f"the draws differ: {len(prev)} mutants before, {len(cur)} now", 2)
     differ = [k + 1 for k, (a, b) in enumerate(zip(prev, cur)) if draw_key(a) != draw_key(b)]
@@ -192,16 +195,14 @@ def mutant_modules(instances_text, list_text):
         elif line:
             mod[line.rsplit("/", 1)[-1].rsplit(".", 1)[-1]] = m
     rows = []
-    for line in list_text.splitlines():
-        if not line.startswith("mutate "):
-            continue
-        f = line.split()
+    for key in mutant_keys(list_text):
+        f = key.split()
         cell = f[f.index("-cell") + 1] if "-cell" in f[:-1] else ""
         who = "mcadsw_top"
         for s in cell.split("."):
             s = re.sub(r"^\\", "", re.sub(r"^\$flatten", "", s))
             who = mod.get(s, who)
-        rows.append((str(len(rows) + 1), who, re.sub(r" -ctrl [^ ]+ [0-9]+ [0-9]+", "", line, count=1)))
+        rows.append((str(len(rows) + 1), who, key))
     return rows
 
 
