@@ -147,10 +147,11 @@ def net_loads(netlist, pin_cap):
 
 def power_view(netlist, view, gates_file, pin_cap):
     """Writes the power view of a netlist: every flip-flop clocked by a gated clock (a
-    net driven by a clock gate's AND, flow/clock_gate.py) clocked by clk_i instead;
-    and gates_file, "flop|gate INSTANCE NET" for each gated flip-flop and each gate's
-    AND. Returns {net: capacitance of its flip-flop clock pins (F)}."""
-    gated_cap, gates = {}, []
+    net driven by a clock gate's AND, flow/clock_gate.py's, on clk_i or on a gated clock in
+    front of a whole block, a gate behind a gate) clocked by clk_i
+    instead; and gates_file, "flop|gate INSTANCE NET" for each gated flip-flop and each
+    gate's AND. Returns {net: capacitance of its flip-flop clock pins (F)}."""
+    gated_cap, gates, and_of = {}, [], {}
     with open(view, "w") as v:
         for line, cell, inst, m in connections(netlist):
             if m and cell.startswith("DFF") and m.group(2) == "CLK" and m.group(3) != "clk_i":
@@ -158,13 +159,16 @@ def power_view(netlist, view, gates_file, pin_cap):
                 gated_cap[net] = gated_cap.get(net, 0.0) + pin_cap(cell, "CLK")
                 gates.append(f"flop {inst} {net}")
                 line = f"{m.group(1)}CLK(clk_i{m.group(4)}"
-            elif m and cell in ("AND2X1", "AND2X2") and m.group(2) == "Y" and "clock_gate_" in m.group(3):
-                gates.append(f"gate {inst} {unescape(m.group(3))}")
+            elif m and cell in ("AND2X1", "AND2X2") and m.group(2) == "Y":
+                and_of[unescape(m.group(3))] = inst
             v.write(line)
+    # Every gated clock net is driven by a gate's AND (nothing else may drive a clock pin).
+    missing = sorted(n for n in gated_cap if n not in and_of)
+    if missing:
+        raise FlowError(f"power view: {len(missing)} clock nets of flip-flops without a clock gate's AND "
+                        f"in {netlist}, e.g. {missing[0]}")
+    gates += [f"gate {and_of[n]} {n}" for n in gated_cap]
     Path(gates_file).write_text("".join(g + "\n" for g in gates))
-    n_and = sum(1 for g in gates if g.startswith("gate"))
-    if n_and != len(gated_cap):
-        raise FlowError(f"power view: {len(gated_cap)} gated clock nets but {n_and} clock-gate ANDs in {netlist}")
     return gated_cap
 
 
@@ -318,8 +322,13 @@ def main():
                             f"{'' if not suffix else f' DMAX={args.dmax} PAR={args.par}'} first")
     # Instance prefix of the flat netlist (u_<block>, the engine's own cells: top) -> the
     # groups `make synth` reports.
-    group_of = {("top" if label == "top" else "u_" + label): b["group"]
-                for label, b in json.loads((synth / "summary.json").read_text())["blocks"].items()}
+    # Each instance's group: u_<label>, and every instance of a block's module that has several
+    # (one synthesised block serves every instance of its module), named in blocks.json.
+    groups = {label: b["group"] for label, b in json.loads((synth / "summary.json").read_text())["blocks"].items()}
+    group_of = {("top" if label == "top" else "u_" + label): g for label, g in groups.items()}
+    if (synth / "blocks.json").is_file():
+        for b in json.loads((synth / "blocks.json").read_text()):
+            group_of.update({n: groups[b["label"]] for n in b["instance_names"]})
 
     # 1-2. Ports recorded by the RTL, activity of the netlist, the whole CIF frame's cycles.
     act_dir = Path(args.activity) if args.activity else out

@@ -9,8 +9,9 @@
 // activity from a simulation. A gate-level VCD of the ~365k cells would be huge;
 // instead this program simulates the OpenSTA netlist itself (the flat
 // mcadsw_engine_sta.v of `make synth`, zero-delay, cycle by cycle, event-driven,
-// the clock's two phases simulated so that the clock gates of flow/clock_gate.py
-// work as in silicon: INVX1 -> LATCH -> AND2 on clk_i)
+// the clock's two phases simulated so that the clock gates work as in silicon:
+// INVX1 -> LATCH -> AND2 on clk_i as flow/clock_gate.py builds them, and the same on a
+// gated clock, a gate behind a gate: a block's gates behind a gate of the whole block)
 // on the input ports an RTL run recorded (mcadsw_sim_core --record-ports FILE),
 // and counts every net's transitions and high cycles. The RTL run's output ports
 // are compared every cycle: a mismatch stops the run (the netlist, this
@@ -31,6 +32,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -87,7 +89,7 @@ struct Macro {
   std::string name, type;
   int words = 0, bits = 0, abits = 0;
   bool word_we = false;
-  int rd_en = -1;
+  int rd_en = -1, clk = -1;  // clk: RD_CLK = WR_CLK, clk_i or a gated clock
   std::vector<int> rd_addr, rd_data, wr_addr, wr_data, wr_en;  // LSB first
   std::vector<std::vector<uint8_t>> mem;
   long reads = 0, writes = 0;
@@ -287,9 +289,9 @@ Netlist read_netlist(const std::string& path) {
     if (parse_macro_type(type, m)) {
       m.name = name;
       m.type = type;
-      for (const char* clk : {"RD_CLK", "WR_CLK"})
-        if (pin(clk).size() != 1 || nl.net_name[size_t(pin(clk)[0])] != "clk_i")
-          fail("netlist: macro " + name + " is not clocked by clk_i");
+      if (pin("RD_CLK").size() != 1 || pin("RD_CLK") != pin("WR_CLK"))
+        fail("netlist: macro " + name + " has two clocks");
+      m.clk = pin("RD_CLK")[0];  // clk_i or a gated clock: check_clocks
       m.rd_addr = pin("RD_ADDR");
       m.rd_data = pin("RD_DATA");
       m.rd_en = pin("RD_EN").at(0);
@@ -368,10 +370,12 @@ Op op_of(const std::string& type, int out) {
   return it->second;
 }
 
-// Every flip-flop is clocked by clk_i or by a clock gate of flow/clock_gate.py
-// (AND2 of clk_i and a LATCH's Q, the LATCH's CLK an inverter of clk_i; buffers
-// allowed between): the two-phase simulation is right for these only. Cells are
-// told apart by their model (op_of), not by name.
+// Every flip-flop and memory macro is clocked by clk_i or by a clock gate (AND2 of a
+// clock and a LATCH's Q, the LATCH's CLK an inverter of that clock; buffers allowed
+// between), where that clock is clk_i or itself a gated clock (a gate of
+// flow/clock_gate.py inside a block whose clock is gated as a whole): the two-phase
+// simulation is right for these only. Cells are told apart by their model (op_of),
+// not by name.
 void check_clocks(const Netlist& nl) {
   std::vector<int> driver(nl.net_name.size(), -1);
   for (size_t i = 0; i < nl.cells.size(); ++i)
@@ -391,27 +395,32 @@ void check_clocks(const Netlist& nl) {
     const int d = driver[size_t(source(net))];
     return d < 0 ? nullptr : &nl.cells[size_t(d)];
   };
-  const auto gated = [&](int net) {
+  // A clock: clk_i, or a gate's AND on a clock (at most 4 gates deep).
+  const std::function<bool(int, int)> clock = [&](int net, int depth) {
+    if (source(net) == nl.clk) return true;
     const Cell* a = drv(net);
-    if (op(a) != kAnd2) return false;
+    if (depth == 4 || op(a) != kAnd2) return false;
     for (int k = 0; k < 2; ++k) {
+      const int c = source(a->in[size_t(k)]);
       const Cell* l = drv(a->in[size_t(1 - k)]);
-      if (source(a->in[size_t(k)]) != nl.clk || op(l) != kLatch) continue;
+      if (op(l) != kLatch) continue;
       const Cell* inv = drv(l->in[1]);
-      if (op(inv) == kInv && source(inv->in[0]) == nl.clk) return true;
+      if (op(inv) == kInv && source(inv->in[0]) == c && clock(c, depth + 1)) return true;
     }
     return false;
   };
-  long gated_flops = 0;
-  for (const Cell& c : nl.cells) {
-    if (c.kind != Kind::kDff && c.kind != Kind::kDffSr) continue;
-    if (source(c.in[0]) == nl.clk) continue;
-    if (!gated(c.in[0]))
-      fail("netlist: flip-flop " + c.name + " is clocked by " + nl.net_name[size_t(c.in[0])] +
-           ", neither clk_i nor a clock gate (INVX -> LATCH -> AND2 on clk_i)");
-    ++gated_flops;
-  }
-  std::cerr << "activity: " << gated_flops << " flip-flops on gated clocks\n";
+  const auto check = [&](const std::string& what, int net) {
+    if (source(net) == nl.clk) return 0;
+    if (!clock(net, 0))
+      fail("netlist: " + what + " is clocked by " + nl.net_name[size_t(net)] +
+           ", neither clk_i nor a clock gate (INVX -> LATCH -> AND2 on a clock)");
+    return 1;
+  };
+  long gated_flops = 0, gated_macros = 0;
+  for (const Cell& c : nl.cells)
+    if (c.kind == Kind::kDff || c.kind == Kind::kDffSr) gated_flops += check("flip-flop " + c.name, c.in[0]);
+  for (const Macro& m : nl.macros) gated_macros += check("macro " + m.name, m.clk);
+  std::cerr << "activity: " << gated_flops << " flip-flops and " << gated_macros << " memory macros on gated clocks\n";
 }
 
 struct Gate {  // one output of a combinational cell
@@ -562,6 +571,7 @@ class Sim {
     time_ = 2 * cycle_;
     clk_before_.clear();
     for (const Flop& f : flops_) clk_before_.push_back(val_[size_t(f.c)]);
+    for (const Macro& m : nl_.macros) clk_before_.push_back(val_[size_t(m.clk)]);
     set(nl_.clk, 1);
     settle();
     next_.clear();
@@ -570,7 +580,9 @@ class Sim {
       if (clk_before_[i] || !val_[size_t(f.c)]) continue;
       next_.emplace_back(f.q, !val_[size_t(f.r)] ? 0 : !val_[size_t(f.s)] ? 1 : val_[size_t(f.d)]);
     }
-    for (Macro& m : nl_.macros) {
+    for (size_t i = 0; i < nl_.macros.size(); ++i) {
+      Macro& m = nl_.macros[i];
+      if (clk_before_[flops_.size() + i] || !val_[size_t(m.clk)]) continue;  // its clock did not rise
       const auto addr = [&](const std::vector<int>& a) {
         long x = 0;
         for (size_t k = 0; k < a.size(); ++k) x |= long(val_[size_t(a[k])]) << k;

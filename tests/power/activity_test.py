@@ -3,10 +3,12 @@
 # SPDX-License-Identifier: Apache-2.0
 """mcadsw_activity (sim/activity/netlist_activity.cpp) on a netlist small enough to follow by
 hand: an inverter, a flip-flop with asynchronous reset, an XOR and a 2 x 1 memory macro, over
-five recorded cycles; then a flip-flop behind a clock gate (flow/clock_gate.py). The
+five recorded cycles; then a flip-flop behind a clock gate (flow/clock_gate.py); then a gate
+behind that gate (flow/clock_gate.py's inside a block whose clock is gated as a whole) and a
+memory macro on a gated clock. The
 transitions, high cycles and macro accesses below are worked out from the circuits (see the
 comments), not taken from a run. A recording whose output disagrees, a missing port and a
-flip-flop on a data clock must stop the run.
+flip-flop or a macro on a data clock must stop the run.
   tests/power/activity_test.py [MCADSW_ACTIVITY]
 """
 import os
@@ -71,6 +73,36 @@ endmodule
 #   c4: rst 1 en 0 d 1 -> g 0; gclk and el fall (9); edge (10) gated
 GATED_REC = "ports rst_ni:1:in en_i:1:in d_i:1:in g_o:1:out\n" + "\n".join(
     ["0 0 1 0", "1 1 1 0", "1 0 0 1", "1 1 0 1", "1 0 1 0"]) + "\n"
+
+# A gate behind the gate above (i1, l1, a1 on gclk: g2clk = gclk & el2, el2 taking e2_i while
+# gclk is low), the flip-flop h on g2clk and the memory macro m on gclk (reads mem[0], writes
+# mem[0] <= d_i while rst_ni; RD_CLK = WR_CLK = gclk).
+NESTED = GATED.replace("  output g_o;\n", """  output g_o;
+  output h_o;
+  output m_o;
+  wire gk_n;
+  wire el2;
+  wire g2clk;
+  INVX1 i1 (.A(gclk), .Y(gk_n));
+  LATCH l1 (.CLK(gk_n), .D(e2_i), .Q(el2));
+  AND2X2 a1 (.A(gclk), .B(el2), .Y(g2clk));
+  DFFSR h (.CLK(g2clk), .D(d_i), .Q(h_o), .R(rst_ni), .S(1'b1));
+  MCADSW_RAM_S2_W1_A1_SYNC_WE m (.RD_ADDR(1'b0), .RD_ARST(1'b0), .RD_CLK(gclk), .RD_DATA(m_o), .RD_EN(1'b1),
+    .WR_ADDR(1'b0), .WR_CLK(gclk), .WR_DATA(d_i), .WR_WE(rst_ni));
+""").replace("(clk_i, rst_ni, en_i, d_i, g_o)", "(clk_i, rst_ni, en_i, e2_i, d_i, g_o, h_o, m_o)").replace(
+    "  input d_i;\n", "  input e2_i;\n  input d_i;\n")
+# Cycles (rst en e2 d; g h m before the edge): the edge after cycle k at half cycle 2k + 2, the
+# inputs of cycle k set at 2k, the fall at 2k + 1.
+#   c0: 0 0 0 1; el 0, el2 0 (l1 open: gclk low), edge 2 gated
+#   c1: 1 1 1 1; el2 1 at 2, el 1 at the fall (3); edge 4: gclk and g2clk rise: g <= 1, h <= 1,
+#       m <= mem[0] = 0, mem[0] <= 1
+#   c2: 1 1 0 0; g 1 h 1; l1 closed while gclk is high, so el2 falls only at the fall (5);
+#       edge 6: gclk passes, g2clk gated: g <= 0, m <= mem[0] = 1, mem[0] <= 0
+#   c3: 1 0 1 1; g 0 h 1 m 1; el 0 and el2 1 at the fall (7); edge 8 gated: nothing clocked, the
+#       macro neither read nor written
+#   c4: 1 1 1 0; el 1 at the fall (9); edge 10: both pass: g <= 0, h <= 0, m <= mem[0] = 0
+NESTED_REC = "ports rst_ni:1:in en_i:1:in e2_i:1:in d_i:1:in g_o:1:out h_o:1:out m_o:1:out\n" + "\n".join(
+    ["0 0 0 1 0 0 0", "1 1 1 1 0 0 0", "1 1 0 0 1 1 0", "1 0 1 1 0 1 1", "1 1 1 0 0 1 1"]) + "\n"
 
 
 def expect(what, path, line):
@@ -161,6 +193,28 @@ def main(argv):
         (w / "g_bad.v").write_text(GATED.replace("DFFSR g (.CLK(gclk)", "DFFSR g (.CLK(en_i)"))
         refused(act, w, "data_clock", w / "g_bad.v", w / "gp.txt",
                 "flip-flop g is clocked by en_i, neither clk_i nor a clock gate")
+
+        (w / "n2.v").write_text(NESTED)
+        (w / "n2p.txt").write_text(NESTED_REC)
+        rc, out = run(act, w / "n2.v", w / "n2p.txt", w / "na")
+        if rc != 0:
+            print(f"FAIL: mcadsw_activity failed on the gate behind a gate\n{out}")
+            fails += 1
+        else:
+            # gclk: up 4, 6, 10, down 5, 7: 5, high [4,5) [6,7): 1 cycle. g2clk: up 4, 10, down 5:
+            # 3, high half a cycle. el: up 3, down 7, up 9: 3, high [3,7) [9,10]: 2.5. el2: up 2,
+            # down 5, up 7: 3, high [2,5) [7,10]: 3. g: up 4, down 6: 2, high 1. h: up 4, down 10:
+            # 2, high 3. m: up 6, down 10: 2, high 2. Macro: 3 reads, 3 writes (edges 4, 6, 10).
+            for line in ["cycles 5", "net gclk 5 1", "net g2clk 3 0.5", "net el 3 2.5", "net el2 3 3",
+                         "net g_o 2 1", "net h_o 2 3", "net m_o 2 2", "macro m MCADSW_RAM_S2_W1_A1_SYNC_WE 2 1 3 3"]:
+                expect("gate behind a gate", w / "na.frame.txt", line)
+        # A macro on a data clock, or on two clocks, is refused.
+        (w / "m_bad.v").write_text(NESTED.replace(".RD_CLK(gclk)", ".RD_CLK(en_i)").replace(".WR_CLK(gclk)",
+                                                                                         ".WR_CLK(en_i)"))
+        refused(act, w, "macro_data_clock", w / "m_bad.v", w / "n2p.txt",
+                "macro m is clocked by en_i, neither clk_i nor a clock gate")
+        (w / "m_two.v").write_text(NESTED.replace(".WR_CLK(gclk)", ".WR_CLK(clk_i)"))
+        refused(act, w, "macro_two_clocks", w / "m_two.v", w / "n2p.txt", "macro m has two clocks")
     if fails:
         print(f"activity_test: {fails} failed")
         return 1

@@ -11,7 +11,8 @@ opened (gclk's transitions / 2 a cycle). Checked:
     capacitance is one DFFSR's;
   - with r = 0, 1/4 and 1: r = 1 takes nothing off; the flip-flops' clock part at r = 0 is h's
     alone, half of that at r = 1 (same cell, same clock slew); it is linear in r; r = 0 takes
-    off g's whole clock part.
+    off g's whole clock part;
+  - a flip-flop on a clock net that no gate's AND drives is refused.
   tests/power/gating_sta_test.py
 """
 import os
@@ -96,6 +97,14 @@ def main():
         check(ok, f"power view: gates {gates}, gated clock-pin capacitance {cap}")
         if not ok:
             return 1
+        # A flip-flop on a clock that no gate's AND drives (here the latch's inverted clock) is
+        # refused: the view would charge it as gated without a gate to scale it by.
+        (w / "bad.v").write_text(NETLIST.replace(".CLK(clock_gate_0_gclk)", ".CLK(ck_n)"))
+        try:
+            power.power_view(str(w / "bad.v"), str(w / "bad_view.v"), str(w / "bad_gates.txt"), lib["pin_cap"])
+            check(False, "power view: a flip-flop on ck_n (no gate's AND) accepted")
+        except power.FlowError as e:
+            check("without a clock gate's AND" in str(e) and "ck_n" in str(e), f"power view refuses: {e}")
         env = dict(os.environ, LIBERTY=LIB, RAM_LIB="", NETLIST=str(w / "view.v"), GATES=str(w / "gates.txt"),
                    PERIOD_NS="10.526", OUT=str(w / "out.txt"),
                    RUNS=" ".join(f"{{r{r} {w}/a{r}.txt 1}}" for r in (0, 25, 100)))
