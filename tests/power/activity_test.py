@@ -44,7 +44,14 @@ endmodule
 #   c3: rst 1 a 0 -> n1 1 q 1 y 1 m 0; edge: q 1, read mem[0] = 1, mem[1] <= 1
 #   c4: rst 1 a 1 -> n1 0 q 1 y 0 m 1; edge: q 0, read mem[1] = 1, mem[1] <= 0
 #   after: q 0 a 1 -> y 1
-PORTS = "ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out m_o:1:out\n"
+
+
+def recording(ports, cycles):
+    """A recorded-ports file (sim/dut_core.cpp --record-ports): the ports line, a line a cycle."""
+    return "ports " + ports + "\n" + "".join(c + "\n" for c in cycles)
+
+
+PORTS = "rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out m_o:1:out"
 CYCLES = ["0 0 0 0 0", "1 1 1 0 0", "1 0 0 0 0", "1 0 1 1 0", "1 1 0 1 1"]
 
 # A clock gate as flow/clock_gate.py builds it: ck_n = ~clk, the latch el takes en while the
@@ -71,8 +78,8 @@ endmodule
 #   c2: rst 1 en 0 d 0 -> g 1; gclk falls and el 0 at the fall (5); edge gated
 #   c3: rst 1 en 1 d 0 -> g 1; el 1 (7); edge (8) passes: g <= 0
 #   c4: rst 1 en 0 d 1 -> g 0; gclk and el fall (9); edge (10) gated
-GATED_REC = "ports rst_ni:1:in en_i:1:in d_i:1:in g_o:1:out\n" + "\n".join(
-    ["0 0 1 0", "1 1 1 0", "1 0 0 1", "1 1 0 1", "1 0 1 0"]) + "\n"
+GATED_REC = recording("rst_ni:1:in en_i:1:in d_i:1:in g_o:1:out",
+                      ["0 0 1 0", "1 1 1 0", "1 0 0 1", "1 1 0 1", "1 0 1 0"])
 
 # A gate behind the gate above (i1, l1, a1 on gclk: g2clk = gclk & el2, el2 taking e2_i while
 # gclk is low), the flip-flop h on g2clk and the memory macro m on gclk (reads mem[0], writes
@@ -101,8 +108,8 @@ NESTED = GATED.replace("  output g_o;\n", """  output g_o;
 #   c3: 1 0 1 1; g 0 h 1 m 1; el 0 and el2 1 at the fall (7); edge 8 gated: nothing clocked, the
 #       macro neither read nor written
 #   c4: 1 1 1 0; el 1 at the fall (9); edge 10: both pass: g <= 0, h <= 0, m <= mem[0] = 0
-NESTED_REC = "ports rst_ni:1:in en_i:1:in e2_i:1:in d_i:1:in g_o:1:out h_o:1:out m_o:1:out\n" + "\n".join(
-    ["0 0 0 1 0 0 0", "1 1 1 1 0 0 0", "1 1 0 0 1 1 0", "1 0 1 1 0 1 1", "1 1 1 0 0 1 1"]) + "\n"
+NESTED_REC = recording("rst_ni:1:in en_i:1:in e2_i:1:in d_i:1:in g_o:1:out h_o:1:out m_o:1:out",
+                       ["0 0 0 1 0 0 0", "1 1 1 1 0 0 0", "1 1 0 0 1 1 0", "1 0 1 1 0 1 1", "1 1 1 0 0 1 1"])
 
 
 def expect(what, path, line):
@@ -147,7 +154,7 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         w = Path(tmp)
         (w / "n.v").write_text(NETLIST)
-        (w / "p.txt").write_text(PORTS + "\n".join(CYCLES) + "\n")
+        (w / "p.txt").write_text(recording(PORTS, CYCLES))
         rc, out = run(act, w / "n.v", w / "p.txt", w / "a", "--hold", "3")
         if rc != 0:
             print(f"FAIL: mcadsw_activity failed on a consistent recording\n{out}")
@@ -170,10 +177,10 @@ def main(argv):
             expect("idle", w / "a.idle.txt", line)
         # An output that disagrees with the recording (y at c3) stops the run.
         bad = CYCLES[:3] + ["1 0 0 1 0"] + CYCLES[4:]
-        (w / "bad.txt").write_text(PORTS + "\n".join(bad) + "\n")
+        (w / "bad.txt").write_text(recording(PORTS, bad))
         refused(act, w, "wrong_output", w / "n.v", w / "bad.txt", "cycle 3: output y_o bit 0: netlist 1, RTL 0")
         # A recording without one of the netlist's ports (m_o) is refused by name.
-        (w / "short.txt").write_text("ports rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out\n0 0 0 0\n")
+        (w / "short.txt").write_text(recording("rst_ni:1:in a_i:1:in y_o:1:out q_o:1:out", ["0 0 0 0"]))
         refused(act, w, "missing_port", w / "n.v", w / "short.txt", "missing: m_o")
 
         (w / "g.v").write_text(GATED)
