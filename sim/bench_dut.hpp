@@ -33,7 +33,11 @@ class BenchDut {
 
   virtual ~BenchDut() = default;
 
-  // rst_ni low (and the start input quiet) or high.
+  // rst_ni low (and the start input quiet) or high. A model starts with rst_ni
+  // high, so that asserting the reset is a falling edge: an asynchronous reset
+  // (`always_ff @(posedge clk_i or negedge rst_ni)`) acts in an event-driven
+  // model only on that edge or on a clock edge, and a block behind a clock gate
+  // that is closed during reset sees no clock edge (in silicon the level resets it).
   virtual void set_reset(bool active) = 0;
   // The memory side's state back to its reset (with the engine's reset).
   virtual void reset_memory() = 0;

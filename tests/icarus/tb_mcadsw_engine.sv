@@ -20,7 +20,9 @@ module tb_mcadsw_engine;
   localparam int NTHR = mcadsw_pkg::WTHRESHOLDS;  // 7: thr0 .. thr6 below
   localparam int DCB  = mcadsw_pkg::COLOR_DIST_BITS;
 
-  logic clk = 1'b0, rst_n = 1'b0;
+  // rst_n asserted with a falling edge (sim/bench_dut.hpp says why), released below.
+  logic clk = 1'b0, rst_n = 1'b1;
+  initial #1 rst_n = 1'b0;
   always #5 clk = ~clk;
 
   int words;
