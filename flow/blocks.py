@@ -222,7 +222,7 @@ GROUPS = {"mcadsw_weight_gen": "weight_generator", "mcadsw_cost_agg": "cost_aggr
           "mcadsw_post_fill": "post_stage", "mcadsw_fifo": "post_stage", "mcadsw_engine": "top_registers_counters",
           "mcadsw_cfg_check": "top_registers_counters", "mcadsw_frame_ctrl": "top_registers_counters",
           "mcadsw_win_geom": "top_registers_counters", "mcadsw_pass_cfg": "top_registers_counters",
-          "mcadsw_port_mux": "top_registers_counters",
+          "mcadsw_port_mux": "top_registers_counters", "mcadsw_clock_gate": "top_registers_counters",
           "mcadsw_fetch": "memory_controller", "mcadsw_rectifier": RECT_GROUP}
 GROUP_NAMES = {
     "census_left": "census left (transformer + buffer)", "census_right": "census right (transformer + buffer)",
@@ -261,7 +261,7 @@ def synthesise(run, blocks, out, rtl, pkg_text, yosys, lib, period_ps, jobs, mem
     # blocks it instantiates); flow: the block script, the files it reads, the
     # clock gating's group size and the Yosys version.
     yosys_version = subprocess.run([yosys, "-V"], capture_output=True, text=True).stdout.strip()
-    flow_files = [FLOW / "synth_block.tcl", FLOW / "clock_gate.py", CON / "macro_map.v", CON / "abc_osu018.constr",
+    flow_files = [FLOW / "synth_block.tcl", FLOW / "clock_gate.py", CON / "macro_map.v", CON / "latch_map.v", CON / "abc_osu018.constr",
                   CON / "abc_osu018.script", Path(lib), RAM_MODEL]
     for b in blocks:
         h = hashlib.sha256(f"{STAMP_SALT}; yosys: {yosys_version}; period_ps {period_ps}; "

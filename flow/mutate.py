@@ -425,6 +425,9 @@ def mutant_design(out, n, seed, no_rect):
         return design
     # NO_RECT=1: the mutant list is drawn from every cell but those of the rectifier's
     # instance (flattened names $flatten\u_engine.\u_rectifier.* and u_engine.u_rectifier.*).
+    # The clock gates (mcadsw_clock_gate, in the engine) are read transparent
+    # (-DMCADSW_NO_CLOCK_GATES: the clock passes, no cell), so the draw is that of the design
+    # without gates; docs/verification.md says why no mutant is lost that way.
     mut_sel = ""
     if no_rect:
         mut_sel = "select -del" + "".join(f" c:$flatten\\u_engine.\\{i}.* c:u_engine.{i}.*"
@@ -444,7 +447,7 @@ def mutant_design(out, n, seed, no_rect):
                         f"tee -q -a {inst} select -list t:{m} t:$paramod\\{m}\\* t:$paramod$*\\{m}; "
                         for m in (Path(f).stem for f in mods if f not in pkgs))
     t0 = time.time()
-    script = "\n".join([f"read_verilog -sv -DSYNTHESIS -Irtl rtl/mcadsw_pkg.sv {' '.join(mods)}",
+    script = "\n".join([f"read_verilog -sv -DSYNTHESIS -DMCADSW_NO_CLOCK_GATES -Irtl rtl/mcadsw_pkg.sv {' '.join(mods)}",
                         "hierarchy -check -top mcadsw_top", inst_cmds, "prep -flatten -top mcadsw_top", mut_sel,
                         f"mutate -list {n} -seed {seed} -ctrl mutsel {width} 1 -o {out}/list.ys",
                         "select -clear", f"script {out}/list.ys", "opt_clean", f"write_verilog -noattr {design}.tmp"])

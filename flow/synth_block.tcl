@@ -47,6 +47,8 @@ if {$::env(CLOCK_GATE_MIN) > 0} {
   yosys read_json $out/gated.json
   file delete $out/ungated.json $out/gated.json
 }
+# Latches (the RTL's clock gates) onto the library's LATCH (constraints/latch_map.v).
+yosys techmap -map $con/latch_map.v t:\$_DLATCH_N_ t:\$_DLATCH_P_
 yosys dfflibmap -liberty $lib
 yosys abc -D $::env(PERIOD_PS) -constr $con/abc_osu018.constr -liberty $lib -script $con/abc_osu018.script
 yosys setundef -zero

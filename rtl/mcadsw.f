@@ -16,6 +16,7 @@ mcadsw_census.sv
 mcadsw_cfg_check.sv
 mcadsw_cost_agg.sv
 mcadsw_depth_fifo.sv
+mcadsw_clock_gate.sv
 mcadsw_engine.sv
 mcadsw_fetch.sv
 mcadsw_fifo.sv

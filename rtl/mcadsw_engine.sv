@@ -210,13 +210,15 @@ module mcadsw_engine #(
   );
 
   // ---- Post stage (LR mode), rectify pass and mark step: each owns the port in its states --
-  logic          post_req, post_we, post_gnt, post_rvalid;
+  logic          post_req, post_we, post_gnt, post_rvalid, post_clk, rect_clk;  // clocks: gated
   logic [3:0]    post_be;
   logic [AW-1:0] post_addr;
   logic [31:0]   post_wdata;
 
+  mcadsw_clock_gate u_post_gate (.clk_i, .en_i (cfg_q[mcadsw_pkg::CFG_MODE + 1]), .off_i (1'b0), .clk_o (post_clk));
+  mcadsw_clock_gate u_rect_gate (.clk_i, .en_i (cfg_q[mcadsw_pkg::CFG_RECT_EN]), .off_i (sched_busy), .clk_o (rect_clk));
   mcadsw_post #(.DB(DB), .CW(CW), .AW(AW)) u_post (
-    .clk_i, .rst_ni, .start_i (post_start),
+    .clk_i (post_clk), .rst_ni, .start_i (post_start),
     .base_dl_i (cfg_q[mcadsw_pkg::CFG_BASE_DL +: AW]), .base_dr_i (cfg_q[mcadsw_pkg::CFG_BASE_DR +: AW]),
     .base_out_i (cfg_q[mcadsw_pkg::CFG_BASE_OUT +: AW]), .base_mask_i (cfg_q[mcadsw_pkg::CFG_BASE_MASK +: AW]),
     .stride_i (stride_q), .out_stride_i (cfg_q[mcadsw_pkg::CFG_OUT_STRIDE +: AW]),
@@ -233,9 +235,10 @@ module mcadsw_engine #(
   logic [2:0]    rect_len, mark_len;
   logic [31:0]   rect_wdata, mark_wdata;
   mcadsw_rectifier #(.AW(AW), .CW(CW), .SB(SB)) u_rectifier (
-    .clk_i, .rst_ni, .cfg_i (cfg_q), .tiled_i (tiled), .planes_i (rect_planes), .stride_i (rect_stride),
-    .out_base_i (wr_base), .outs_i (wr_outs), .in_size_i (in_size), .size_i (size),
-    .out_size_i (out_size), .mark_valid_i (mark_valid), .mark_base_i (mark_base),
+    .clk_i (rect_clk), .rst_ni, .cfg_i (cfg_q),
+    .tiled_i (tiled), .planes_i (rect_planes), .stride_i (rect_stride), .out_base_i (wr_base),
+    .outs_i (wr_outs), .in_size_i (in_size), .size_i (size), .out_size_i (out_size),
+    .mark_valid_i (mark_valid), .mark_base_i (mark_base),
     .mark_stride_i (mark_stride), .mark_half_i (mark_half), .mark_value_i (mark_value),
     .chk_start_i (rchk_start), .chk_done_o (rchk_done), .chk_err_o (rchk_err),
     .rect_start_i (rect_start), .rect_done_o (rect_done), .rect_err_o (rect_err),
