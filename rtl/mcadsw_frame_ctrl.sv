@@ -348,10 +348,11 @@ module mcadsw_frame_ctrl (
                                                         state_q == StMark)))
   // A gated block is started, and owns the port, only while its clock runs: the rectifier's
   // in a rectified frame outside the passes, the post stage's in the LR mode (the engine's
-  // clock enables, mcadsw_clock_gate).
+  // clock enables, mcadsw_clock_gate). Between frames the port stays with the post stage
+  // after an LR frame, whose configuration (and so its clock) stays until the next start.
   `MCADSW_ASSERT(RectifierOnlyWithItsClock, !(rchk_start_o || rect_start_o || mark_start_o ||
                                               rect_sel_o || mark_sel_o) || (cfg_rect_i && !sched_busy_i))
-  `MCADSW_ASSERT(PostOnlyWithItsClock, !(post_start_o || pass_post_o) || cfg_lr_i)
+  `MCADSW_ASSERT(PostOnlyWithItsClock, !(post_start_o || pass_post_o) || cfg_lr_i || !busy_o)
   // The marks into dR and dL only in the LR mode, before its post stage.
   `MCADSW_ASSERT(LrMarksOnlyInLr, !(mark_sel_o && mphase_q != 2'd2) || (cfg_lr_i && pass_post_o))
   // The LR mode alone has a second pass and a post stage.
