@@ -3,8 +3,10 @@
 # SPDX-License-Identifier: Apache-2.0
 """Checks that every RTL file is accepted by the three tools the project uses.
 
-  python3 flow/rtl_check.py lint      verilator --lint-only -Wall, each module as top; and
-                                      no always block in the engine core (wiring only)
+  python3 flow/rtl_check.py lint      verilator --lint-only -Wall, each module as top; no
+                                      always block in the engine core (wiring only); behind
+                                      the clock gates no synchronous reset
+  python3 flow/rtl_check.py selftest  the clock-gate reset check on a small engine
   python3 flow/rtl_check.py yosys     Yosys 0.23 read_verilog -sv + hierarchy + proc
   python3 flow/rtl_check.py iverilog  Icarus Verilog 11, -g2012
   python3 flow/rtl_check.py all       the three, and the wrapper
@@ -49,6 +51,27 @@ WIRING_LINES = 360
 # 0 - N'(x). (A minus at the start of a line continues the expression above: binary.)
 UNARY_CAST = re.compile(r"((^|[=(,?:+*/&|^~!<>-])\s*[~!]|[=(,?:+*/&|^~!<>-]\s*-)\s*"
                         r"([A-Za-z_][A-Za-z_0-9]*|[0-9]+|\([^()]*\))'\(")
+
+
+def statement(code, pos):
+    """The statement of code starting at pos: a begin ... end block (nested ones counted), or
+    up to its semicolon (an if's else branches included)."""
+    m = re.compile(r"\s*begin\b").match(code, pos)
+    if m:
+        depth = 1
+        for t in re.compile(r"\b(begin|end)\b").finditer(code, m.end()):
+            depth += 1 if t.group(1) == "begin" else -1
+            if depth == 0:
+                return code[pos:t.end()]
+        return code[pos:]
+    end = pos
+    while True:
+        semi = code.find(";", end)
+        if semi < 0:
+            return code[pos:]
+        end = semi + 1
+        if not re.compile(r"\s*else\b").match(code, end):
+            return code[pos:end]
 
 
 def uncommented(path):
@@ -142,7 +165,77 @@ class Check:
             print("rtl_check: configuration fields retyped as ports (they travel in the bundle cfg_i / cfg_o, "
                   f"mcadsw_pkg::CFG_*): {'; '.join(bad)}")
             return False
+        return self.gated_resets()
+
+    def gated_resets(self, code=None, sources=None):
+        """Behind the engine's clock gates every reset is asynchronous: a gate is closed
+        during reset, so a synchronous reset there would never act (docs/architecture.md 1.3,
+        Clocks). The blocks whose clk_i is a gate's clk_o, and every module under them, may
+        have no `always_ff @(posedge clk_i)` that reads rst_ni. code and sources (module name
+        -> code) replace the engine's and the RTL's, for the self-test."""
+        if code is None:
+            code = uncommented(RTL / WIRING)
+            sources = {}
+            for f in self.mods:
+                text = uncommented(RTL / f)
+                for name in re.findall(r"^\s*module\s+(\w+)", text, re.M):
+                    sources[name] = (f"rtl/{f}", text)
+        gclks = re.findall(r"\bmcadsw_clock_gate\b[^;]*?\.clk_o\s*\(\s*(\w+)\s*\)", code, re.S)
+        if not gclks:
+            raise FlowError(f"rtl/{WIRING}: no mcadsw_clock_gate instance found (the check reads its clk_o)", 2)
+        inst = re.compile(r"\b(mcadsw_\w+)\s*(?:#\s*\(|\w+\s*\()")
+        todo = []
+        for g in gclks:
+            for m in re.finditer(r"\.clk_i\s*\(\s*" + g + r"\s*\)", code):
+                found = [i.group(1) for i in inst.finditer(code[:m.start()]) if i.group(1) in sources]
+                if found:
+                    todo.append(found[-1])
+        seen, bad = set(), []
+        while todo:
+            mod = todo.pop()
+            if mod in seen:
+                continue
+            seen.add(mod)
+            where, text = sources[mod]
+            body = text[re.search(r"^\s*module\s+" + mod + r"\b", text, re.M).start():]
+            body = body[:body.find("endmodule")]
+            todo += [i.group(1) for i in inst.finditer(body) if i.group(1) in sources and i.group(1) != mod]
+            for m in re.finditer(r"\balways_ff\s*@\s*\(\s*posedge\s+clk_i\s*\)", body):
+                if re.search(r"\brst_ni\b", statement(body, m.end())):
+                    line = text[:text.find(body)].count("\n") + body[:m.start()].count("\n") + 1
+                    bad.append(f"{where}:{line} ({mod})")
+        if not seen:
+            raise FlowError(f"rtl/{WIRING}: no block found on a gated clock ({', '.join(gclks)})", 2)
+        if bad:
+            print("rtl_check: a synchronous reset behind a clock gate, which never acts while the gate is closed "
+                  f"(make it asynchronous): {'; '.join(bad)}")
+            return False
+        print(f"rtl_check: behind the clock gates ({', '.join(gclks)}) {len(seen)} modules, every reset asynchronous")
         return True
+
+    def selftest(self):
+        """gated_resets on a small engine: a gate, a block behind it and a module under that;
+        it must pass an asynchronous reset and a clocked block without a reset, and find a
+        synchronous reset in a begin-end block and in an if's else."""
+        eng = ("mcadsw_clock_gate u_g (.clk_i, .en_i (e), .off_i (1'b0), .clk_o (gclk));\n"
+               "mcadsw_free u_f (.clk_i, .rst_ni);\nmcadsw_blk #(.A (1)) u_b (.clk_i (gclk), .rst_ni);\n")
+        free = ("f.sv", "module mcadsw_free;\n always_ff @(posedge clk_i) if (!rst_ni) q <= 0;\nendmodule\n")
+        blk = ("b.sv", "module mcadsw_blk;\n mcadsw_sub u_s (.clk_i, .rst_ni);\n"
+               " always_ff @(posedge clk_i or negedge rst_ni) if (!rst_ni) x <= 0; else x <= 1;\nendmodule\n")
+        cases = [("asynchronous", True, " always_ff @(posedge clk_i) y <= z;\n"
+                  " always_ff @(posedge clk_i or negedge rst_ni) if (!rst_ni) w <= 0;\n"),
+                 ("synchronous in begin-end", False,
+                  " always_ff @(posedge clk_i) begin if (a) begin y <= 0; end else if (!rst_ni) y <= 1; end\n"),
+                 ("synchronous in an else", False, " always_ff @(posedge clk_i) if (a) y <= z; else y <= rst_ni;\n")]
+        ok = True
+        for name, want, body in cases:
+            src = {"mcadsw_free": free, "mcadsw_blk": blk,
+                   "mcadsw_sub": ("s.sv", "module mcadsw_sub;\n" + body + "endmodule\n")}
+            got = self.gated_resets(eng, src)
+            print(f"rtl_check: self-test, {name}: {'passed' if got else 'found'}"
+                  f" ({'as expected' if got == want else 'WRONG'})")
+            ok = ok and got == want
+        return ok
 
     def yosys(self):
         bad = []
@@ -229,9 +322,9 @@ class Check:
 def main(argv):
     what = argv[0] if argv else "all"
     steps = {"lint": ["lint"], "yosys": ["yosys"], "iverilog": ["iverilog"], "board": ["board"],
-             "wrapper": ["wrapper"], "all": ["lint", "yosys", "iverilog", "wrapper"]}
+             "wrapper": ["wrapper"], "selftest": ["selftest"], "all": ["lint", "yosys", "iverilog", "wrapper"]}
     if what not in steps or len(argv) > 2:
-        print(f"usage: {sys.argv[0]} lint|yosys|iverilog|board|wrapper|all [PACKAGE]", file=sys.stderr)
+        print(f"usage: {sys.argv[0]} lint|yosys|iverilog|board|wrapper|selftest|all [PACKAGE]", file=sys.stderr)
         return 2
     if not (VENV_BIN / "verilator").is_file():
         raise FlowError(f"no tool environment at {VENV_BIN.parent} (run scripts/bootstrap.sh)", 2)
