@@ -44,6 +44,8 @@ Engine::Engine(MemoryModel& mem, const EngineOptions& opt) : mem_(mem) {
     throw std::runtime_error("this model was built without FST tracing: no waves");
 #endif
   }
+  // Released first, so that asserting the reset is a falling edge (bench_dut.hpp).
+  dut_->set_reset(false);
   dut_->eval();
   reset();
 }

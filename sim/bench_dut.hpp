@@ -33,8 +33,8 @@ class BenchDut {
 
   virtual ~BenchDut() = default;
 
-  // rst_ni low (and the start input quiet) or high. A model starts with rst_ni
-  // high, so that asserting the reset is a falling edge: an asynchronous reset
+  // rst_ni low (and the start input quiet) or high. The bench releases it before
+  // the model's first evaluation, so that asserting the reset is a falling edge: an asynchronous reset
   // (`always_ff @(posedge clk_i or negedge rst_ni)`) acts in an event-driven
   // model only on that edge or on a clock edge, and a block behind a clock gate
   // that is closed during reset sees no clock edge (in silicon the level resets it).

@@ -202,7 +202,6 @@ class CoreDut : public BenchDut {
       : mem_(mem), top_(&ctx), bus_(top_, std::move(cycle)) {
     if (!record_ports.empty()) recorder_ = std::make_unique<PortRecorder>(record_ports);
     top_.clk_i = 0;
-    top_.rst_ni = 1;  // released until Engine::reset() asserts it (bench_dut.hpp)
     top_.start_i = 0;
     top_.mem_gnt_i = 0;
     top_.mem_rvalid_i = 0;

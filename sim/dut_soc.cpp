@@ -44,7 +44,6 @@ class SocDut : public BenchDut {
         axi_(top_, std::move(cycle), opt.memory.latency.seed + 77, 0.3),
         bus_(axi_) {
     top_.clk_i = 0;
-    top_.rst_ni = 1;  // released until Engine::reset() asserts it (bench_dut.hpp)
   }
 
   void set_reset(bool active) override { top_.rst_ni = !active; }
