@@ -213,9 +213,15 @@ bench-sim: build
 	  $(if $(FRAMES),--frames "$(FRAMES)") $(if $(BASELINE),--baseline "$(BASELINE)")
 
 ## profile-sim: where a CIF D=64 frame's simulated time goes, per Verilog module and in the harness
-##   (perf and Verilator's --prof-cfuncs; build/prof/profile/summary.txt)
+##   (perf and Verilator's --prof-cfuncs; build/prof/profile/summary.txt); CALLGRIND=1: make sim's
+##   model on a crop under callgrind, instructions by RTL instance (build/profile_callgrind/summary.txt)
+ifeq ($(CALLGRIND),1)
+profile-sim: build
+	@python3 flow/profile_sim.py --callgrind --build $(abspath $(BUILD_DIR))
+else
 profile-sim: bootstrap
 	@python3 flow/profile_sim.py --build $(abspath $(BUILD_DIR)/prof)
+endif
 
 ## report: build/report/report.md: Middlebury errors next to the paper and OpenCV, speed, hardware
 report: build

@@ -92,6 +92,32 @@ def main():
         check(f"profile share of {part}", f"{pct} %  {part}" in text, text)
     check("profile, Verilog functions by module",
           "40.0 %  mcadsw_vert_agg" in text and "20.0 %  mcadsw_census" in text, text)
+
+    # --callgrind: each model function to the instance its body names most.
+    annotate = """--------------------------------------------------------------------------------
+1,000 (100.0%)  PROGRAM TOTALS
+--------------------------------------------------------------------------------
+  500 (50.00%)  ???:Vmcadsw_top___024root___nba_sequent__TOP__12(Vmcadsw_top___024root*) [/x/mcadsw_sim]
+  200 (20.00%)  ???:Vmcadsw_top___024root___nba_comb__TOP__1(Vmcadsw_top___024root*) [/x/mcadsw_sim]
+  100 (10.00%)  ???:Vmcadsw_top___024root___eval_body__nba(Vmcadsw_top___024root*) [/x/mcadsw_sim]
+   50 ( 5.00%)  ???:Vmcadsw_top___024root___nba_sequent__TOP__3(Vmcadsw_top___024root*) [/x/mcadsw_sim]
+  100 (10.00%)  ???:VerilatedContext::assertCtlGet(VerilatedAssertCtlQuery, unsigned char) const [/x/mcadsw_sim]
+   50 ( 5.00%)  ???:mcadsw::sim::AxiMemory::sample(Vmcadsw_top&) [/x/mcadsw_sim]
+"""
+    va = "mcadsw_top__DOT__u_engine__DOT__u_cost_agg__DOT__g_vert__BRA__0__KET____DOT__u_vert_agg__DOT__s"
+    bodies = {"Vmcadsw_top___024root___nba_sequent__TOP__12": f"x = {va}; y = {va};\n"
+              "z = vlSelfRef.mcadsw_top__DOT__u_regs__DOT__q;",
+              "Vmcadsw_top___024root___nba_comb__TOP__1": "vlSelfRef.mcadsw_top__DOT__u_regs__DOT__rdata = 0;",
+              "Vmcadsw_top___024root___eval_body__nba": f"if (x) {va} = 1;",
+              "Vmcadsw_top___024root___nba_sequent__TOP__3": "vlSelfRef.clk_i = 0;"}
+    total, parts, insts = profile_sim.attribute(annotate, bodies)
+    check("callgrind: the total is the functions' sum", total == 1000, str(total))
+    check("callgrind: a function goes to the instance it names most",
+          insts.get("u_engine.u_cost_agg.g_vert[0]") == 500 and insts.get("u_regs") == 200, str(dict(insts)))
+    check("callgrind: the scheduler's functions and those naming no instance are glue",
+          parts["model: scheduling and glue"] == 150 and parts["model: RTL blocks"] == 700, str(dict(parts)))
+    check("callgrind: runtime and harness apart", parts["Verilator runtime"] == 100
+          and parts["harness (memory model, driver, bench)"] == 50, str(dict(parts)))
     return 1 if FAILS else 0
 
 
