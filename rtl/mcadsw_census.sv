@@ -366,6 +366,7 @@ module mcadsw_census #(
     logic [NB-1:0]   wcol_q;          // window luma columns written: those < wcol_q
     logic [NB-1:0]   nl_q;            // the window luma column the loader reads next
     logic [5*LW-1:0] win_q;           // luma columns nl - 5 .. nl - 1, the oldest at 0
+    logic [NB-1:0]   lk_next;         // lk after this cycle's issue
     logic [XB-1:0]   ki0;             // a block's first column
     logic [NB-1:0]   lk0;             // ... and its lk
     logic            load;
@@ -386,18 +387,12 @@ module mcadsw_census #(
         if (c == KCB'(k))
           for (int dx = 0; dx < 5; dx++) chunk_rows[dx*KW +: KW] = lcols[dx*LW + k*RCH*8 +: KW];
     endfunction
+    assign lk      = KB'(ofs_q) + KB'(ic);
+    assign lk_next = NB'(lk) + NB'(issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1));
     assign ki0     = cfg_cont_i ? XB'(COLS - BLOCK) : '0;
     assign lk0     = NB'(cfg_ofs_i) + NB'((ki0 < cfg_lo_x_i) ? cfg_lo_x_i : ki0);
-    // lk and lk + 5 in registers: set with the block (lk0), one on at an issue that
-    // moves the kernel's column past lo_x (lk_inc), so the loader's and the issue's
-    // tests compare registers (nl < lk' + 5: below lk + 5, or at it when lk moves on).
-    logic [KB-1:0]   lk_q;
-    logic [NB-1:0]   lk5_q;           // lk + 5
-    logic            lk_inc;
-    assign lk_inc  = issue && ki_q >= lo_x_q && ki_q != XB'(COLS - 1);
-    assign lk      = lk_q;
-    assign load    = state_q == RUN && nl_q < wcol_q && (nl_q < lk5_q || (lk_inc && nl_q == lk5_q));
-    assign luma_ok = !need_luma || nl_q == lk5_q;
+    assign load    = state_q == RUN && nl_q < wcol_q && nl_q < lk_next + NB'(5);
+    assign luma_ok = !need_luma || nl_q == NB'(lk) + NB'(5);
     assign kern_win = state_q == RUN && !kfin_q && need_luma && luma_ok;
     assign kern_ok  = !need_luma || ph_q == KCB'(KCH - 1);
     // Evaluated only while the kernel runs (simulation speed; the same hardware).
@@ -410,8 +405,6 @@ module mcadsw_census #(
         hstrip_q <= '0;
         wcol_q   <= '0;
         nl_q     <= '0;
-        lk_q     <= '0;
-        lk5_q    <= NB'(5);
         ph_q     <= '0;
         c_lo_q   <= '0;
         c_hi_q   <= '0;
@@ -423,18 +416,10 @@ module mcadsw_census #(
         if (issue) ph_q <= '0;
         else if (kern_win && ph_q != KCB'(KCH - 1)) ph_q <= ph_q + KCB'(1);
         if (state_q == IDLE && cfg_valid_i) begin
-          // Rows lo_y's and hi_y's chunks and places: y / RCH and y % RCH by compares
-          // with the KCH chunks' first rows (a division would be a carry chain each way).
-          for (int k = 0; k < KCH; k++) begin
-            if (32'(cfg_lo_y_i) >= k * RCH) begin
-              c_lo_q <= KCB'(k);
-              o_lo_q <= OCB'(32'(cfg_lo_y_i) - k * RCH);
-            end
-            if (32'(cfg_hi_y_i) >= k * RCH) begin
-              c_hi_q <= KCB'(k);
-              o_hi_q <= OCB'(32'(cfg_hi_y_i) - k * RCH);
-            end
-          end
+          c_lo_q <= KCB'(32'(cfg_lo_y_i) / RCH);
+          o_lo_q <= OCB'(32'(cfg_lo_y_i) % RCH);
+          c_hi_q <= KCB'(32'(cfg_hi_y_i) / RCH);
+          o_hi_q <= OCB'(32'(cfg_hi_y_i) % RCH);
           for (int j = 0; j < ROWS; j++) begin
             above_q[j] <= j < 32'(cfg_lo_y_i);
             below_q[j] <= j > 32'(cfg_hi_y_i);
@@ -444,13 +429,7 @@ module mcadsw_census #(
         if (state_q == IDLE && cfg_valid_i) begin
           wcol_q <= NB'({cfg_first_i, 2'b00});
           nl_q   <= lk0;
-          lk_q   <= KB'(lk0);
-          lk5_q  <= lk0 + NB'(5);
         end else begin
-          if (lk_inc) begin
-            lk_q  <= lk_q + KB'(1);
-            lk5_q <= lk5_q + NB'(1);
-          end
           if (state_q == RUN && col_valid) wcol_q <= wcol_q + NB'(1);
           if (load) nl_q <= nl_q + NB'(1);
         end
@@ -476,7 +455,6 @@ module mcadsw_census #(
     `MCADSW_ASSERT(StripWrittenBeforeNextBlock, !(state_q == IDLE && cfg_valid_i && col_valid && col_b != 2'd3))
     `MCADSW_ASSERT(FirstColumnDelivered, !(state_q == IDLE && cfg_valid_i && !cfg_cont_i && lk0 < NB'({cfg_first_i, 2'b00})))
     `MCADSW_ASSERT(WindowNotAhead, !(state_q == RUN && need_luma && !kfin_q && nl_q > NB'(lk) + NB'(5)))
-    `MCADSW_ASSERT(LumaColumnRegisters, lk_q == KB'(ofs_q) + KB'(ic) && lk5_q == NB'(lk_q) + NB'(5))
   end else begin : g_asic_luma
     assign lk      = KB'(ofs_q) + KB'(ic);
     logic cols_unused;                    // the stage's columns one a cycle: FPGA target

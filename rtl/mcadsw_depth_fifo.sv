@@ -89,8 +89,7 @@ module mcadsw_depth_fifo #(
   logic [4:0]                 wofs_q;                   // next word, columns after the first
 
   // The head row's word being written (w_req, w_addr, w_be, w_wdata), and whether
-  // it leaves the queue this cycle (w_take): granted on the port (ASIC target), or
-  // taken into the output register (FPGA target, below).
+  // it leaves the queue this cycle (w_take): granted on the port.
   logic          w_req, w_take, out_busy;
   logic [AW-1:0] w_addr;
   logic [3:0]    w_be;
@@ -139,34 +138,19 @@ module mcadsw_depth_fifo #(
   assign {h_a0, h_pw0, h_pf, h_n, h_span} = h_info;
   assign pword = !mirror_i ? h_pw0 + wofs_q : h_pw0 - wofs_q;   // the word's lowest column
   if (FPGA) begin : g_info_regs
-    // FPGA target: each slot's row_info, worked out in the cycle after the push from
-    // the descriptor registered there (the frame configuration is stable): the
-    // scheduler's descriptor and the head's writes each start from registers. A row's
-    // writes start when its values are in, many cycles after its push.
+    // FPGA target: each slot's row_info, worked out at the push (the frame
+    // configuration is stable): the head's writes start from registers.
     logic [ROWSQ*RI-1:0] info_q;
-    logic                push_q;
-    logic [PB-1:0]       slot_q;
-    logic [AW-1:0]       p_addr_q;
-    logic [CW-1:0]       p_x_q;
-    logic [4:0]          p_n_q;
-    always_ff @(posedge clk_i) begin
-      if (desc_push_i) {slot_q, p_addr_q, p_x_q, p_n_q} <= {tail_q, desc_addr_i, desc_x_i, desc_n_i};
-    end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        push_q <= 1'b0;
         info_q <= '0;
-      end else begin
-        push_q <= desc_push_i;
-        if (push_q) begin
-          for (int r = 0; r < ROWSQ; r++)
-            if (slot_q == PB'(r)) info_q[r*RI +: RI] <= row_info(p_addr_q, p_x_q, p_n_q,
-                                                                 wide_i, mirror_i, xlo_i, xend_i);
-        end
+      end else if (desc_push_i) begin
+        for (int r = 0; r < ROWSQ; r++)
+          if (tail_q == PB'(r)) info_q[r*RI +: RI] <= row_info(desc_addr_i, desc_x_i, desc_n_i,
+                                                                      wide_i, mirror_i, xlo_i, xend_i);
       end
     end
     assign h_info = info_q[32'(head_q)*RI +: RI];
-    `MCADSW_ASSERT(RowInfoBeforeItsWrites, !(push_q && w_req && head_q == slot_q))
   end else begin : g_info_comb
     // ASIC target: the descriptors; the head's row_info from its descriptor.
     localparam int DESC = AW + CW + 5;
@@ -294,25 +278,12 @@ module mcadsw_depth_fifo #(
   end
   assign w_req  = ready_q != '0;
   assign w_addr = h_a0 + (wide_i ? AW'({wofs_q, 1'b0}) : AW'(wofs_q));
-  if (FPGA) begin : g_out_reg
-    // FPGA target: the word leaves into an output register, when it is empty or its
-    // word is granted in the same cycle, so the memory port's write request starts at
-    // flip-flops; a row's first word reaches the port a cycle later, and the FIFO is
-    // empty only when the register is too.
-    logic          out_valid_q;
-    logic [AW-1:0] out_addr_q;
-    logic [3:0]    out_be_q;
-    logic [31:0]   out_data_q;
-    assign w_take = w_req && (!out_valid_q || wr_gnt_i);
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) out_valid_q <= 1'b0;
-      else         out_valid_q <= w_take || (out_valid_q && !wr_gnt_i);
-    end
-    always_ff @(posedge clk_i) begin
-      if (w_take) {out_addr_q, out_be_q, out_data_q} <= {w_addr, w_be, w_wdata};
-    end
-    assign {wr_req_o, wr_addr_o, wr_be_o, wr_wdata_o} = {out_valid_q, out_addr_q, out_be_q, out_data_q};
-    assign out_busy = out_valid_q;
+  // The word to the port as it is, on both targets (an output register on the FPGA
+  // target made the design harder to route: docs/blocks/fpga_target.md, Timing).
+  if (FPGA) begin : g_out_fpga
+    assign w_take   = w_req && wr_gnt_i;
+    assign {wr_req_o, wr_addr_o, wr_be_o, wr_wdata_o} = {w_req, w_addr, w_be, w_wdata};
+    assign out_busy = 1'b0;
   end else begin : g_out_port
     assign w_take   = w_req && wr_gnt_i;
     assign {wr_req_o, wr_addr_o, wr_be_o, wr_wdata_o} = {w_req, w_addr, w_be, w_wdata};

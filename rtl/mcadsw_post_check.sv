@@ -120,25 +120,13 @@ module mcadsw_post_check #(
   logic          seen_q;                       // a valid pixel seen in this row
   logic [VB-1:0] last_q;                       // the last valid pixel's value
   logic          s2_ok;
-  if (mcadsw_pkg::FPGA != 0) begin : g_ok_window
-    // FPGA target: |d - dR| <= T as d - T <= dR <= d + T, both bounds worked out in
-    // stage 1 and each byte of the row buffer's word compared at once, so the
-    // buffer's read data (a block RAM's output) meets two short compares and a
-    // select rather than a subtraction, its absolute value and a compare in series.
-    logic [8:0] lo_q, hi_q;                    // d - T (0 when below), d + T
-    logic [3:0] in_win;                        // byte b of the word within them
-    always_ff @(posedge clk_i) begin
-      if (take) begin
-        lo_q <= ({1'b0, d} >= {3'b000, tol_i}) ? {1'b0, d} - {3'b000, tol_i} : 9'd0;
-        hi_q <= {1'b0, d} + {3'b000, tol_i};
-      end
-    end
-    for (genvar b = 0; b < 4; b++) begin : g_byte
-      assign in_win[b] = {1'b0, dr_word_q[8*b +: 8]} >= lo_q && {1'b0, dr_word_q[8*b +: 8]} <= hi_q;
-    end
-    assign s2_ok = s2_inside_q && in_win[s2_byte_q];
-    logic d_unused;                            // the pixel's d: its bounds instead
-    assign d_unused = ^s2_d_q;
+  // The check as a difference on both targets (the FPGA target's window of compares
+  // made the design harder to route: docs/blocks/fpga_target.md, Timing).
+  if (mcadsw_pkg::FPGA != 0) begin : g_ok_fpga
+    logic [7:0] d_right;                       // dR(x - d)
+    assign d_right = dr_word_q[8*s2_byte_q +: 8];
+    assign s2_ok = s2_inside_q &&
+                   ((s2_d_q >= d_right) ? (s2_d_q - d_right) : (d_right - s2_d_q)) <= {2'b00, tol_i};
   end else begin : g_ok_diff
     logic [7:0] d_right;                       // dR(x - d)
     assign d_right = dr_word_q[8*s2_byte_q +: 8];

@@ -8,7 +8,7 @@
 //   2  the fill from the right (the filled value of row y replaces row y - 2 in
 //      its median row buffer), the mask byte of row y
 //   3  sort the column {row r - 1, row r, row r + 1}, shift it into the window
-//   4  the 3x3 median of row r = y - 1 (edges replicated; FPGA target: in two cycles)
+//   4  the 3x3 median of row r = y - 1 (edges replicated)
 //   5  the output word
 // Mask and output words go to the stage's write queue (mask_push_o,
 // out_push_o; both may come in the same cycle, the mask word first).
@@ -135,31 +135,18 @@ module mcadsw_post_fill #(
     med3_of = med3(parts[2*VB +: VB], parts[VB +: VB], parts[0 +: VB]);
   endfunction
 
-  // Stage 4's median into stage 5: in one cycle (ASIC target), or in two on the FPGA
-  // target (the three values registered between the two halves: the median of nine
-  // is six compare-selects in series, too long for one cycle of the FPGA's clock).
+  // Stage 4's median into stage 5, in one cycle on both targets (the FPGA target's
+  // median in two cycles made the design harder to route: docs/blocks/fpga_target.md,
+  // Timing).
   logic          s5_go;                        // a median enters stage 5
   logic [VB-1:0] s5_median;
   logic [CW-1:0] s5_x;
-  logic          s4b_busy;                     // FPGA target: a median between its halves
-  if (mcadsw_pkg::FPGA != 0) begin : g_median_split
-    logic            s4b_valid_q;
-    logic [3*VB-1:0] s4b_parts_q;
-    logic [CW-1:0]   s4b_x_q;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) s4b_valid_q <= 1'b0;
-      else         s4b_valid_q <= s4_valid_q;
-    end
-    always_ff @(posedge clk_i) begin
-      if (s4_valid_q) begin
-        s4b_parts_q <= median9_parts(win0_q, win1_q, win2_q);
-        s4b_x_q     <= s4_x_q;
-      end
-    end
-    assign s5_go     = s4b_valid_q;
-    assign s5_median = med3_of(s4b_parts_q);
-    assign s5_x      = s4b_x_q;
-    assign s4b_busy  = s4b_valid_q;
+  logic          s4b_busy;                     // a median between two cycles: none
+  if (mcadsw_pkg::FPGA != 0) begin : g_median_fpga
+    assign s5_go     = s4_valid_q;
+    assign s5_median = med3_of(median9_parts(win0_q, win1_q, win2_q));
+    assign s5_x      = s4_x_q;
+    assign s4b_busy  = 1'b0;
   end else begin : g_median_one
     assign s5_go     = s4_valid_q;
     assign s5_median = med3_of(median9_parts(win0_q, win1_q, win2_q));

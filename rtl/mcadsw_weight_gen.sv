@@ -456,17 +456,11 @@ module mcadsw_weight_gen #(
     logic [WB-1:0]   passed;
     logic [NTHR-1:0] th;
     passed = '0;
+    // An adder on both targets (a thermometer and a priority select on the FPGA target
+    // made the design harder to route: docs/blocks/fpga_target.md, Timing).
     if (FPGA) begin
-      // FPGA target: the count as a thermometer (a 1 shifted in for each threshold
-      // reached), then its length by a priority select: logic of a few LUT levels, not
-      // a chain of NTHR adders, each a carry chain of its own. (A half-adder ripple on
-      // the count's bits, the first form tried, was miscompiled by Verilator 5.052:
-      // docs/tool_notes.md.)
       th = '0;
-      for (int i = 0; i < NTHR; i++)
-        if (d >= thr[i*DCB +: DCB]) th = {th[NTHR-2:0], 1'b1};
-      for (int k = 1; k <= NTHR; k++)
-        if (th[k-1]) passed = WB'(k);
+      for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);
     end else begin
       th = '0;
       for (int i = 0; i < NTHR; i++) passed = passed + WB'(d >= thr[i*DCB +: DCB]);

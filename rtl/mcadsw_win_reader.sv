@@ -265,44 +265,12 @@ module mcadsw_win_reader #(
   assign strip_end = col_end && p_plane == PB'(PLANES - 1);
   logic [CW-1:0] xoff_next;
   logic          xo_up, xo_down;     // tiled: the next strip's word is one on / one back
-  if (mcadsw_pkg::FPGA != 0) begin : g_xnext_regs
-    // FPGA target: the same word, from registers. x0 is a multiple of 4 (assumed
-    // below), so a strip's first column x is too, and word(x) is 0 when x <= 0, the
-    // last word (lastw) when x >= W, else x; mirrored, W - 4 - that (wm4). Words only
-    // grow over the strips, so the next strip's word moves (one on; mirrored, one
-    // back) exactly when it differs from this strip's. Each cycle registers, from
-    // xabs_q, the next strip's word and the one after it, and whether each moves: a
-    // strip end takes the first, or the second when the last cycle also ended a strip
-    // (se_q; xabs_q moved on since). lastw and W - 4 are registered in the cycle after
-    // start_i (the pass's W is stable), the words from the next cycle on, before the
-    // first advance.
-    logic [CW-1:0] lastw_q, wm4_q, xo1_q, xo2_q;
-    logic          mv1_q, mv2_q, se_q;
-    function automatic logic [CW-1:0] word_at(input logic signed [CW+1:0] x, input logic [CW-1:0] w,
-                                              input logic [CW-1:0] lastw);
-      word_at = (x <= 0) ? '0 : (x >= $signed({2'b00, w})) ? lastw : CW'(x);
-    endfunction
-    logic [CW-1:0] w0, w1, w2;         // words of this strip and the next two
-    assign w0 = word_at(xabs_q, width_i, lastw_q);
-    assign w1 = word_at(xabs_q + (CW + 2)'(4), width_i, lastw_q);
-    assign w2 = word_at(xabs_q + (CW + 2)'(8), width_i, lastw_q);
-    always_ff @(posedge clk_i) begin
-      if (init_q[0]) begin
-        lastw_q <= (width_i - CW'(1)) & ~(CW'(3));
-        wm4_q   <= width_i - CW'(4);
-      end
-      xo1_q <= mirror_i ? wm4_q - w1 : w1;
-      xo2_q <= mirror_i ? wm4_q - w2 : w2;
-      mv1_q <= w1 != w0;
-      mv2_q <= w2 != w1;
-      se_q  <= advance && strip_end;
-    end
-    assign xoff_next = se_q ? xo2_q : xo1_q;
-    assign xo_up     = (se_q ? mv2_q : mv1_q) && !mirror_i;
-    assign xo_down   = (se_q ? mv2_q : mv1_q) && mirror_i;
-    `MCADSW_ASSERT(NextWordAsClamped, !(busy_q && init_q == '0 &&
-                   (xoff_next != mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i) ||
-                    xo_up != (xoff_next > xoff_q) || xo_down != (xoff_next < xoff_q))))
+  // The next strip's word by the clamp, on both targets (the FPGA target's form from
+  // registers made the design harder to route: docs/blocks/fpga_target.md, Timing).
+  if (mcadsw_pkg::FPGA != 0) begin : g_xnext_fpga
+    assign xoff_next = mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
+    assign xo_up     = xoff_next > xoff_q;
+    assign xo_down   = xoff_next < xoff_q;
   end else begin : g_xnext_clamp
     assign xoff_next = mem_col(xabs_q + (CW + 2)'(4), lo_i, width_i, mirror_i);
     assign xo_up     = xoff_next > xoff_q;

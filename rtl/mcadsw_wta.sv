@@ -184,11 +184,10 @@ module mcadsw_wta #(
         n16 = {1'b0, b_num_q[m*(FB+1) +: FB+1], 4'b0000};
         den = (FB + 6)'(b_den_q[m*(FB+2) +: FB+2]);
         q = '0;
+        // A sum on both targets (a priority select on the FPGA target made the design
+        // harder to route: docs/blocks/fpga_target.md, Timing).
         if (mcadsw_pkg::FPGA != 0) begin
-          // FPGA target: the tests hold for k = 1 .. q and fail above (den > 0: the
-          // odd multiples grow), so q is where they change (a priority select), not
-          // their sum (a chain of adders).
-          for (int k = 1; k <= 8; k++) if (n16 >= odd_times(den, k)) q = 4'(k);
+          for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= odd_times(den, k));
         end else begin
           for (int k = 1; k <= 8; k++) q = q + 4'(n16 >= odd_times(den, k));
         end
