@@ -137,6 +137,20 @@ def attribute(annotate, bodies):
     return total, parts, insts
 
 
+def run_under(prefix, exe, args, out, what):
+    """Runs exe with args under the profiler command prefix in out (run.log): its stdout."""
+    log(f"running {exe.name} {' '.join(args)} under {what}")
+    t0 = time.time()
+    run = subprocess.run(prefix + [str(exe)] + args, cwd=out, capture_output=True, text=True)
+    (out / "run.log").write_text(run.stdout + run.stderr)
+    if run.returncode != 0:
+        print(run.stdout + run.stderr)
+        raise FlowError(f"the run failed (exit {run.returncode})")
+    print(run.stdout, end="")
+    log(f"run in {time.time() - t0:.1f} s (under {what})")
+    return run.stdout
+
+
 def callgrind(a):
     """--callgrind: instructions of the make sim model by RTL instance (summary text)."""
     build = Path(a.build).resolve() if a.build else ROOT / "build"
@@ -156,16 +170,8 @@ def callgrind(a):
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)
     args = a.sim_args or [str(ROOT / p) if "/" in p else p for p in DEFAULT_FRAME] + DEFAULT_CROP
-    log(f"running {exe.name} {' '.join(args)} under callgrind")
-    t0 = time.time()
-    run = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out / 'callgrind.out'}",
-                          str(exe)] + args, cwd=out, capture_output=True, text=True)
-    (out / "run.log").write_text(run.stdout + run.stderr)
-    if run.returncode != 0:
-        print(run.stdout + run.stderr)
-        raise FlowError(f"the run failed (exit {run.returncode})")
-    print(run.stdout, end="")
-    log(f"run in {time.time() - t0:.1f} s (under callgrind)")
+    stdout = run_under(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out / 'callgrind.out'}"],
+                       exe, args, out, "callgrind")
     ann = subprocess.run(["callgrind_annotate", "--threshold=100", str(out / "callgrind.out")],
                          capture_output=True, text=True)
     if ann.returncode != 0:
@@ -174,7 +180,7 @@ def callgrind(a):
     total, parts, insts = attribute(ann.stdout, bodies)
     if total <= 0:
         raise FlowError("callgrind_annotate's report is empty")
-    cyc = re.search(r"\b(\d+) cycles\b", run.stdout)
+    cyc = re.search(r"\b(\d+) cycles\b", stdout)
     rows = [f"{total:,} instructions (callgrind)"
             + (f", {int(cyc.group(1)):,} cycles: {total / int(cyc.group(1)):,.0f} a cycle" if cyc else ""),
             "", "by part:"]
@@ -212,17 +218,9 @@ def main(argv):
     out.mkdir(parents=True)
     args = a.sim_args or [str(ROOT / p) if "/" in p else p for p in DEFAULT_FRAME]
     exe = build / "bin" / "mcadsw_sim"
-    log(f"running {exe.name} {' '.join(args)}")
-    t0 = time.time()
     data = out / "perf.data"
-    run = subprocess.run(["perf", "record", "-q", "-F", "1000", "-e", "cpu-clock", "-o", str(data), str(exe)] + args,
-                         cwd=out, capture_output=True, text=True)
-    (out / "run.log").write_text(run.stdout + run.stderr)
-    if run.returncode != 0:
-        print(run.stdout + run.stderr)
-        raise FlowError(f"the run failed (exit {run.returncode})")
-    print(run.stdout, end="")
-    log(f"run in {time.time() - t0:.1f} s (under perf record)")
+    run_under(["perf", "record", "-q", "-F", "1000", "-e", "cpu-clock", "-o", str(data)], exe, args, out,
+              "perf record")
     rep = subprocess.run(["perf", "report", "-i", str(data), "--stdio", "--no-children", "--sort", "symbol",
                           "--percent-limit", "0", "-g", "none"], capture_output=True, text=True)
     if rep.returncode != 0:
