@@ -273,10 +273,7 @@ module mcadsw_axi_master #(
           n = n - 2'd1;
         end
         if (do_close) begin
-          // Decoded slot by slot (constant part-selects): the offset n (AW + LB) of a
-          // computed part-select is a product (the FPGA's synthesis took a multiplier).
-          for (int i = 0; i < ND; i++)
-            if (n == 2'(i)) q[i*(AW+LB) +: AW+LB] = {ob_addr_q, LB'(ob_n_q - NB'(1))};
+          q[32'(n)*(AW+LB) +: AW+LB] = {ob_addr_q, LB'(ob_n_q - NB'(1))};
           n = n + 2'd1;
         end
         awq_q   <= q;

@@ -580,15 +580,44 @@ module mcadsw_census #(
       end
     end
 
-    // The lanes (lsel_q, rd_row_q above).
-    function automatic logic [CWB-1:0] sub_word(input logic [CSUB*CWB-1:0] w,
-                                                input logic [CSUB-1:0] onehot);
-      sub_word = '0;
-      for (int i = 0; i < CSUB; i++) sub_word = sub_word | (w[i*CWB +: CWB] & {CWB{onehot[i]}});
-    endfunction
+    // The lanes (lsel_q, rd_row_q above): each takes the word its one-hot select
+    // names, as a parallel case over the sub-bank words padded to 16 (synthesis makes
+    // the same AND-OR multiplexer; a simulator stops at the selected word instead of
+    // masking all CSUB wide words).
+    if (CSUB > 16) begin : g_bad_csub
+      mcadsw_error_census_csub_above_16 u_error ();
+    end
+    logic [16*CWB-1:0] word;
+    assign word = (16*CWB)'(csub_rd);
     for (genvar l = 0; l < RL; l++) begin : g_lane
       logic [CWB-1:0] col;
-      assign col = sub_word(csub_rd, lsel_q[l*CSUB +: CSUB]);
+      logic [15:0]    sel;
+      assign sel = 16'(lsel_q[l*CSUB +: CSUB]);
+      // always @* rather than always_comb: Icarus Verilog 11 rejects constant selects
+      // of a generate scope's signals in always_comb.
+      always @* begin
+        col = '0;
+        (* parallel_case *)
+        case (1'b1)
+          sel[0]:  col = word[0*CWB +: CWB];
+          sel[1]:  col = word[1*CWB +: CWB];
+          sel[2]:  col = word[2*CWB +: CWB];
+          sel[3]:  col = word[3*CWB +: CWB];
+          sel[4]:  col = word[4*CWB +: CWB];
+          sel[5]:  col = word[5*CWB +: CWB];
+          sel[6]:  col = word[6*CWB +: CWB];
+          sel[7]:  col = word[7*CWB +: CWB];
+          sel[8]:  col = word[8*CWB +: CWB];
+          sel[9]:  col = word[9*CWB +: CWB];
+          sel[10]: col = word[10*CWB +: CWB];
+          sel[11]: col = word[11*CWB +: CWB];
+          sel[12]: col = word[12*CWB +: CWB];
+          sel[13]: col = word[13*CWB +: CWB];
+          sel[14]: col = word[14*CWB +: CWB];
+          sel[15]: col = word[15*CWB +: CWB];
+          default: col = '0;
+        endcase
+      end
       assign rd_data_o[l*WINDOW*CB +: WINDOW*CB] = (WINDOW*CB)'(col >> (32'(rd_row_q)*CB));
     end
   end

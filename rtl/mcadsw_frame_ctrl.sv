@@ -263,32 +263,6 @@ module mcadsw_frame_ctrl (
                  (cfg_lr_i && state_q != StIdle && state_q != StSettle && state_q != StCheck) ||
                  state_q == StRectCheck || state_q == StRect || state_q == StRectDrain ||
                  state_q == StMarkWait || state_q == StMark;
-  // The memory port's events counted: this cycle's (ASIC target), or on the FPGA
-  // target the previous cycle's, registered (the port's request and grant end long
-  // paths through the readers and the arbiter; a 32-bit sum after them does not fit
-  // the FPGA's clock). A frame ends with the same counts: the events of its last
-  // counted cycle are added in the next one, and a frame's start clears them either way.
-  logic       ev_count, ev_rd, ev_wr, ev_stall;
-  logic [3:0] ev_len;
-  if (mcadsw_pkg::FPGA != 0) begin : g_events_reg
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        {ev_count, ev_rd, ev_wr, ev_stall, ev_len} <= '0;
-      end else begin
-        ev_count <= count && !accept_o;
-        ev_rd    <= mem_req_i && mem_gnt_i && !mem_we_i;
-        ev_wr    <= mem_req_i && mem_gnt_i && mem_we_i;
-        ev_stall <= mem_req_i && !mem_gnt_i;
-        ev_len   <= mem_len_i;
-      end
-    end
-  end else begin : g_events_now
-    assign ev_count = count;
-    assign ev_rd    = mem_req_i && mem_gnt_i && !mem_we_i;
-    assign ev_wr    = mem_req_i && mem_gnt_i && mem_we_i;
-    assign ev_stall = mem_req_i && !mem_gnt_i;
-    assign ev_len   = mem_len_i;
-  end
   logic [31:0] cycles_d, rd_d, wr_d, stall_d;
   always_comb begin
     cycles_d = cnt_cycles_o;
@@ -300,14 +274,12 @@ module mcadsw_frame_ctrl (
       rd_d     = '0;
       wr_d     = '0;
       stall_d  = '0;
-    end else begin
-      if (count) cycles_d = cnt_cycles_o + 32'd1;
-      if (ev_count) begin
-        // A granted read is a burst of mem_len_i + 1 words.
-        if (ev_rd) rd_d = cnt_words_read_o + 32'(ev_len) + 32'd1;
-        wr_d    = cnt_words_written_o + 32'(ev_wr);
-        stall_d = cnt_stall_o + 32'(ev_stall);
-      end
+    end else if (count) begin
+      cycles_d = cnt_cycles_o + 32'd1;
+      // A granted read is a burst of mem_len_i + 1 words.
+      if (mem_req_i && mem_gnt_i && !mem_we_i) rd_d = cnt_words_read_o + 32'(mem_len_i) + 32'd1;
+      wr_d    = cnt_words_written_o + 32'(mem_req_i && mem_gnt_i && mem_we_i);
+      stall_d = cnt_stall_o + 32'(mem_req_i && !mem_gnt_i);
     end
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -215,17 +215,16 @@ module mcadsw_regs #(
     end
   end
 
-  // The value a write leaves in slot s: the written bytes (WSTRB) over the slot's own
-  // value. Merged slot by slot rather than over a selected old value: a byte not
-  // written keeps its flip-flops (synthesis makes the strobe part of each byte's
-  // enable), and no NREG:1 select of the old value lies in the write path.
+  // The value a write leaves in a slot: the written bytes (WSTRB) over the slot's own
+  // value, merged under each slot's own write rather than over a selected old value: a
+  // byte not written keeps its flip-flops (synthesis makes the strobe part of each
+  // byte's enable), and no NREG:1 select of the old value lies in the write path.
   logic [NREG*32-1:0] cur;             // each slot's value as read, slot s at 32 s
-  logic [NREG*32-1:0] wnew;            // slot s's value after a write to it
-  for (genvar s = 0; s < NREG; s++) begin : g_wnew
-    for (genvar b = 0; b < 4; b++) begin : g_byte
-      assign wnew[s*32 + 8*b +: 8] = wstrb_q[b] ? wdata_q[8*b +: 8] : cur[s*32 + 8*b +: 8];
-    end
-  end
+  function automatic logic [31:0] merged(input logic [31:0] old);
+    logic [31:0] v;
+    for (int b = 0; b < 4; b++) v[8*b +: 8] = wstrb_q[b] ? wdata_q[8*b +: 8] : old[8*b +: 8];
+    merged = v;
+  endfunction
   logic [NREG-1:0] hit;                // slot s is written this cycle
   for (genvar s = 0; s < NREG; s++) begin : g_hit
     assign hit[s] = wok && 32'(wslot) == s;
@@ -235,25 +234,25 @@ module mcadsw_regs #(
   for (genvar i = 0; i < NBASE; i++) begin : g_base
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) base_q[i*32 +: 32] <= '0;
-      else if (hit[S_BASE0 + i]) base_q[i*32 +: 32] <= wnew[(S_BASE0 + i)*32 +: 32];
+      else if (hit[S_BASE0 + i]) base_q[i*32 +: 32] <= merged(cur[(S_BASE0 + i)*32 +: 32]);
     end
   end
   for (genvar i = 0; i < NRAW; i++) begin : g_raw
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) raw_q[i*32 +: 32] <= '0;
-      else if (hit[S_RAW0 + i]) raw_q[i*32 +: 32] <= wnew[(S_RAW0 + i)*32 +: 32];
+      else if (hit[S_RAW0 + i]) raw_q[i*32 +: 32] <= merged(cur[(S_RAW0 + i)*32 +: 32]);
     end
   end
   for (genvar i = 0; i < 2; i++) begin : g_valid
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) valid_q[i*32 +: 32] <= '0;
-      else if (hit[S_VAL0 + i]) valid_q[i*32 +: 32] <= wnew[(S_VAL0 + i)*32 +: 32];
+      else if (hit[S_VAL0 + i]) valid_q[i*32 +: 32] <= merged(cur[(S_VAL0 + i)*32 +: 32]);
     end
   end
   for (genvar i = 0; i < NTHR; i++) begin : g_thr
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) thr_q[i*DCB +: DCB] <= '0;
-      else if (hit[S_THR0 + i]) thr_q[i*DCB +: DCB] <= wnew[(S_THR0 + i)*32 +: DCB];
+      else if (hit[S_THR0 + i]) thr_q[i*DCB +: DCB] <= DCB'(merged(cur[(S_THR0 + i)*32 +: 32]));
     end
   end
 
@@ -285,29 +284,30 @@ module mcadsw_regs #(
       done_d_q     <= 1'b0;
       error_d_q    <= 1'b0;
     end else begin
-      if (hit[S_STRIDE]) stride_q <= wnew[S_STRIDE*32 +: 32];
-      if (hit[S_OSTR]) out_stride_q <= wnew[S_OSTR*32 +: 32];
-      if (hit[S_TILE]) tile_q <= wnew[S_TILE*32 +: 32];
+      if (hit[S_STRIDE]) stride_q <= merged(cur[S_STRIDE*32 +: 32]);
+      if (hit[S_OSTR]) out_stride_q <= merged(cur[S_OSTR*32 +: 32]);
+      if (hit[S_TILE]) tile_q <= merged(cur[S_TILE*32 +: 32]);
       if (hit[S_SIZE]) begin
-        width_q  <= wnew[S_SIZE*32 + F_WIDTH +: CW];
-        height_q <= wnew[S_SIZE*32 + F_HEIGHT +: CW];
+        width_q  <= CW'(merged(cur[S_SIZE*32 +: 32]) >> F_WIDTH);
+        height_q <= CW'(merged(cur[S_SIZE*32 +: 32]) >> F_HEIGHT);
       end
-      if (hit[S_DISP]) disp_q <= wnew[S_DISP*32 + F_D +: DW];
-      if (hit[S_LRT]) lr_t_q <= wnew[S_LRT*32 + F_T +: 8];
+      if (hit[S_DISP]) disp_q <= DW'(merged(cur[S_DISP*32 +: 32]) >> F_D);
+      if (hit[S_LRT]) lr_t_q <= 8'(merged(cur[S_LRT*32 +: 32]) >> F_T);
       if (hit[S_RCTRL]) begin
-        rect_en_q   <= wnew[S_RCTRL*32 + F_REN];
-        rect_step_q <= wnew[S_RCTRL*32 + F_RSTEP +: 3];
+        rect_en_q   <= 1'(merged(cur[S_RCTRL*32 +: 32]) >> F_REN);
+        rect_step_q <= 3'(merged(cur[S_RCTRL*32 +: 32]) >> F_RSTEP);
       end
       if (hit[S_RSIZE]) begin
-        raw_w_q <= wnew[S_RSIZE*32 + F_RW +: CW];
-        raw_h_q <= wnew[S_RSIZE*32 + F_RH +: CW];
+        raw_w_q <= CW'(merged(cur[S_RSIZE*32 +: 32]) >> F_RW);
+        raw_h_q <= CW'(merged(cur[S_RSIZE*32 +: 32]) >> F_RH);
       end
       if (hit[S_NODES]) begin
-        nx_q <= wnew[S_NODES*32 + F_NX +: CW];
-        ny_q <= wnew[S_NODES*32 + F_NY +: CW];
+        nx_q <= CW'(merged(cur[S_NODES*32 +: 32]) >> F_NX);
+        ny_q <= CW'(merged(cur[S_NODES*32 +: 32]) >> F_NY);
       end
-      if (hit[S_IRQEN]) irq_en_q <= {wnew[S_IRQEN*32 + F_IERR], wnew[S_IRQEN*32 + F_IDONE]};
-      if (hit[S_CTRL]) mode_q <= wnew[S_CTRL*32 + F_MODE +: 3];
+      if (hit[S_IRQEN])
+        irq_en_q <= {1'(merged(cur[S_IRQEN*32 +: 32]) >> F_IERR), 1'(merged(cur[S_IRQEN*32 +: 32]) >> F_IDONE)};
+      if (hit[S_CTRL]) mode_q <= 3'(merged(cur[S_CTRL*32 +: 32]) >> F_MODE);
       start_q   <= start;
       abort_q   <= abort;
       done_d_q  <= done_i;
