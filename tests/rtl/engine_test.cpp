@@ -498,6 +498,61 @@ TEST(Engine, RectifiedFramesMatchReference) {
   }
 }
 
+// Rectified frames at S = 16 with a vertical scale of about 1.2 (the v row step R_v has bit 13
+// set), a width of 4k + 3 (a 3-pixel last strip in each tile row) and random memory latency (the
+// writer stalls mid-strip): `make mutate` found the row step's low bit unchecked, where an extra
+// unit a row adds up down a strip. Three jittered meshes a view.
+TEST(Engine, RectifiedFramesAtAVerticalScaleAbove1) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
+  std::mt19937 rng(37);
+  const int w = 35, h = 24, rw = 48, rh = 40;
+  const auto scaled = [&](double sv) {
+    Mesh m = make_mesh(w, h, 4);
+    std::normal_distribution<double> jit(0, 0.6);
+    for (int j = 0; j < m.ny; ++j)
+      for (int i = 0; i < m.nx; ++i) {
+        const double u = 4 + i * m.step() * 1.02 + jit(rng), v = 3 + j * m.step() * sv + jit(rng);
+        m.u[size_t(j * m.nx + i)] = int32_t(std::lround(u * 32));
+        m.v[size_t(j * m.nx + i)] = int32_t(std::lround(v * 32));
+      }
+    check_mesh(m);
+    check_rect_footprints(m, rw, rh);
+    return m;
+  };
+  for (int k = 0; k < 3; ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
+    EngineOptions opt;
+    opt.frame.rect = sim::Rectification{scaled(1.15 + 0.05 * k), scaled(1.2 + 0.05 * k)};
+    opt.memory.latency.random = true;
+    opt.memory.latency.seed = uint32_t(60 + k);
+    Config cfg;
+    cfg.disparities = std::min(6, kDmax);
+    const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+    expect_exact(r);
+    EXPECT_EQ(r.rect_mismatches, 0);
+  }
+}
+
+// A rectified raster frame of three tile bands (16 rows each) with a row stride of 4 MiB: the
+// band offsets the rectifier writes at are 16 b STRIDE, 64 MiB (bit 26) for band 1 (`make
+// mutate` found that bit of the band offset unchecked: the suite's other strides are small).
+TEST(Engine, RectifiedFrameAtA4MiBStride) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
+  std::mt19937 rng(36);
+  const int w = 40, h = 40, rw = 44, rh = 44;
+  const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
+  EngineOptions opt;
+  opt.frame.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 4, rw, rh, rng),
+                                      sim::random_fitting_mesh(w, h, 4, rw, rh, rng)};
+  opt.frame.stride = 1u << 22;
+  Config cfg;
+  cfg.disparities = std::min(8, kDmax);
+  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+  expect_exact(r);
+  EXPECT_EQ(r.rect_mismatches, 0);
+}
+
 // LR and sub-pixel with disparities of 32 and more: the right view is the left shifted by 40
 // pixels, so the scratch values the post stage reads back (16 d + offset) reach bit 9
 // (`make mutate` found that bit of the post stage's row buffer unchecked: the other LR
@@ -641,6 +696,21 @@ TEST(Engine, RejectsBadRectificationAndWritesNothing) {
     SCOPED_TRACE(b.what);
     expect_rejected(sim::run_raw(b.cfg, {}, 3000), b.code, b.what);
   }
+  // Control: a raw stride of 256 MiB (only bit 28 set) and one raw row, the raw planes (of
+  // stride x height bytes each) above every other region, is accepted: the frame starts and
+  // is still running after 3000 cycles (`make mutate` found bit 28 of the registered
+  // RAW_STRIDE unchecked: held at 0, the stride falls below the raw width and the start is
+  // rejected with code 17).
+  {
+    sim::RawConfig c = good;
+    c.raw_stride = 0x10000000u;
+    c.raw_height = 1;
+    c.raw_base = {0x30000, 0x31000, 0x32000, 0x33000, 0x34000, 0x35000};
+    const sim::EngineResult r = sim::run_raw(c, {}, 3000);
+    EXPECT_FALSE(r.error) << "raw stride 256 MiB: rejected with code " << r.error_code << " ("
+                          << regs::error_text(r.error_code) << ")";
+    EXPECT_TRUE(r.timed_out) << "raw stride 256 MiB: finished within 3000 cycles";
+  }
   // Codes 22 and 23: meshes in memory (each node u then v, 32-bit little-endian), all
   // nodes in range and small tiles but one: a node beyond 4096 pixels, or a tile whose
   // source is 3 times too wide. The check phase reads nodes, then ends the frame.
@@ -766,6 +836,9 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   lr("LR mode, dR overlaps the mask", 6, [](auto& c) { c.base_dr = 0xa000 - 64; });
   lr("LR mode, mask overlaps the right U", 6, [](auto& c) { c.base_mask = 0x6000 + 128; });
   lr("LR mode, output overlaps the right V", 6, [](auto& c) { c.base_out = 0x7000 - 64; });
+  // The base view's V plane (the left V at 0x3000, 2 560 bytes) against the mask (`make
+  // mutate` found that pair's compare unchecked).
+  lr("LR mode, mask overlaps the left V", 6, [](auto& c) { c.base_mask = 0x3000 + 128; });
   lr("LR mode, sub-pixel dL reaches dR", 6, [](auto& c) {
     c.mode = 3;
     c.out_stride = 128;  // 40 rows of 128 bytes from 0x8000 reach 0x9000
@@ -802,6 +875,16 @@ TEST(Engine, RejectsInvalidConfigurationsAndWritesNothing) {
   right_base("right view as base, misaligned right U", 5, 0x7002, 0x8000);
   right_base("right view as base, output overlaps the right V", 6, 0x7000, 0x5000 + 128);
   right_base("right view as base, right U beyond 4 GiB", 9, 0xfffffc00u, 0x8000);
+  // With the right view as base the left Y is the match view: a left Y at 16 MiB (bit 24 set)
+  // holding the output is found (`make mutate` found bit 24 of that base unchecked in this
+  // mode: seen at 0, the plane misses the output and the frame would run).
+  with("right view as base, output inside the left Y at 16 MiB", 6, [](auto& c) {
+    c.mode = 4;
+    c.base_ru = 0x7000;
+    c.base_rv = 0x8000;
+    c.base_ly = 0x01000000u;
+    c.base_out = 0x01000000u + 64;
+  });
   with("output plane beyond 4 GiB", 9, [](auto& c) { c.base_out = 0xfffffc00u; });
   // Column-tiled input planes (TILE_STRIDE != 0): 15 columns of 4 pixels, each
   // of TILE_STRIDE >= 4 x 40 bytes; STRIDE is then checked only in the LR mode
