@@ -499,13 +499,15 @@ TEST(Engine, RectifiedFramesMatchReference) {
 }
 
 // Rectified frames at S = 16 with a vertical scale of about 1.2 (the v row step R_v has bit 13
-// set), a width of 4k + 3 (a 3-pixel last strip in each tile row) and random memory latency (the
-// writer stalls mid-strip): `make mutate` found the row step's low bit unchecked, where an extra
-// unit a row adds up down a strip. Three jittered meshes a view.
+// set), a width of 32k + 3 (a 3-pixel last strip in each tile row), 64 rows
+// and random memory latency (the writer stalls mid-strip): `make mutate` found the row step's
+// low bit unchecked, where an extra unit a row adds up down a strip and moves a sample only
+// when its v sum lies that close below a rounding half. Four jittered meshes a view (with
+// `make mutate`'s mutant, frames 0 and 3 differ; 3 frames of 35 x 24 showed nothing).
 TEST(Engine, RectifiedFramesAtAVerticalScaleAbove1) {
   if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
   std::mt19937 rng(37);
-  const int w = 35, h = 24, rw = 48, rh = 40;
+  const int w = 35, h = 64, rw = 48, rh = 104;
   const auto scaled = [&](double sv) {
     Mesh m = make_mesh(w, h, 4);
     std::normal_distribution<double> jit(0, 0.6);
@@ -519,11 +521,11 @@ TEST(Engine, RectifiedFramesAtAVerticalScaleAbove1) {
     check_rect_footprints(m, rw, rh);
     return m;
   };
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 4; ++k) {
     SCOPED_TRACE("frame " + std::to_string(k));
     const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
     EngineOptions opt;
-    opt.frame.rect = sim::Rectification{scaled(1.15 + 0.05 * k), scaled(1.2 + 0.05 * k)};
+    opt.frame.rect = sim::Rectification{scaled(1.15 + 0.05 * (k % 3)), scaled(1.2 + 0.05 * (k % 3))};
     opt.memory.latency.random = true;
     opt.memory.latency.seed = uint32_t(60 + k);
     Config cfg;
@@ -532,6 +534,40 @@ TEST(Engine, RectifiedFramesAtAVerticalScaleAbove1) {
     expect_exact(r);
     EXPECT_EQ(r.rect_mismatches, 0);
   }
+}
+
+// A rectified frame at S = 32 (a tile holds the upper or lower half of a cell row) whose upper
+// tile's source is exactly 32 raw rows, the most the tile buffer holds: rows 4 .. 35, the
+// bottom edge from the node column's midpoint, the two nodes' v summed in 1/64 pixel, 64 k - 2
+// (128 + 2110 = 2238, k = 35), rounded up to 1/32 pixel (1119, row 34) plus one row. One unit
+// more (64 k - 1) would make it 33 rows, and the check rejects the frame (code 23): `make
+// mutate` found the midpoint's bit 0 unchecked where bit 4 is set. The raw view is 60 rows
+// high, so the lower tile's rows (34 .. 66, clamped to 59) fit, its bottom pixels invalid.
+TEST(Engine, RectifiedFrameAtStep32WithA32RowTileSource) {
+  if (!kRect) GTEST_SKIP() << "a build without the rectifier (MCADSW_RECT=OFF)";
+  std::mt19937 rng(38);
+  const int w = 32, h = 32, rw = 48, rh = 60;
+  Mesh m = make_mesh(w, h, 5);
+  for (int j = 0; j < m.ny; ++j)
+    for (int i = 0; i < m.nx; ++i) {
+      m.u[size_t(j * m.nx + i)] = (4 + 32 * i) << kMeshFracBits;
+      m.v[size_t(j * m.nx + i)] = j == 0 ? 128 : 2110;
+    }
+  check_mesh(m);
+  // The premise, from the reference: the upper tile's box ends at 1119 / 32 and spans 32 rows.
+  const TileSource top = tile_source(m, 0, 0, rw, rh);
+  ASSERT_EQ(top.vmax, 1119);
+  ASSERT_EQ(top.rows, 32);
+  ASSERT_TRUE(top.fits());
+  check_rect_footprints(m, rw, rh);
+  const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
+  EngineOptions opt;
+  opt.frame.rect = sim::Rectification{m, m};
+  Config cfg;
+  cfg.disparities = std::min(8, kDmax);
+  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+  expect_exact(r);
+  EXPECT_EQ(r.rect_mismatches, 0);
 }
 
 // A rectified raster frame of three tile bands (16 rows each) with a row stride of 4 MiB: the
