@@ -459,6 +459,16 @@ std::pair<YuvImage, YuvImage> raw_crops(int raw_w, int raw_h, std::mt19937& rng)
   return {crop(l, x, y, raw_w, raw_h), crop(r, x, y, raw_w, raw_h)};
 }
 
+// One rectified frame at D disparities (at most DMAX): every output pixel, the rectified
+// planes and both validity bitmaps equal the reference's.
+void expect_rectified(const YuvImage& raw_l, const YuvImage& raw_r, const EngineOptions& opt, int d) {
+  Config cfg;
+  cfg.disparities = std::min(d, kDmax);
+  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
+  expect_exact(r);
+  EXPECT_EQ(r.rect_mismatches, 0);
+}
+
 // The engine rectifies random raw pairs through random smooth meshes (some reaching
 // outside the raw views: invalid pixels), then matches: the rectified planes, both
 // validity bitmaps and every output pixel (the invalid code at invalid base pixels)
@@ -528,11 +538,7 @@ TEST(Engine, RectifiedFramesAtAVerticalScaleAbove1) {
     opt.frame.rect = sim::Rectification{scaled(1.15 + 0.05 * (k % 3)), scaled(1.2 + 0.05 * (k % 3))};
     opt.memory.latency.random = true;
     opt.memory.latency.seed = uint32_t(60 + k);
-    Config cfg;
-    cfg.disparities = std::min(6, kDmax);
-    const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
-    expect_exact(r);
-    EXPECT_EQ(r.rect_mismatches, 0);
+    expect_rectified(raw_l, raw_r, opt, 6);
   }
 }
 
@@ -563,11 +569,7 @@ TEST(Engine, RectifiedFrameAtStep32WithA32RowTileSource) {
   const auto [raw_l, raw_r] = raw_crops(rw, rh, rng);
   EngineOptions opt;
   opt.frame.rect = sim::Rectification{m, m};
-  Config cfg;
-  cfg.disparities = std::min(8, kDmax);
-  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
-  expect_exact(r);
-  EXPECT_EQ(r.rect_mismatches, 0);
+  expect_rectified(raw_l, raw_r, opt, 8);
 }
 
 // A rectified raster frame of three tile bands (16 rows each) with a row stride of 4 MiB: the
@@ -582,11 +584,7 @@ TEST(Engine, RectifiedFrameAtA4MiBStride) {
   opt.frame.rect = sim::Rectification{sim::random_fitting_mesh(w, h, 4, rw, rh, rng),
                                       sim::random_fitting_mesh(w, h, 4, rw, rh, rng)};
   opt.frame.stride = 1u << 22;
-  Config cfg;
-  cfg.disparities = std::min(8, kDmax);
-  const EngineResult r = sim::run_engine(raw_l, raw_r, cfg, opt);
-  expect_exact(r);
-  EXPECT_EQ(r.rect_mismatches, 0);
+  expect_rectified(raw_l, raw_r, opt, 8);
 }
 
 // LR and sub-pixel with disparities of 32 and more: the right view is the left shifted by 40
